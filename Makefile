@@ -1,0 +1,82 @@
+# pfmath — one Makefile for everything.  Build outputs go to $(BUILD).
+# Each part of the tree contributes through mk/<part>.mk, which appends to
+#   FIT_SRCS   fitting engine (build/libpffit.a: no main)
+#   REF_SRCS   MPFR references and error measurement (build/libpfref.a)
+#   LIB_SRCS   libpfmath sources (build/libpfmath.a, build/libpfmath.so)
+#   TESTS      test programs run by `make test` (each prints cmocka's summary)
+#   PROGS      other programs built by `make`
+BUILD    ?= build
+CC       ?= gcc
+ifeq ($(origin CC),default)
+CC := gcc
+endif
+OPT      ?= -O2 -g
+SAN      ?=
+CFLAGS   ?=
+WFLAGS   := -std=c17 -Wall -Wextra -Werror
+ALL_CFLAGS = $(WFLAGS) $(OPT) $(SAN) $(CFLAGS)
+CPPFLAGS += -D_GNU_SOURCE -Ifit -Iref -Igen -Ilibpfmath -Itests -I$(BUILD)/include
+LDFLAGS  += $(SAN)
+LIBS_NUM := -lmpfr -lgmp -lnlopt -lm -ldl
+PF_SOVERSION := 0
+PREFIX   ?= /usr/local
+
+FIT_SRCS :=
+REF_SRCS :=
+LIB_SRCS :=
+TESTS    :=
+PROGS    :=
+
+.PHONY: all test test-asan sweep bench regen clean install check-deps
+all:
+
+include $(sort $(wildcard mk/*.mk))
+
+FIT_OBJS := $(FIT_SRCS:%.c=$(BUILD)/obj/%.o)
+REF_OBJS := $(REF_SRCS:%.c=$(BUILD)/obj/%.o)
+LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/pic/%.o)
+
+all: $(BUILD)/libpffit.a $(BUILD)/libpfref.a $(BUILD)/libpfmath.a $(BUILD)/libpfmath.so $(PROGS) $(TESTS)
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/pic/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -fPIC -MMD -MP -c $< -o $@
+
+$(BUILD)/libpffit.a: $(FIT_OBJS)
+	@mkdir -p $(dir $@)
+	rm -f $@ && ar rcs $@ $^
+
+$(BUILD)/libpfref.a: $(REF_OBJS)
+	@mkdir -p $(dir $@)
+	rm -f $@ && ar rcs $@ $^
+
+$(BUILD)/libpfmath.a: $(LIB_OBJS)
+	@mkdir -p $(dir $@)
+	rm -f $@ && ar rcs $@ $^
+
+$(BUILD)/libpfmath.so: $(LIB_OBJS)
+	@mkdir -p $(dir $@)
+	$(CC) -shared -Wl,-soname,libpfmath.so.$(PF_SOVERSION) $(LDFLAGS) -o $@ $^ -lm
+
+# Test programs: one .c each under tests/, linked with every project library.
+TEST_LIBS = $(BUILD)/libpffit.a $(BUILD)/libpfref.a $(BUILD)/libpfmath.a
+$(BUILD)/tests/%: tests/%.c $(TEST_LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) $(TEST_LIBS) -lcmocka $(LIBS_NUM)
+
+# `make test`: every test program, then the same unit tests once under
+# AddressSanitizer + UBSan (a second build tree, build/asan).
+test: all
+	bash tests/run-tests.sh $(TESTS)
+
+test-asan:
+	$(MAKE) BUILD=$(BUILD)/asan SAN="-fsanitize=address,undefined -fno-sanitize-recover=all" OPT="-O1 -g" PF_QUICK=1 test
+
+clean:
+	rm -rf $(BUILD)
+
+-include $(shell find $(BUILD)/obj $(BUILD)/pic $(BUILD)/tests -name '*.d' 2>/dev/null)
