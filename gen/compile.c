@@ -1,0 +1,78 @@
+#include "compile.h"
+
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static void *build_and_load(const char *dir, const char *cpath, char *err, size_t errlen)
+{
+    char so[4200], cmd[9000], log[4200];
+    snprintf(so, sizeof so, "%s/f.so", dir);
+    snprintf(log, sizeof log, "%s/cc.log", dir);
+    const char *cc = getenv("CC");
+    if (!cc || !*cc)
+        cc = "cc";
+    snprintf(cmd, sizeof cmd, "%s -std=c17 -O2 -fPIC -shared -o '%s' '%s' -lm >'%s' 2>&1", cc, so,
+             cpath, log);
+    int rc = system(cmd);
+    void *h = NULL;
+    if (rc != 0) {
+        char first[300] = "";
+        FILE *f = fopen(log, "r");
+        if (f) {
+            if (!fgets(first, sizeof first, f))
+                first[0] = 0;
+            fclose(f);
+        }
+        first[strcspn(first, "\n")] = 0;
+        snprintf(err, errlen, "compiling with '%s' failed: %s", cc, first[0] ? first : "(no output)");
+    } else {
+        h = dlopen(so, RTLD_NOW | RTLD_LOCAL);
+        if (!h)
+            snprintf(err, errlen, "dlopen: %s", dlerror());
+    }
+    unlink(so);
+    unlink(log);
+    return h;
+}
+
+void *pf_compile_load(const char *src, size_t len, char *err, size_t errlen)
+{
+    char dir[] = "/tmp/pfmath.XXXXXX";
+    if (!mkdtemp(dir)) {
+        snprintf(err, errlen, "cannot create a temporary directory");
+        return NULL;
+    }
+    char c[64];
+    snprintf(c, sizeof c, "%s/f.c", dir);
+    FILE *f = fopen(c, "w");
+    void *h = NULL;
+    if (!f || fwrite(src, 1, len, f) != len || fclose(f) != 0)
+        snprintf(err, errlen, "cannot write %s", c);
+    else
+        h = build_and_load(dir, c, err, errlen);
+    unlink(c);
+    rmdir(dir);
+    return h;
+}
+
+void *pf_compile_load_file(const char *path, char *err, size_t errlen)
+{
+    char dir[] = "/tmp/pfmath.XXXXXX";
+    if (!mkdtemp(dir)) {
+        snprintf(err, errlen, "cannot create a temporary directory");
+        return NULL;
+    }
+    char *abs = realpath(path, NULL);
+    void *h = NULL;
+    if (!abs)
+        snprintf(err, errlen, "cannot read %s", path);
+    else
+        h = build_and_load(dir, abs, err, errlen);
+    free(abs);
+    rmdir(dir);
+    return h;
+}

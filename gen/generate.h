@@ -1,0 +1,39 @@
+/* One generation: fit a function's polynomial, round its coefficients,
+ * measure it, emit C from the template, compile and sweep the emitted code. */
+#ifndef PF_GENERATE_H
+#define PF_GENERATE_H
+
+#include "fit.h"
+#include "funcs.h"
+#include "sweep.h"
+
+#include <stdio.h>
+
+typedef struct {
+    const char *func, *variant, *reduction, *name, *method;
+    int order;            /* 0: the spec's default (fast: smallest meeting its target) */
+    int sweep;            /* compile the emitted code and sweep it */
+    const char *command;  /* the pfmathgen command line, recorded in the file */
+} pf_gen_req;
+
+typedef struct {
+    const pf_spec *spec;
+    fit_problem pb;
+    fit_poly real;        /* before rounding (measured) */
+    fit_poly poly;        /* emitted coefficients (measured) */
+    int order;
+    double below_err;     /* error of order-1 when the order was searched, else -1 */
+    char name[128];
+    char *csrc;
+    size_t clen;
+    int swept;
+    pf_sweep_stats sweep;
+    char sweep_desc[160];
+} pf_gen_result;
+
+int pf_generate(const pf_gen_req *rq, pf_gen_result *res, char *err, size_t errlen);
+void pf_gen_free(pf_gen_result *res);
+void pf_report_text(FILE *out, const pf_gen_result *r);
+void pf_report_json(FILE *out, const pf_gen_result *r);
+
+#endif

@@ -1,0 +1,186 @@
+/* pfmathgen: fit, report and emit C for one function.  See --help. */
+#include "generate.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char usage[] =
+    "usage: pfmathgen --func NAME [options]\n"
+    "Fits one polynomial over the function's reduced domain (least-squares relative\n"
+    "error with value/slope constraints), rounds its coefficients to float, prints a\n"
+    "report on stderr and writes self-contained C on stdout (or -o FILE).\n"
+    "\n"
+    "  --func NAME         function: %s\n"
+    "  --variant V         exact (default: within 1 ULP) or fast (value and slope\n"
+    "                      matched at both ends of the reduced domain)\n"
+    "  --order N           polynomial degree, 1..30 (default: the library's; for fast,\n"
+    "                      the smallest order reaching 2^-10 relative error)\n"
+    "  --reduction R       argument reduction (log/log2: balanced (default), seed)\n"
+    "  --type float        number type (float only for now)\n"
+    "  --method lsq        fitting method (least squares, the seed's)\n"
+    "  --name NAME         emitted function name (default pf_<func>f, pf_<func>f_fast)\n"
+    "  -o, --output FILE   write the C source to FILE (nothing is written on error)\n"
+    "  --json              print the report as one JSON object on stdout instead of C\n"
+    "  --no-sweep          do not compile and sweep the emitted code\n"
+    "  -h, --help          this text\n"
+    "Exit status: 0 ok, 2 bad usage or impossible request, 1 internal failure.\n";
+
+static void die2(const char *fmt, const char *a, const char *b)
+{
+    fprintf(stderr, "pfmathgen: ");
+    fprintf(stderr, fmt, a, b);
+    fputc('\n', stderr);
+    exit(2);
+}
+
+static int is_identifier(const char *s)
+{
+    if (!*s || !(isalpha((unsigned char)*s) || *s == '_'))
+        return 0;
+    for (; *s; s++)
+        if (!(isalnum((unsigned char)*s) || *s == '_'))
+            return 0;
+    return 1;
+}
+
+/* The command line as a shell would re-run it (quoted where needed). */
+static char *command_line(int argc, char **argv)
+{
+    size_t cap = 64;
+    for (int i = 1; i < argc; i++)
+        cap += 4 * strlen(argv[i]) + 4;
+    char *s = malloc(cap);
+    if (!s)
+        exit(1);
+    strcpy(s, "pfmathgen");
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        int plain = *a != 0;
+        for (const char *p = a; *p; p++)
+            if (!(isalnum((unsigned char)*p) || strchr("-_./=,:+", *p)))
+                plain = 0;
+        strcat(s, " ");
+        if (plain) {
+            strcat(s, a);
+        } else {
+            strcat(s, "'");
+            for (const char *p = a; *p; p++) {
+                if (*p == '\'')
+                    strcat(s, "'\\''");
+                else
+                    strncat(s, p, 1);
+            }
+            strcat(s, "'");
+        }
+    }
+    return s;
+}
+
+static int write_atomically(const char *path, const char *data, size_t n)
+{
+    size_t len = strlen(path) + 32;
+    char *tmp = malloc(len);
+    if (!tmp)
+        return -1;
+    snprintf(tmp, len, "%s.tmp.%ld", path, (long)getpid());
+    FILE *f = fopen(tmp, "w");
+    int ok = f && fwrite(data, 1, n, f) == n;
+    if (f && fclose(f) != 0)
+        ok = 0;
+    if (ok && rename(tmp, path) != 0)
+        ok = 0;
+    if (!ok)
+        unlink(tmp);
+    free(tmp);
+    return ok ? 0 : -1;
+}
+
+int main(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        {"func", required_argument, 0, 'f'},    {"variant", required_argument, 0, 'v'},
+        {"order", required_argument, 0, 'n'},   {"reduction", required_argument, 0, 'r'},
+        {"type", required_argument, 0, 't'},    {"method", required_argument, 0, 'm'},
+        {"name", required_argument, 0, 'N'},    {"output", required_argument, 0, 'o'},
+        {"json", no_argument, 0, 'j'},          {"no-sweep", no_argument, 0, 'S'},
+        {"help", no_argument, 0, 'h'},          {0, 0, 0, 0}};
+    pf_gen_req rq = {0};
+    rq.variant = "exact";
+    rq.method = "lsq";
+    rq.sweep = 1;
+    const char *out = NULL;
+    int json = 0;
+    opterr = 0;
+    int c;
+    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+        switch (c) {
+        case 'f': rq.func = optarg; break;
+        case 'v':
+            if (strcmp(optarg, "exact") && strcmp(optarg, "fast"))
+                die2("unknown variant '%s' (use exact or fast)%s", optarg, "");
+            rq.variant = optarg;
+            break;
+        case 'n': {
+            char *end;
+            errno = 0;
+            long v = strtol(optarg, &end, 10);
+            if (errno || end == optarg || *end || v < 1 || v > 30)
+                die2("bad order '%s': expected an integer 1..30%s", optarg, "");
+            rq.order = (int)v;
+            break;
+        }
+        case 'r': rq.reduction = optarg; break;
+        case 't':
+            if (strcmp(optarg, "float"))
+                die2("unsupported type '%s': only float is available in this build%s", optarg, "");
+            break;
+        case 'm':
+            if (strcmp(optarg, "lsq"))
+                die2("unknown method '%s' (available: lsq)%s", optarg, "");
+            rq.method = optarg;
+            break;
+        case 'N':
+            if (!is_identifier(optarg))
+                die2("bad --name '%s': not a C identifier%s", optarg, "");
+            rq.name = optarg;
+            break;
+        case 'o': out = optarg; break;
+        case 'j': json = 1; break;
+        case 'S': rq.sweep = 0; break;
+        case 'h': printf(usage, pf_spec_func_list()); return 0;
+        case ':': die2("option '%s' needs an argument%s", argv[optind - 1], ""); break;
+        default: die2("unknown option '%s' (see --help)%s", argv[optind - 1], ""); break;
+        }
+    }
+    if (optind < argc)
+        die2("unexpected argument '%s' (see --help)%s", argv[optind], "");
+    if (!rq.func)
+        die2("--func is required (see --help)%s%s", "", "");
+    if (rq.reduction && !pf_spec_find(rq.func, rq.variant, rq.reduction) && pf_spec_func_known(rq.func))
+        die2("unknown reduction '%s' for %s", rq.reduction, rq.func);
+    rq.command = command_line(argc, argv);
+    pf_gen_result r;
+    char err[512];
+    if (pf_generate(&rq, &r, err, sizeof err) != 0)
+        die2("%s%s", err, "");
+    if (json)
+        pf_report_json(stdout, &r);
+    else
+        pf_report_text(stderr, &r);
+    if (out) {
+        if (write_atomically(out, r.csrc, r.clen) != 0) {
+            fprintf(stderr, "pfmathgen: cannot write %s\n", out);
+            return 1;
+        }
+    } else if (!json) {
+        fwrite(r.csrc, 1, r.clen, stdout);
+    }
+    pf_gen_free(&r);
+    free((void *)rq.command);
+    return 0;
+}

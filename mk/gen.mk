@@ -1,0 +1,17 @@
+# gen/: pfmathgen, its templates (embedded at build time) and emitters.
+GEN_SRCS := gen/funcs.c gen/generate.c gen/compile.c
+GEN_TEMPLATES := $(sort $(wildcard gen/templates/*.in))
+PROGS += $(BUILD)/pfmathgen
+
+$(BUILD)/include/pf_templates.h: gen/embed-templates.sh $(GEN_TEMPLATES)
+	@mkdir -p $(dir $@)
+	bash gen/embed-templates.sh $@ $(GEN_TEMPLATES)
+
+$(BUILD)/obj/gen/generate.o: $(BUILD)/include/pf_templates.h
+
+GEN_OBJS := $(GEN_SRCS:%.c=$(BUILD)/obj/%.o)
+$(BUILD)/libpfgen.a: $(GEN_OBJS)
+	rm -f $@ && ar rcs $@ $^
+
+$(BUILD)/pfmathgen: $(BUILD)/obj/gen/pfmathgen.o $(BUILD)/libpfgen.a $(BUILD)/libpffit.a $(BUILD)/libpfref.a
+	$(CC) $(LDFLAGS) -fopenmp -o $@ $^ $(LIBS_NUM)

@@ -1,0 +1,21 @@
+# libpfmath/: the library, built from generated sources in libpfmath/generated/.
+# `make regen` rewrites them with pfmathgen; `make test` checks they are current
+# (tests/check-regen.sh), so nothing in the library is typed by hand.
+LIB_SRCS += $(sort $(wildcard libpfmath/generated/*.c))
+$(BUILD)/pic/libpfmath/generated/%.o: ALL_CFLAGS += -O3
+
+# function:variant pairs the library ships (each becomes pf_<f>f[_fast])
+LIB_GEN := log:exact log:fast log2:exact log2:fast
+
+regen: $(BUILD)/pfmathgen
+	@mkdir -p libpfmath/generated
+	@set -e; for fv in $(LIB_GEN); do \
+	  f=$${fv%%:*}; v=$${fv##*:}; s=""; [ $$v = fast ] && s=_fast; \
+	  out=libpfmath/generated/pf_$${f}f$$s.c; echo "  GEN $$out"; \
+	  $(BUILD)/pfmathgen --func $$f --variant $$v -o $$out 2>/dev/null; \
+	done
+
+TESTS += $(BUILD)/tests/check-regen
+$(BUILD)/tests/check-regen: tests/check-regen.sh $(BUILD)/pfmathgen
+	@mkdir -p $(dir $@)
+	sed -e 's|@PFMATHGEN@|$(abspath $(BUILD)/pfmathgen)|' -e 's|@LIBGEN@|$(LIB_GEN)|' $< > $@ && chmod +x $@

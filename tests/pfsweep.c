@@ -1,0 +1,173 @@
+/* pfsweep: ULP error of a float function against the MPFR references.
+ * See --help. */
+#include "compile.h"
+#include "sweep.h"
+
+#include <dlfcn.h>
+#include <errno.h>
+#include <getopt.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char usage[] =
+    "usage: pfsweep --func NAME [--variant exact|fast] [--lib [PATH] | --source FILE.c]\n"
+    "               [--name SYMBOL] [--all] [--samples N] [--seed S] [--max-ulp B]\n"
+    "Measures the ULP error of a float function against correctly rounded MPFR\n"
+    "references: every float in the function's reduced domain, a seeded\n"
+    "full-range sample, and a directed list of special and hard inputs.\n"
+    "  --lib [PATH]    the function from libpfmath.so (default: next to pfsweep)\n"
+    "  --source FILE   compile FILE.c with $CC (default cc) and sweep its function\n"
+    "  --name SYMBOL   function symbol (default pf_<func>f or pf_<func>f_fast)\n"
+    "  --all           every one of the 2^32 floats instead (OpenMP threads)\n"
+    "  --samples N     size of the random sample (default 2^22)\n"
+    "  --max-ulp B     exit with status 1 when the max error exceeds B ULP\n"
+    "Exit status: 0 ok, 1 bound exceeded or load failure, 2 bad usage.\n";
+
+static void die2(const char *msg, const char *arg)
+{
+    fprintf(stderr, "pfsweep: %s%s\n", msg, arg ? arg : "");
+    exit(2);
+}
+
+int main(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        {"func", required_argument, 0, 'f'},   {"variant", required_argument, 0, 'v'},
+        {"lib", optional_argument, 0, 'l'},    {"source", required_argument, 0, 's'},
+        {"name", required_argument, 0, 'N'},   {"all", no_argument, 0, 'a'},
+        {"samples", required_argument, 0, 'n'}, {"seed", required_argument, 0, 'S'},
+        {"max-ulp", required_argument, 0, 'm'}, {"help", no_argument, 0, 'h'},
+        {0, 0, 0, 0}};
+    const char *func = NULL, *variant = "exact", *lib = NULL, *src = NULL, *name = NULL;
+    int all = 0, use_lib = 0;
+    unsigned long long samples = 1ull << 22, seed = 1;
+    double max_ulp = -1;
+    opterr = 0;
+    int c;
+    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'f': func = optarg; break;
+        case 'v':
+            if (strcmp(optarg, "exact") && strcmp(optarg, "fast"))
+                die2("unknown variant ", optarg);
+            variant = optarg;
+            break;
+        case 'l': use_lib = 1; lib = optarg; break;
+        case 's': src = optarg; break;
+        case 'N': name = optarg; break;
+        case 'a': all = 1; break;
+        case 'n': {
+            char *e;
+            errno = 0;
+            samples = strtoull(optarg, &e, 0);
+            if (errno || *e)
+                die2("bad --samples ", optarg);
+            break;
+        }
+        case 'S': seed = strtoull(optarg, NULL, 0); break;
+        case 'm': {
+            char *e;
+            max_ulp = strtod(optarg, &e);
+            if (*e || max_ulp < 0)
+                die2("bad --max-ulp ", optarg);
+            break;
+        }
+        case 'h': fputs(usage, stdout); return 0;
+        case ':': die2("option needs an argument: ", argv[optind - 1]); break;
+        default: die2("unknown option (see --help): ", argv[optind - 1]); break;
+        }
+    }
+    if (optind < argc)
+        die2("unexpected argument ", argv[optind]);
+    if (!func)
+        die2("--func is required (see --help)", NULL);
+    int fid = pfref_lookup(func);
+    if (fid < 0 || fid == PF_SQRT)
+        die2("unknown function ", func);
+    if (use_lib && src)
+        die2("--lib and --source exclude each other", NULL);
+    if (!use_lib && !src)
+        use_lib = 1;
+    char sym[160];
+    if (name)
+        snprintf(sym, sizeof sym, "%s", name);
+    else
+        snprintf(sym, sizeof sym, "pf_%sf%s", func, strcmp(variant, "fast") ? "" : "_fast");
+    void *h;
+    char err[512];
+    if (use_lib) {
+        char path[PATH_MAX];
+        if (lib) {
+            snprintf(path, sizeof path, "%s", lib);
+        } else {
+            ssize_t n = readlink("/proc/self/exe", path, sizeof path - 32);
+            if (n < 0)
+                die2("cannot locate libpfmath.so; pass --lib PATH", NULL);
+            path[n] = 0;
+            char *slash = strrchr(path, '/');
+            strcpy(slash ? slash + 1 : path, "libpfmath.so");
+        }
+        h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+        if (!h) {
+            fprintf(stderr, "pfsweep: %s\n", dlerror());
+            return 1;
+        }
+    } else {
+        h = pf_compile_load_file(src, err, sizeof err);
+        if (!h) {
+            fprintf(stderr, "pfsweep: %s\n", err);
+            return 1;
+        }
+    }
+    void *p = dlsym(h, sym);
+    if (!p) {
+        fprintf(stderr, "pfsweep: no function %s in %s\n", sym, src ? src : "libpfmath.so");
+        return 1;
+    }
+    pf_fn1 f1 = NULL;
+    pf_fn2 f2 = NULL;
+    if (pfref_arity((pf_func)fid) == 2)
+        *(void **)&f2 = p;
+    else
+        *(void **)&f1 = p;
+    pf_sweep_stats tot;
+    pf_sweep_init(&tot);
+    printf("pfsweep %s (%s)\n", sym, func);
+    if (all && !f2) {
+        pf_sweep_stats s;
+        pf_sweep_init(&s);
+        pf_sweep_bits(&s, (pf_func)fid, f1, f2, 0, 0xffffffffu, isatty(2));
+        pf_sweep_print(stdout, "every float (2^32)", (pf_func)fid, &s);
+        pf_sweep_merge(&tot, &s);
+    } else {
+        pf_sweep_stats s;
+        if (!f2) {
+            uint32_t lo, hi;
+            pf_sweep_reduced_range((pf_func)fid, &lo, &hi);
+            pf_sweep_init(&s);
+            pf_sweep_bits(&s, (pf_func)fid, f1, f2, lo, hi, isatty(2));
+            pf_sweep_print(stdout, "reduced domain (every float)", (pf_func)fid, &s);
+            pf_sweep_merge(&tot, &s);
+        }
+        pf_sweep_init(&s);
+        pf_sweep_random(&s, (pf_func)fid, f1, f2, seed, samples);
+        pf_sweep_print(stdout, "seeded full-range sample", (pf_func)fid, &s);
+        pf_sweep_merge(&tot, &s);
+    }
+    pf_sweep_stats d;
+    pf_sweep_init(&d);
+    pf_sweep_directed(&d, (pf_func)fid, f1, f2);
+    pf_sweep_print(stdout, "directed special and hard inputs", (pf_func)fid, &d);
+    pf_sweep_merge(&tot, &d);
+    printf("TOTAL %s max_ulp=%.6f mean_ulp=%.6f cr=%.4f%% count=%llu worst=%a\n", sym, tot.max_ulp,
+           pf_sweep_mean(&tot), pf_sweep_cr_percent(&tot), (unsigned long long)tot.count,
+           (double)tot.worst_x);
+    if (max_ulp >= 0 && !(tot.max_ulp <= max_ulp)) {
+        printf("FAIL: max %.6f ULP exceeds the bound %.3f\n", tot.max_ulp, max_ulp);
+        return 1;
+    }
+    return 0;
+}
