@@ -26,8 +26,9 @@ REF_SRCS :=
 LIB_SRCS :=
 TESTS    :=
 PROGS    :=
+LIB_GEN  :=
 
-.PHONY: all test test-asan sweep bench regen clean install check-deps
+.PHONY: all test test-asan asan-build sweep bench regen clean install
 all:
 
 include $(sort $(wildcard mk/*.mk))
@@ -63,18 +64,22 @@ $(BUILD)/libpfmath.so: $(LIB_OBJS)
 	$(CC) -shared -Wl,-soname,libpfmath.so.$(PF_SOVERSION) $(LDFLAGS) -o $@ $^ -lm
 
 # Test programs: one .c each under tests/, linked with every project library.
-TEST_LIBS = $(BUILD)/libpffit.a $(BUILD)/libpfref.a $(BUILD)/libpfmath.a
+TEST_LIBS = $(BUILD)/libpfgen.a $(BUILD)/libpffit.a $(BUILD)/libpfref.a $(BUILD)/libpfmath.a
 $(BUILD)/tests/%: tests/%.c $(TEST_LIBS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) $(TEST_LIBS) -lcmocka $(LIBS_NUM)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) -fopenmp $(TEST_LIBS) -lcmocka $(LIBS_NUM)
 
 # `make test`: every test program, then the same unit tests once under
 # AddressSanitizer + UBSan (a second build tree, build/asan).
-test: all
-	bash tests/run-tests.sh $(TESTS)
+ASAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all
+test: all asan-build
+	ASAN_OPTIONS=detect_leaks=0 bash tests/run-tests.sh $(TESTS) $(patsubst $(BUILD)/%,$(BUILD)/asan/%,$(TESTS))
 
-test-asan:
-	$(MAKE) BUILD=$(BUILD)/asan SAN="-fsanitize=address,undefined -fno-sanitize-recover=all" OPT="-O1 -g" PF_QUICK=1 test
+asan-build:
+	$(MAKE) BUILD=$(BUILD)/asan SAN="$(ASAN_FLAGS)" OPT="-O1 -g" all
+
+test-asan: asan-build
+	bash tests/run-tests.sh $(patsubst $(BUILD)/%,$(BUILD)/asan/%,$(TESTS))
 
 clean:
 	rm -rf $(BUILD)

@@ -1,4 +1,12 @@
-/* The generator's function table: for each function, reduction and variant,
+/* Templates (gen/templates/<tmpl>.c.in) see these substitutions:
+ *   @NAME@    emitted function name        @REAL@    evaluation type
+ *   @HORNER@  pf_horner_d or pf_horner_f   @NCOEF@   entries of @NAME@_C
+ *   @KSCALE@ @PSCALE@  the spec's constants (default 1)
+ * @NAME@_C holds the coefficients lowest degree first; for an odd fit it
+ * holds only c1, c3, c5, ... (evaluate r * @HORNER@(r*r, @NAME@_C, @NCOEF@)),
+ * for an even fit c0, c2, ... (evaluate @HORNER@(r*r, ...)).
+ *
+ * The generator's function table: for each function, reduction and variant,
  * what is fitted (target, domain in the fit variable t, parity, constraints)
  * and which template turns the coefficients into C.  Adding a function means
  * adding a row here, a target below and a template in gen/templates/. */
@@ -28,6 +36,10 @@ typedef struct {
     const char *kscale;     /* template constant (log: ln2 as a C literal) */
     double ulp_bound;       /* what the sweep must prove for the library */
     const char *pscale;     /* template constant multiplying p (log2: 1/ln2), NULL = 1 */
+    /* Optional: C text (tables of constants computed at generation time, e.g.
+       the bits of 2/pi from MPFR) written before the template body; returns
+       the length written, like snprintf. */
+    int (*extra)(char *buf, size_t n);
 } pf_spec;
 
 const pf_spec *pf_spec_find(const char *func, const char *variant, const char *reduction);

@@ -136,16 +136,29 @@ static void emit(sbuf *b, const pf_gen_result *r, const char *command)
                  "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC optimize(\"no-trapping-math\")\n#endif\n"
                  "#include <math.h>\n#include <stddef.h>\n#include <stdint.h>\n#include <string.h>\n\n");
     sb_put(b, template_text("poly_float.h"), strlen(template_text("poly_float.h")));
-    sb_printf(b, "\n/* %s ~ sum C[k] t^k, lowest degree first */\nstatic const float %s_C[%d] = {\n",
-              s->target_text, r->name, r->order + 1);
-    for (int k = 0; k <= r->order; k++) {
+    int k0 = s->parity == FIT_PARITY_ODD ? 1 : 0, dk = s->parity == FIT_PARITY_NONE ? 1 : 2;
+    int nco = 0;
+    for (int k = k0; k <= r->order; k += dk)
+        nco++;
+    sb_printf(b, "\n/* %s ~ sum C[k] t^%s, lowest degree first */\nstatic const float %s_C[%d] = {\n",
+              s->target_text, s->parity == FIT_PARITY_ODD ? "(2k+1)" : s->parity == FIT_PARITY_EVEN ? "(2k)" : "k",
+              r->name, nco);
+    for (int k = k0; k <= r->order; k += dk) {
         char h[64];
         hexf(h, sizeof h, (double)r->poly.c[k]);
-        sb_printf(b, "    %sf,%s/* %.9g */\n", h, strlen(h) < 16 ? "    " : " ", (double)r->poly.c[k]);
+        sb_printf(b, "    %sf,%s/* c%d = %.9g */\n", h, strlen(h) < 16 ? "    " : " ", k, (double)r->poly.c[k]);
     }
     sb_printf(b, "};\n\n");
+    if (s->extra) {
+        char *xb = malloc(1 << 20);
+        if (!xb)
+            abort();
+        int xn = s->extra(xb, 1 << 20);
+        sb_put(b, xb, (size_t)(xn > 0 ? xn : 0));
+        free(xb);
+    }
     char ncoef[16];
-    snprintf(ncoef, sizeof ncoef, "%d", r->order + 1);
+    snprintf(ncoef, sizeof ncoef, "%d", nco);
     const char *kv[] = {"NAME", r->name, "REAL", s->real, "HORNER",
                         !strcmp(s->real, "double") ? "pf_horner_d" : "pf_horner_f", "NCOEF", ncoef,
                         "KSCALE", s->kscale ? s->kscale : "1", "PSCALE", s->pscale ? s->pscale : "1", NULL};

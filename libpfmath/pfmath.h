@@ -22,12 +22,24 @@ extern "C" {
     float f(float x);                                                          \
     void f##_array(const float *x, float *y, size_t n);
 
-PF_DECLARE1(pf_logf)
-PF_DECLARE1(pf_logf_fast)
-PF_DECLARE1(pf_log2f)
-PF_DECLARE1(pf_log2f_fast)
+#define PF_DECLARE2(f)                                                         \
+    float f(float y, float x);                                                 \
+    void f##_array(const float *y, const float *x, float *out, size_t n);
+
+PF_DECLARE1(pf_sinf)   PF_DECLARE1(pf_sinf_fast)
+PF_DECLARE1(pf_cosf)   PF_DECLARE1(pf_cosf_fast)
+PF_DECLARE1(pf_tanf)   PF_DECLARE1(pf_tanf_fast)
+PF_DECLARE1(pf_asinf)  PF_DECLARE1(pf_asinf_fast)
+PF_DECLARE1(pf_acosf)  PF_DECLARE1(pf_acosf_fast)
+PF_DECLARE1(pf_atanf)  PF_DECLARE1(pf_atanf_fast)
+PF_DECLARE2(pf_atan2f) PF_DECLARE2(pf_atan2f_fast)
+PF_DECLARE1(pf_expf)   PF_DECLARE1(pf_expf_fast)
+PF_DECLARE1(pf_exp2f)  PF_DECLARE1(pf_exp2f_fast)
+PF_DECLARE1(pf_logf)   PF_DECLARE1(pf_logf_fast)
+PF_DECLARE1(pf_log2f)  PF_DECLARE1(pf_log2f_fast)
 
 #undef PF_DECLARE1
+#undef PF_DECLARE2
 
 #ifdef __cplusplus
 }

@@ -1,3 +1,2 @@
 # fit/: the fitting engine (a library, no main).
 FIT_SRCS += fit/linalg.c fit/lsq.c fit/measure.c fit/round.c
-TESTS += $(BUILD)/tests/test_fit

@@ -1,5 +1,5 @@
 # gen/: pfmathgen, its templates (embedded at build time) and emitters.
-GEN_SRCS := gen/funcs.c gen/generate.c gen/compile.c
+GEN_SRCS := gen/funcs.c $(sort $(wildcard gen/funcs_*.c)) gen/generate.c gen/compile.c
 GEN_TEMPLATES := $(sort $(wildcard gen/templates/*.in))
 PROGS += $(BUILD)/pfmathgen
 
@@ -15,3 +15,8 @@ $(BUILD)/libpfgen.a: $(GEN_OBJS)
 
 $(BUILD)/pfmathgen: $(BUILD)/obj/gen/pfmathgen.o $(BUILD)/libpfgen.a $(BUILD)/libpffit.a $(BUILD)/libpfref.a
 	$(CC) $(LDFLAGS) -fopenmp -o $@ $^ $(LIBS_NUM)
+
+TESTS += $(BUILD)/tests/test_fit $(BUILD)/tests/test_cli
+$(BUILD)/tests/test_cli: $(BUILD)/pfmathgen
+TESTS += $(BUILD)/tests/test_log
+$(BUILD)/tests/test_log: $(BUILD)/pfmathgen

@@ -5,7 +5,7 @@ LIB_SRCS += $(sort $(wildcard libpfmath/generated/*.c))
 $(BUILD)/pic/libpfmath/generated/%.o: ALL_CFLAGS += -O3
 
 # function:variant pairs the library ships (each becomes pf_<f>f[_fast])
-LIB_GEN := log:exact log:fast log2:exact log2:fast
+LIB_GEN += log:exact log:fast log2:exact log2:fast
 
 regen: $(BUILD)/pfmathgen
 	@mkdir -p libpfmath/generated
@@ -19,3 +19,11 @@ TESTS += $(BUILD)/tests/check-regen
 $(BUILD)/tests/check-regen: tests/check-regen.sh $(BUILD)/pfmathgen
 	@mkdir -p $(dir $@)
 	sed -e 's|@PFMATHGEN@|$(abspath $(BUILD)/pfmathgen)|' -e 's|@LIBGEN@|$(LIB_GEN)|' $< > $@ && chmod +x $@
+
+TESTS += $(BUILD)/tests/test_special
+$(BUILD)/tests/test_special: $(BUILD)/libpfmath.so
+
+TESTS += $(BUILD)/tests/check-vectorize
+$(BUILD)/tests/check-vectorize: tests/check-vectorize.sh
+	@mkdir -p $(dir $@)
+	cp $< $@ && chmod +x $@

@@ -5,3 +5,18 @@ $(BUILD)/obj/ref/sweep.o: ALL_CFLAGS += -fopenmp
 
 $(BUILD)/pfsweep: $(BUILD)/obj/tests/pfsweep.o $(BUILD)/libpfgen.a $(BUILD)/libpfref.a
 	$(CC) $(LDFLAGS) -fopenmp -o $@ $^ $(LIBS_NUM)
+
+# make sweep: every library function over all 2^32 floats; exact variants
+# must stay within 1 ULP.  Writes build/sweep.md.
+sweep: $(BUILD)/pfsweep $(BUILD)/libpfmath.so
+	@echo "| function | max ULP | mean ULP | correctly rounded | worst input |" > $(BUILD)/sweep.md
+	@echo "|---|---|---|---|---|" >> $(BUILD)/sweep.md
+	@set -e; for fv in $(LIB_GEN); do \
+	  f=$${fv%%:*}; v=$${fv##*:}; b=""; [ $$v = exact ] && b="--max-ulp 1.0"; \
+	  $(BUILD)/pfsweep --func $$f --variant $$v --all $$b > $(BUILD)/sweep-$$f-$$v.txt; \
+	  tail -1 $(BUILD)/sweep-$$f-$$v.txt; \
+	  awk -v fv="$$f $$v" '/^TOTAL/ { for (i=1;i<=NF;i++) { split($$i,a,"="); v[a[1]]=a[2] } \
+	    printf "| %s | %.4f | %.4f | %s | %s |\n", fv, v["max_ulp"], v["mean_ulp"], v["cr"], v["worst"] }' \
+	    $(BUILD)/sweep-$$f-$$v.txt >> $(BUILD)/sweep.md; \
+	done
+	@cat $(BUILD)/sweep.md

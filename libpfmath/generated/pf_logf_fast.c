@@ -46,12 +46,12 @@ static inline float pf_asfloat(uint32_t u) { float x; memcpy(&x, &u, sizeof x); 
 
 /* log(1+t) ~ sum C[k] t^k, lowest degree first */
 static const float pf_logf_fast_C[6] = {
-    0x0p+0f,    /* 0 */
-    0x1p+0f,    /* 1 */
-    -0x1.fd8d32p-2f,    /* -0.49760893 */
-    0x1.58206ap-2f,    /* 0.33606115 */
-    -0x1.284738p-2f,    /* -0.289334178 */
-    0x1.8e1dd4p-3f,    /* 0.19439283 */
+    0x0p+0f,    /* c0 = 0 */
+    0x1p+0f,    /* c1 = 1 */
+    -0x1.fd8d32p-2f,    /* c2 = -0.49760893 */
+    0x1.58206ap-2f,    /* c3 = 0.33606115 */
+    -0x1.284738p-2f,    /* c4 = -0.289334178 */
+    0x1.8e1dd4p-3f,    /* c5 = 0.19439283 */
 };
 
 /* log(x) = k ln2 + log(m), x = 2^k m, m in [sqrt(2)/2, sqrt(2)).

@@ -1,0 +1,138 @@
+/* pfmathgen's command line: bad input is exit 2 with one line on stderr and
+ * no output file; good input is deterministic and reports what it emitted. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "testutil.h"
+
+#include <sys/stat.h>
+
+static tu_run_result R;
+
+static void expect_usage_error(const char *args)
+{
+    char a[1024];
+    const char *out = "/tmp/pfmathgen-cli-test.c";
+    unlink(out);
+    snprintf(a, sizeof a, "%s -o %s", args, out);
+    tu_run("pfmathgen", a, &R);
+    print_message("pfmathgen %s -> %d: %s", args, R.status, R.err);
+    assert_int_equal(R.status, 2);
+    assert_int_equal(tu_count_lines(R.err), 1);
+    assert_non_null(strstr(R.err, "pfmathgen: "));
+    struct stat sb;
+    assert_int_not_equal(stat(out, &sb), 0); /* nothing written */
+    assert_int_equal(R.out[0], 0);
+}
+
+static void test_bad_input(void **st)
+{
+    (void)st;
+    expect_usage_error("--func logg --order 10");
+    expect_usage_error("--func log --order 0");
+    expect_usage_error("--func log --order 31");
+    expect_usage_error("--func log --order 10x");
+    expect_usage_error("--func log --order ''");
+    expect_usage_error("--func log --variant quick");
+    expect_usage_error("--func log --reduction nope");
+    expect_usage_error("--func log --frobnicate");
+    expect_usage_error("--func log --name 9lives");
+    expect_usage_error("--func log --type double");
+    expect_usage_error("--func log --method remez");
+    expect_usage_error("--order 10");
+    expect_usage_error("--func log extra");
+    expect_usage_error("--func");
+    /* too low for the fast variant's six constraints */
+    expect_usage_error("--func log --variant fast --order 3");
+}
+
+static void test_help(void **st)
+{
+    (void)st;
+    tu_run("pfmathgen", "--help", &R);
+    assert_int_equal(R.status, 0);
+    assert_non_null(strstr(R.out, "usage: pfmathgen"));
+    assert_non_null(strstr(R.out, "--order"));
+}
+
+static char *slurp(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    static char buf[2][1 << 16];
+    static int which;
+    char *b = buf[which++ & 1];
+    *n = fread(b, 1, sizeof buf[0], f);
+    fclose(f);
+    return b;
+}
+
+/* Same command, byte-identical file; the file carries its provenance. */
+static void test_deterministic(void **st)
+{
+    (void)st;
+    size_t n1, n2;
+    tu_run("pfmathgen", "--func log --order 10 -o /tmp/pf-det-a.c", &R);
+    assert_int_equal(R.status, 0);
+    rename("/tmp/pf-det-a.c", "/tmp/pf-det-b.c");
+    tu_run("pfmathgen", "--func log --order 10 -o /tmp/pf-det-a.c", &R);
+    assert_int_equal(R.status, 0);
+    char *a = slurp("/tmp/pf-det-a.c", &n1), *b = slurp("/tmp/pf-det-b.c", &n2);
+    assert_non_null(a);
+    assert_non_null(b);
+    assert_int_equal(n1, n2);
+    assert_memory_equal(a, b, n1);
+    assert_non_null(strstr(a, "pfmathgen --func log --order 10 -o /tmp/pf-det-a.c"));
+    assert_non_null(strstr(a, "Order:       10"));
+    assert_non_null(strstr(a, "Constraints: p(0) = 0, p'(0) = 1"));
+    assert_non_null(strstr(a, "Max relative error"));
+    assert_non_null(strstr(a, "Sweep:"));
+    assert_non_null(strstr(a, "0x1p+0f,")); /* c1 = 1 in hex-float */
+    unlink("/tmp/pf-det-a.c");
+    unlink("/tmp/pf-det-b.c");
+}
+
+static double json_num(const char *s, const char *key)
+{
+    char k[64];
+    snprintf(k, sizeof k, "\"%s\": ", key);
+    const char *p = strstr(s, k);
+    assert_non_null(p);
+    return strtod(p + strlen(k), NULL);
+}
+
+static void test_json(void **st)
+{
+    (void)st;
+    tu_run("pfmathgen", "--func log --order 10 --json", &R);
+    assert_int_equal(R.status, 0);
+    assert_int_equal(tu_count_lines(R.out), 1);
+    const char *keys[] = {"\"func\": \"log\"", "\"variant\": \"exact\"", "\"type\": \"float\"",
+                          "\"order\": 10", "\"domain\":", "\"coefficients\": [\"0x0p+0\", \"0x1p+0\"",
+                          "\"max_rel_error\":", "\"sweep\":", "\"max_ulp\":", "\"mean_ulp\":",
+                          "\"count\":", "\"worst_input\":"};
+    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
+        assert_non_null(strstr(R.out, keys[i]));
+    /* the seed: order 10 is "within floating point precision" (2^-24) */
+    double e = json_num(R.out, "max_rel_error");
+    assert_true(e > 0 && e < 0x1p-24);
+    assert_true(json_num(R.out, "max_ulp") <= 1.0);
+    tu_run("pfmathgen", "--func log --order 10 --reduction seed --json", &R);
+    assert_int_equal(R.status, 0);
+    e = json_num(R.out, "max_rel_error");
+    assert_true(e > 0 && e < 0x1p-24);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_help),
+        cmocka_unit_test(test_deterministic),
+        cmocka_unit_test(test_json),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

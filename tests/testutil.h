@@ -1,0 +1,71 @@
+/* Helpers shared by the tests: locate and run the built programs. */
+#ifndef PF_TESTUTIL_H
+#define PF_TESTUTIL_H
+
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+/* build/<...>/tests/test_x -> build/<...>/<prog> */
+static inline void tu_prog_path(const char *prog, char *out, size_t n)
+{
+    char self[PATH_MAX - 64];
+    ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
+    self[k > 0 ? k : 0] = 0;
+    char *s = strrchr(self, '/');
+    if (s)
+        *s = 0;
+    s = strrchr(self, '/');
+    if (s)
+        *s = 0;
+    out[0] = 0;
+    if (strlen(self) + strlen(prog) + 2 <= n) {
+        strcpy(out, self);
+        strcat(out, "/");
+        strcat(out, prog);
+    }
+}
+
+typedef struct {
+    int status;          /* exit status, or -1 */
+    char out[1 << 16];   /* stdout (truncated) */
+    char err[1 << 14];   /* stderr (truncated) */
+} tu_run_result;
+
+/* Runs "prog args" through the shell; captures stdout and stderr. */
+static inline void tu_run(const char *prog, const char *args, tu_run_result *r)
+{
+    char path[PATH_MAX], cmd[PATH_MAX + 2048], eo[64] = "/tmp/pftest.XXXXXX";
+    tu_prog_path(prog, path, sizeof path);
+    int fd = mkstemp(eo);
+    close(fd);
+    snprintf(cmd, sizeof cmd, "'%s' %s 2>'%s'", path, args, eo);
+    FILE *p = popen(cmd, "r");
+    size_t n = p ? fread(r->out, 1, sizeof r->out - 1, p) : 0;
+    r->out[n] = 0;
+    if (p) {
+        while (fgetc(p) != EOF) {
+        }
+    }
+    int st = p ? pclose(p) : -1;
+    r->status = st >= 0 && WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    FILE *f = fopen(eo, "r");
+    n = f ? fread(r->err, 1, sizeof r->err - 1, f) : 0;
+    r->err[n] = 0;
+    if (f)
+        fclose(f);
+    unlink(eo);
+}
+
+static inline int tu_count_lines(const char *s)
+{
+    int n = 0;
+    for (; *s; s++)
+        n += *s == '\n';
+    return n;
+}
+
+#endif
