@@ -65,6 +65,13 @@ typedef struct {
  * err (inconsistent or dependent constraints, order too low for them, ...). */
 int fit_lsq(const fit_problem *pb, fit_poly *out, char *err, size_t errlen);
 
+/* Minimax refinement: start from the least-squares fit and minimize the
+ * maximum relative (or absolute) error over a dense set of D, keeping the
+ * same equality constraints.  Epigraph form, solved with nlopt's SLSQP:
+ * minimize s subject to |e(x_i)| <= s, e linear in the free coefficients
+ * (the null space of the constraints). */
+int fit_minimax(const fit_problem *pb, fit_poly *out, char *err, size_t errlen);
+
 /* Round the coefficients to fmt the way one does by hand with Sollya: from
  * the lowest degree up, round c_k, pin it as a constraint, re-fit the rest
  * (by refit(), which is fit_lsq or the minimax refiner).  A coefficient that

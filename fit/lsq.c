@@ -217,7 +217,7 @@ int fit_default_nodes(const fit_problem *pb)
 }
 
 /* Constraint matrix rows in the basis (C is ncon x n, column-major). */
-static void constraint_rows(const fit_problem *pb, int n,
+void constraint_rows(const fit_problem *pb, int n,
                             fit_real M[FIT_MAX_ORDER + 1][FIT_MAX_ORDER + 1], fit_real *C)
 {
     fit_real phi[FIT_MAX_ORDER + 1], dphi[FIT_MAX_ORDER + 1];
@@ -246,19 +246,25 @@ int fit_coef_determined(const fit_problem *pb, int k)
     return la_rowspace_dist(C, pb->ncon, n, e) < (fit_real)1e-25;
 }
 
+/* p(0) and p'(0) are c0 and c1: pose them as coefficient constraints so
+ * that they can hold exactly (log's p(0) = 0 keeps relative error finite). */
+void fit_normalize_constraints(const fit_problem *pb0, fit_problem *pbs)
+{
+    *pbs = *pb0;
+    for (int c = 0; c < pbs->ncon; c++)
+        if (pbs->con[c].kind != FIT_CON_COEF && pbs->con[c].t == 0) {
+            pbs->con[c].value = pbs->con[c].kind == FIT_CON_VALUE ? fit_eval_target(pb0, 0)
+                                                                  : fit_eval_target_deriv(pb0, 0);
+            pbs->con[c].index = pbs->con[c].kind == FIT_CON_VALUE ? 0 : 1;
+            pbs->con[c].kind = FIT_CON_COEF;
+        }
+}
+
 int fit_lsq(const fit_problem *pb0, fit_poly *out, char *err, size_t errlen)
 {
-    /* p(0) and p'(0) are c0 and c1: pose them as coefficient constraints so
-     * that they can hold exactly (log's p(0) = 0 keeps relative error finite). */
-    fit_problem pbs = *pb0;
+    fit_problem pbs;
+    fit_normalize_constraints(pb0, &pbs);
     const fit_problem *pb = &pbs;
-    for (int c = 0; c < pbs.ncon; c++)
-        if (pbs.con[c].kind != FIT_CON_COEF && pbs.con[c].t == 0) {
-            pbs.con[c].value = pbs.con[c].kind == FIT_CON_VALUE ? fit_eval_target(pb0, 0)
-                                                                : fit_eval_target_deriv(pb0, 0);
-            pbs.con[c].index = pbs.con[c].kind == FIT_CON_VALUE ? 0 : 1;
-            pbs.con[c].kind = FIT_CON_COEF;
-        }
     int n = basis_count(pb);
     if (pb->order < 1 || pb->order > FIT_MAX_ORDER) {
         snprintf(err, errlen, "order %d out of range 1..%d", pb->order, FIT_MAX_ORDER);

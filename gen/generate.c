@@ -82,10 +82,17 @@ static void hexf(char *buf, size_t n, double v)
 static const char *method_text(const pf_gen_result *r)
 {
     static char buf[256];
-    snprintf(buf, sizeof buf,
-             "least-squares %s error (Gauss-Legendre quadrature), coefficients rounded to float "
-             "by pin-and-refit",
-             r->spec->errkind == FIT_REL ? "relative" : "absolute");
+    const char *kind = r->pb.errkind == FIT_REL ? "relative" : "absolute";
+    if (r->minimax)
+        snprintf(buf, sizeof buf,
+                 "minimax %s error (nlopt SLSQP, epigraph form, from the least-squares fit), "
+                 "coefficients rounded to float by pin-and-refit",
+                 kind);
+    else
+        snprintf(buf, sizeof buf,
+                 "least-squares %s error (Gauss-Legendre quadrature), coefficients rounded to float "
+                 "by pin-and-refit",
+                 kind);
     return buf;
 }
 
@@ -168,16 +175,18 @@ static void emit(sbuf *b, const pf_gen_result *r, const char *command)
     substitute(b, template_text(s->arity == 2 ? "tail_binary.c" : "tail_unary.c"), kv);
 }
 
-static int fit_order(const pf_spec *s, int order, fit_poly *real, fit_poly *poly, fit_problem *pb,
-                     char *err, size_t errlen)
+static int fit_order(const pf_spec *s, int order, int minimax, int errkind, fit_poly *real,
+                     fit_poly *poly, fit_problem *pb, char *err, size_t errlen)
 {
     pf_spec_problem(s, order, pb);
-    if (fit_lsq(pb, real, err, errlen) != 0)
+    pb->errkind = errkind;
+    fit_refit_fn refit = minimax ? fit_minimax : fit_lsq;
+    if (refit(pb, real, err, errlen) != 0)
         return -1;
     *poly = *real;
     fit_measure(pb, real);
     fit_coeffmt fmt = {FIT_COEF_FLOAT, 0};
-    if (fit_round(pb, fmt, fit_lsq, poly, NULL, err, errlen) != 0)
+    if (fit_round(pb, fmt, refit, poly, NULL, err, errlen) != 0)
         return -1;
     fit_measure(pb, poly);
     return 0;
@@ -237,29 +246,52 @@ int pf_generate(const pf_gen_req *rq, pf_gen_result *r, char *err, size_t errlen
         snprintf(r->name, sizeof r->name, "%s", rq->name);
     else
         snprintf(r->name, sizeof r->name, "pf_%sf%s", s->func, !strcmp(s->variant, "fast") ? "_fast" : "");
-    int order = rq->order ? rq->order : s->default_order;
+    r->minimax = rq->method ? !strcmp(rq->method, "minimax") : !strcmp(s->variant, "exact");
+    int errkind = rq->target > 0 && rq->target_abs ? FIT_ABS : s->errkind;
+    double target = rq->target > 0 ? rq->target : s->fast_target;
+    r->target = rq->target;
+    r->target_abs = rq->target_abs;
+    snprintf(r->target_text, sizeof r->target_text, "%s", rq->target_text ? rq->target_text : "");
+    int order = rq->order ? rq->order : rq->target > 0 ? 0 : s->default_order;
     if (order) {
-        if (fit_order(s, order, &r->real, &r->poly, &r->pb, err, errlen) != 0)
+        if (fit_order(s, order, r->minimax, errkind, &r->real, &r->poly, &r->pb, err, errlen) != 0)
             return -1;
+        if (rq->target > 0 && !(r->poly.max_err <= rq->target)) {
+            snprintf(err, errlen, "order %d does not meet the target %s: max %s error %.3e > %.3e",
+                     order, r->target_text, errkind == FIT_REL ? "relative" : "absolute",
+                     r->poly.max_err, rq->target);
+            return -1;
+        }
     } else {
-        /* the smallest order whose emitted polynomial meets the fast target */
+        /* the smallest order whose emitted polynomial meets the target */
         int lo = 1;
-        while (lo < 30 && (s->parity == FIT_PARITY_NONE ? lo + 1 : (lo + 2) / 2) < s->ncon)
+        while (lo < FIT_MAX_ORDER && (s->parity == FIT_PARITY_NONE ? lo + 1 : (lo + 2) / 2) < s->ncon)
             lo++;
         double prev = -1;
         for (order = lo; order <= FIT_MAX_ORDER; order++) {
             char e2[256];
-            if (fit_order(s, order, &r->real, &r->poly, &r->pb, e2, sizeof e2) != 0)
+            if (s->parity == FIT_PARITY_ODD && order % 2 == 0)
+                continue; /* an odd fit of even order is the order below */
+            if (s->parity == FIT_PARITY_EVEN && order % 2 == 1)
                 continue;
-            if (r->poly.max_err <= s->fast_target)
+            if (fit_order(s, order, r->minimax, errkind, &r->real, &r->poly, &r->pb, e2, sizeof e2) != 0)
+                continue;
+            if (r->poly.max_err <= target)
                 break;
             prev = r->poly.max_err;
         }
         if (order > FIT_MAX_ORDER) {
-            snprintf(err, errlen, "no order up to %d reaches %g", FIT_MAX_ORDER, s->fast_target);
+            snprintf(err, errlen, "impossible target: no order up to %d reaches %s error %.3g (order %d: %.3g)",
+                     FIT_MAX_ORDER, errkind == FIT_REL ? "relative" : "absolute", target, FIT_MAX_ORDER, prev);
             return -1;
         }
         r->below_err = prev;
+    }
+    if (r->minimax) {
+        fit_poly tmp;
+        fit_problem pb2;
+        if (fit_order(s, order, 0, errkind, &tmp, &r->lsq_poly, &pb2, err, errlen) != 0)
+            return -1;
     }
     r->order = order;
     sbuf b = {0};
@@ -304,9 +336,12 @@ void pf_report_text(FILE *o, const pf_gen_result *r)
     fprintf(o, "  reduction    %s\n", s->reduction_text);
     fprintf(o, "  domain       %s for t in [%a, %a] = [%.9g, %.9g]\n", s->target_text, s->a, s->b, s->a, s->b);
     fprintf(o, "  order        %d%s\n", r->order, r->below_err >= 0 ? " (smallest meeting the target)" : "");
+    if (r->below_err >= 0 || r->target > 0)
+        fprintf(o, "  target       %s%smax %s error <= %.3g; order %d reaches %.3e%s\n", r->target_text,
+                r->target_text[0] ? ": " : "", r->pb.errkind == FIT_REL ? "relative" : "absolute",
+                r->target > 0 ? r->target : s->fast_target, r->order, r->poly.max_err, "");
     if (r->below_err >= 0)
-        fprintf(o, "  target       max %s error <= %.3g; order %d reached %.3e\n",
-                s->errkind == FIT_REL ? "relative" : "absolute", s->fast_target, r->order - 1, r->below_err);
+        fprintf(o, "               the order below reaches %.3e\n", r->below_err);
     fprintf(o, "  method       %s\n", method_text(r));
     fprintf(o, "  constraints  %s\n", con);
     fprintf(o, "  coefficients (hex-float, decimal):\n");
@@ -315,6 +350,8 @@ void pf_report_text(FILE *o, const pf_gen_result *r)
     fprintf(o, "  max %s error of the emitted polynomial: %.4e (2^%.2f) at t = %.9g\n",
             s->errkind == FIT_REL ? "rel" : "abs", r->poly.max_err, log2(r->poly.max_err), r->poly.max_err_at);
     fprintf(o, "    (real-coefficient fit before rounding: %.4e)\n", r->real.max_err);
+    if (r->minimax)
+        fprintf(o, "    (least-squares fit of the same order, rounded the same way: %.4e)\n", r->lsq_poly.max_err);
     if (r->swept) {
         pf_sweep_print(o, "  ULP sweep of the emitted function", (pf_func)pfref_lookup(s->func), &r->sweep);
         fprintf(o, "    (%s)\n", r->sweep_desc);
@@ -329,11 +366,15 @@ void pf_report_json(FILE *o, const pf_gen_result *r)
     fprintf(o, "{\"func\": \"%s\", \"variant\": \"%s\", \"type\": \"float\", \"name\": \"%s\", "
                "\"reduction\": \"%s\", \"order\": %d, \"domain\": [\"%a\", \"%a\"], ",
             s->func, s->variant, r->name, s->reduction, r->order, s->a, s->b);
-    fprintf(o, "\"method\": \"lsq\", \"constraints\": \"%s\", \"coefficients\": [", con);
+    fprintf(o, "\"method\": \"%s\", \"constraints\": \"%s\", \"coefficients\": [", r->minimax ? "minimax" : "lsq", con);
     for (int k = 0; k <= r->order; k++)
         fprintf(o, "%s\"%a\"", k ? ", " : "", (double)r->poly.c[k]);
-    fprintf(o, "], \"max_rel_error\": %.6e, \"max_rel_error_at\": %.9g, \"max_rel_error_real_coefficients\": %.6e",
-            r->poly.max_err, r->poly.max_err_at, r->real.max_err);
+    fprintf(o, "], \"%s\": %.6e, \"max_rel_error_at\": %.9g, \"max_rel_error_real_coefficients\": %.6e",
+            r->pb.errkind == FIT_REL ? "max_rel_error" : "max_abs_error", r->poly.max_err, r->poly.max_err_at, r->real.max_err);
+    if (r->minimax)
+        fprintf(o, ", \"lsq_max_rel_error\": %.6e", r->lsq_poly.max_err);
+    if (r->below_err >= 0)
+        fprintf(o, ", \"order_below_error\": %.6e", r->below_err);
     if (r->swept) {
         fprintf(o, ", \"sweep\": {\"max_ulp\": %.6f, \"mean_ulp\": %.6f, \"cr_percent\": %.4f, "
                    "\"count\": %llu, \"worst_input\": \"%a\"}",

@@ -12,6 +12,9 @@
 typedef struct {
     const char *func, *variant, *reduction, *name, *method;
     int order;            /* 0: the spec's default (fast: smallest meeting its target) */
+    double target;        /* > 0: smallest order whose emitted polynomial meets it */
+    int target_abs;       /* the target is an absolute error */
+    const char *target_text;  /* e.g. "float (2^-24 relative)" */
     int sweep;            /* compile the emitted code and sweep it */
     const char *command;  /* the pfmathgen command line, recorded in the file */
 } pf_gen_req;
@@ -23,6 +26,11 @@ typedef struct {
     fit_poly poly;        /* emitted coefficients (measured) */
     int order;
     double below_err;     /* error of order-1 when the order was searched, else -1 */
+    int minimax;          /* method: 1 minimax, 0 least squares */
+    fit_poly lsq_poly;    /* with minimax: the rounded LSQ fit of the same order, for comparison */
+    double target;
+    int target_abs;
+    char target_text[96];
     char name[128];
     char *csrc;
     size_t clen;

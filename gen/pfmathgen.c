@@ -1,5 +1,8 @@
 /* pfmathgen: fit, report and emit C for one function.  See --help. */
+#include "fixedtype.h"
 #include "generate.h"
+
+#include <math.h>
 
 #include <ctype.h>
 #include <errno.h>
@@ -22,7 +25,14 @@ static const char usage[] =
     "                      the smallest order reaching 2^-10 relative error)\n"
     "  --reduction R       argument reduction (log/log2: balanced (default), seed)\n"
     "  --type float        number type (float only for now)\n"
-    "  --method lsq        fitting method (least squares, the seed's)\n"
+    "  --method M          minimax (default for exact: least maximum error, nlopt) or\n"
+    "                      lsq (default for fast: the seed's least squares)\n"
+    "  --target T          smallest order whose emitted polynomial meets T: float\n"
+    "                      (relative error below 2^-24, the seed's criterion) or a\n"
+    "                      fixed type such as 'fixed<15,14>' or 'unsigned fixed<8,8>'\n"
+    "                      (absolute error below half an LSB of the output)\n"
+    "  --max-rel-err E     the same with a relative error bound (1e-4, 2^-12)\n"
+    "  --max-abs-err E     the same with an absolute error bound\n"
     "  --name NAME         emitted function name (default pf_<func>f, pf_<func>f_fast)\n"
     "  -o, --output FILE   write the C source to FILE (nothing is written on error)\n"
     "  --json              print the report as one JSON object on stdout instead of C\n"
@@ -108,10 +118,13 @@ int main(int argc, char **argv)
         {"type", required_argument, 0, 't'},    {"method", required_argument, 0, 'm'},
         {"name", required_argument, 0, 'N'},    {"output", required_argument, 0, 'o'},
         {"json", no_argument, 0, 'j'},          {"no-sweep", no_argument, 0, 'S'},
-        {"help", no_argument, 0, 'h'},          {0, 0, 0, 0}};
+        {"help", no_argument, 0, 'h'},          {"target", required_argument, 0, 'T'},
+        {"max-rel-err", required_argument, 0, 'R'}, {"max-abs-err", required_argument, 0, 'A'},
+        {0, 0, 0, 0}};
     pf_gen_req rq = {0};
     rq.variant = "exact";
-    rq.method = "lsq";
+    rq.method = NULL;
+    char target_text[96] = "";
     rq.sweep = 1;
     const char *out = NULL;
     int json = 0;
@@ -140,10 +153,48 @@ int main(int argc, char **argv)
                 die2("unsupported type '%s': only float is available in this build%s", optarg, "");
             break;
         case 'm':
-            if (strcmp(optarg, "lsq"))
-                die2("unknown method '%s' (available: lsq)%s", optarg, "");
+            if (strcmp(optarg, "lsq") && strcmp(optarg, "minimax"))
+                die2("unknown method '%s' (available: minimax, lsq)%s", optarg, "");
             rq.method = optarg;
             break;
+        case 'T': {
+            if (rq.target > 0)
+                die2("only one of --target, --max-rel-err, --max-abs-err%s%s", "", "");
+            pf_type t;
+            char e[200];
+            if (pf_type_parse(optarg, &t, e, sizeof e) != 0)
+                die2("bad --target: %s%s", e, "");
+            pf_type_format(&t, target_text, sizeof target_text);
+            if (t.is_float) {
+                rq.target = 0x1p-24;
+                rq.target_abs = 0;
+            } else {
+                rq.target = 0.5 * pf_type_lsb(&t);
+                rq.target_abs = 1;
+            }
+            break;
+        }
+        case 'R':
+        case 'A': {
+            if (rq.target > 0)
+                die2("only one of --target, --max-rel-err, --max-abs-err%s%s", "", "");
+            char *end;
+            double v;
+            if (!strncmp(optarg, "2^", 2)) {
+                double ex = strtod(optarg + 2, &end);
+                v = end == optarg + 2 ? NAN : ldexp(1.0, (int)ex);
+                if (ex != (int)ex)
+                    v = NAN;
+            } else {
+                v = strtod(optarg, &end);
+            }
+            if (*end || !(v > 0 && v < 1))
+                die2("bad error bound '%s': expected a number in (0, 1) such as 1e-4 or 2^-12%s", optarg, "");
+            rq.target = v;
+            rq.target_abs = c == 'A';
+            snprintf(target_text, sizeof target_text, "%s %s", c == 'A' ? "--max-abs-err" : "--max-rel-err", optarg);
+            break;
+        }
         case 'N':
             if (!is_identifier(optarg))
                 die2("bad --name '%s': not a C identifier%s", optarg, "");
@@ -163,6 +214,8 @@ int main(int argc, char **argv)
         die2("--func is required (see --help)%s%s", "", "");
     if (rq.reduction && !pf_spec_find(rq.func, rq.variant, rq.reduction) && pf_spec_func_known(rq.func))
         die2("unknown reduction '%s' for %s", rq.reduction, rq.func);
+    if (target_text[0])
+        rq.target_text = target_text;
     rq.command = command_line(argc, argv);
     pf_gen_result r;
     char err[512];

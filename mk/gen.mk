@@ -20,3 +20,5 @@ TESTS += $(BUILD)/tests/test_fit $(BUILD)/tests/test_cli
 $(BUILD)/tests/test_cli: $(BUILD)/pfmathgen
 TESTS += $(BUILD)/tests/test_log
 $(BUILD)/tests/test_log: $(BUILD)/pfmathgen
+TESTS += $(BUILD)/tests/test_sollya
+$(BUILD)/tests/test_sollya: $(BUILD)/pfmathgen

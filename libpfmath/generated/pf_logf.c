@@ -4,10 +4,10 @@
  * Reduction:   x = 2^k m, m in [0x1.6a09e6p-1, 0x1.6a09e6p+0) (balanced about 1), t = m - 1
  * Domain:      log(1+t) on t in [-0x1.2bec34p-2, 0x1.a82798p-2]  (-0.292893231 .. 0.414213538)
  * Order:       10 (float coefficients, Horner in double)
- * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
+ * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), coefficients rounded to float by pin-and-refit
  * Constraints: p(0) = 0, p'(0) = 1
- * Max relative error of this polynomial on the domain: 1.266e-08 (2^-26.23) at t = -0x1.2bec34p-2
- * Sweep:       max 0.640 ULP at x = 0x1.6a0e8p-1 (0x3f350740), mean 0.2255 ULP, 98.49% correctly
+ * Max relative error of this polynomial on the domain: 4.189e-09 (2^-27.83) at t = 0x1.62548553d18fcp-2
+ * Sweep:       max 0.567 ULP at x = 0x1.e10a4p-1 (0x3f708520), mean 0.2256 ULP, 98.25% correctly
  *              rounded; sampled sweep of 1311344 inputs (every 16th float in [0x1p-1, 0x1.fffffep+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -48,15 +48,15 @@ static inline float pf_asfloat(uint32_t u) { float x; memcpy(&x, &u, sizeof x); 
 static const float pf_logf_C[11] = {
     0x0p+0f,    /* c0 = 0 */
     0x1p+0f,    /* c1 = 1 */
-    -0x1.fffffap-2f,    /* c2 = -0.499999911 */
-    0x1.55555cp-2f,    /* c3 = 0.333333433 */
-    -0x1.000366p-2f,    /* c4 = -0.250012964 */
-    0x1.999c86p-3f,    /* c5 = 0.200005576 */
-    -0x1.54490cp-3f,    /* c6 = -0.166154951 */
-    0x1.231ea6p-3f,    /* c7 = 0.142148301 */
-    -0x1.0ebf8cp-3f,    /* c8 = -0.132201284 */
-    0x1.038fd2p-3f,    /* c9 = 0.126739159 */
-    -0x1.2ec91ep-4f,    /* c10 = -0.073922269 */
+    -0x1.fffff8p-2f,    /* c2 = -0.499999881 */
+    0x1.55555p-2f,    /* c3 = 0.333333254 */
+    -0x1.000438p-2f,    /* c4 = -0.250016093 */
+    0x1.99a41cp-3f,    /* c5 = 0.200020045 */
+    -0x1.5423e8p-3f,    /* c6 = -0.166084111 */
+    0x1.226c84p-3f,    /* c7 = 0.14180854 */
+    -0x1.0f5208p-3f,    /* c8 = -0.132480681 */
+    0x1.0874fep-3f,    /* c9 = 0.129129395 */
+    -0x1.381384p-4f,    /* c10 = -0.0761904866 */
 };
 
 /* log(x) = k ln2 + log(m), x = 2^k m, m in [sqrt(2)/2, sqrt(2)).

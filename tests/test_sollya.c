@@ -1,0 +1,147 @@
+/* Cross-checks against Sollya, the independent oracle: for each function at
+ * the order the library uses, pfmathgen's minimax (float coefficients, same
+ * domain and constraints) must be within 1.1x of Sollya's fpminimax with
+ * single-precision coefficients; and the order `--target float` picks must
+ * not exceed Sollya's guessdegree.  Skipped, with a message, without sollya. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "testutil.h"
+
+#include <math.h>
+
+/* What Sollya is asked: f(x) on the domain pfmathgen reports, as
+ *   p = q + sum a_k x^k over `monomials`, with q the constrained part
+ * (our value/slope constraints at 0 are exactly such a q). */
+typedef struct {
+    const char *func;      /* pfmathgen --func */
+    const char *f;         /* Sollya expression in x */
+    const char *q;         /* constrained part */
+    int first, step;       /* free monomials: first, first+step, ... <= order */
+    const char *gd_f, *gd_w; /* guessdegree target and weight (relative) */
+    int gd_shift;          /* order = guessdegree + shift (q = x * ...) */
+} sollya_case;
+
+static const sollya_case cases[] = {
+    {"log", "log(1+x)", "x", 2, 1, "log(1+x)/x", "x/log(1+x)", 1},
+    {"log2", "log(1+x)", "x", 2, 1, "log(1+x)/x", "x/log(1+x)", 1},
+};
+
+static int have_sollya(void)
+{
+    return system("command -v sollya >/dev/null 2>&1") == 0;
+}
+
+static double json_num(const char *s, const char *key)
+{
+    char k[64];
+    snprintf(k, sizeof k, "\"%s\": ", key);
+    const char *p = strstr(s, k);
+    assert_non_null(p);
+    return strtod(p + strlen(k), NULL);
+}
+
+static void json_domain(const char *s, char *a, char *b)
+{
+    const char *p = strstr(s, "\"domain\": [\"");
+    assert_non_null(p);
+    assert_int_equal(sscanf(p, "\"domain\": [\"%63[^\"]\", \"%63[^\"]\"]", a, b), 2);
+}
+
+static double run_sollya(const char *script, char *out2, size_t n2)
+{
+    char path[] = "/tmp/pfsollya.XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    assert_true(write(fd, script, strlen(script)) == (ssize_t)strlen(script));
+    close(fd);
+    char cmd[256];
+    snprintf(cmd, sizeof cmd, "sollya --warnonstderr %s 2>/dev/null", path);
+    FILE *p = popen(cmd, "r");
+    char line[4096], last[4096] = "", prev[4096] = "";
+    while (fgets(line, sizeof line, p)) {
+        snprintf(prev, sizeof prev, "%s", last);
+        snprintf(last, sizeof last, "%s", line);
+    }
+    pclose(p);
+    unlink(path);
+    if (out2)
+        snprintf(out2, n2, "%s", prev);
+    return strtod(last, NULL);
+}
+
+static tu_run_result R;
+
+static void test_minimax_vs_fpminimax(void **st)
+{
+    (void)st;
+    if (!have_sollya()) {
+        print_message("sollya is not installed: skipping the Sollya cross-check\n");
+        skip();
+    }
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const sollya_case *c = &cases[i];
+        char args[256];
+        snprintf(args, sizeof args, "--func %s --no-sweep --json", c->func);
+        tu_run("pfmathgen", args, &R);
+        assert_int_equal(R.status, 0);
+        double ours = json_num(R.out, "max_rel_error"), lsq = json_num(R.out, "lsq_max_rel_error");
+        int order = (int)json_num(R.out, "order");
+        char a[64], b[64], mono[256] = "", script[2048];
+        json_domain(R.out, a, b);
+        for (int k = c->first; k <= order; k += c->step) {
+            char t[16];
+            snprintf(t, sizeof t, "%s%d", mono[0] ? "," : "", k);
+            strcat(mono, t);
+        }
+        snprintf(script, sizeof script,
+                 "prec = 200; display = decimal;\n"
+                 "f = %s; q = %s;\n"
+                 "p = fpminimax(f, [|%s|], [|single...|], [%s;%s], relative, floating, q);\n"
+                 "print(dirtyinfnorm(p/f - 1, [%s;%s]));\n",
+                 c->f, c->q, mono, a, b, a, b);
+        double sol = run_sollya(script, NULL, 0);
+        print_message("%-6s order %2d: minimax %.4e  lsq %.4e  sollya fpminimax %.4e  ratio %.3f\n",
+                      c->func, order, ours, lsq, sol, ours / sol);
+        assert_true(sol > 0);
+        assert_true(ours <= 1.1 * sol);
+    }
+}
+
+static void test_target_float_vs_guessdegree(void **st)
+{
+    (void)st;
+    if (!have_sollya()) {
+        print_message("sollya is not installed: skipping the Sollya cross-check\n");
+        skip();
+    }
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const sollya_case *c = &cases[i];
+        char args[256];
+        snprintf(args, sizeof args, "--func %s --no-sweep --json --target float", c->func);
+        tu_run("pfmathgen", args, &R);
+        assert_int_equal(R.status, 0);
+        int order = (int)json_num(R.out, "order");
+        assert_true(json_num(R.out, "max_rel_error") <= 0x1p-24);
+        char a[64], b[64], script[2048], line[4096];
+        json_domain(R.out, a, b);
+        snprintf(script, sizeof script,
+                 "prec = 200;\nd = guessdegree(%s, [%s;%s], 2^-24, %s);\nprint(inf(d));\n", c->gd_f,
+                 a, b, c->gd_w);
+        int gd = (int)run_sollya(script, line, sizeof line) + c->gd_shift;
+        print_message("%-6s --target float: order %d, Sollya guessdegree %d\n", c->func, order, gd);
+        assert_true(gd > 0);
+        assert_true(order <= gd);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_minimax_vs_fpminimax),
+        cmocka_unit_test(test_target_float_vs_guessdegree),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
