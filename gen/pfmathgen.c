@@ -1,4 +1,5 @@
 /* pfmathgen: fit, report and emit C for one function.  See --help. */
+#include "fixedgen.h"
 #include "fixedtype.h"
 #include "generate.h"
 
@@ -24,7 +25,9 @@ static const char usage[] =
     "  --order N           polynomial degree, 1..30 (default: the library's; for fast,\n"
     "                      the smallest order reaching 2^-10 relative error)\n"
     "  --reduction R       argument reduction (log/log2: balanced (default), seed)\n"
-    "  --type float        number type (float only for now)\n"
+    "  --type T            input type: float (default) or a fixed type such as\n"
+    "                      'fixed<15,12>', 'unsigned fixed<16,8>', 'ufixed<16,8>'\n"
+    "  --out-type T        output type (fixed point; default: the input type)\n"
     "  --method M          minimax (default for exact: least maximum error, nlopt) or\n"
     "                      lsq (default for fast: the seed's least squares)\n"
     "  --target T          smallest order whose emitted polynomial meets T: float\n"
@@ -121,6 +124,8 @@ int main(int argc, char **argv)
         {"help", no_argument, 0, 'h'},          {"target", required_argument, 0, 'T'},
         {"max-rel-err", required_argument, 0, 'R'}, {"max-abs-err", required_argument, 0, 'A'},
         {0, 0, 0, 0}};
+    if (pfmathgen_wants_fixed(argc, argv))
+        return pfmathgen_fixed_main(argc, argv);
     pf_gen_req rq = {0};
     rq.variant = "exact";
     rq.method = NULL;

@@ -3,7 +3,7 @@ REF_SRCS += ref/sweep.c
 PROGS += $(BUILD)/pfsweep
 $(BUILD)/obj/ref/sweep.o: ALL_CFLAGS += -fopenmp
 
-$(BUILD)/pfsweep: $(BUILD)/obj/tests/pfsweep.o $(BUILD)/libpfgen.a $(BUILD)/libpfref.a
+$(BUILD)/pfsweep: $(BUILD)/obj/tests/pfsweep.o $(BUILD)/obj/tests/pfsweep_fixed.o $(BUILD)/libpfgen.a $(BUILD)/libpfref.a
 	$(CC) $(LDFLAGS) -fopenmp -o $@ $^ $(LIBS_NUM)
 
 # make sweep: every library function over all 2^32 floats; exact variants

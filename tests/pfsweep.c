@@ -32,8 +32,13 @@ static void die2(const char *msg, const char *arg)
     exit(2);
 }
 
+int pfsweep_fixed_main(int argc, char **argv); /* tests/pfsweep_fixed.c */
+
 int main(int argc, char **argv)
 {
+    for (int i = 1; i < argc; i++)
+        if (!strncmp(argv[i], "--type", 6) || !strncmp(argv[i], "--out-type", 10))
+            return pfsweep_fixed_main(argc, argv);
     static const struct option opts[] = {
         {"func", required_argument, 0, 'f'},   {"variant", required_argument, 0, 'v'},
         {"lib", optional_argument, 0, 'l'},    {"source", required_argument, 0, 's'},
