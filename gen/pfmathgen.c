@@ -2,6 +2,7 @@
 #include "fixedgen.h"
 #include "fixedtype.h"
 #include "generate.h"
+#include "scene.h"
 
 #include <math.h>
 
@@ -40,6 +41,10 @@ static const char usage[] =
     "  -o, --output FILE   write the C source to FILE (nothing is written on error)\n"
     "  --json              print the report as one JSON object on stdout instead of C\n"
     "  --no-sweep          do not compile and sweep the emitted code\n"
+    "  --scene FILE -o DIR generate exactly the functions a scene file lists (one\n"
+    "                      'function exact|fast in-type out-type' a line), each at\n"
+    "                      the smallest order meeting its output type, plus scene.h\n"
+    "                      and report.txt\n"
     "  -h, --help          this text\n"
     "Exit status: 0 ok, 2 bad usage or impossible request, 1 internal failure.\n";
 
@@ -124,6 +129,19 @@ int main(int argc, char **argv)
         {"help", no_argument, 0, 'h'},          {"target", required_argument, 0, 'T'},
         {"max-rel-err", required_argument, 0, 'R'}, {"max-abs-err", required_argument, 0, 'A'},
         {0, 0, 0, 0}};
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--scene")) {
+            const char *scene = i + 1 < argc ? argv[i + 1] : NULL, *dir = NULL;
+            for (int j = 1; j < argc; j++)
+                if ((!strcmp(argv[j], "-o") || !strcmp(argv[j], "--output")) && j + 1 < argc)
+                    dir = argv[j + 1];
+            if (!scene || !dir || argc != 5)
+                die2("usage: pfmathgen --scene FILE -o DIR%s%s", "", "");
+            char *cmd = command_line(argc, argv);
+            int rc = pfmathgen_scene_main(scene, dir, cmd);
+            free(cmd);
+            return rc;
+        }
     if (pfmathgen_wants_fixed(argc, argv))
         return pfmathgen_fixed_main(argc, argv);
     pf_gen_req rq = {0};

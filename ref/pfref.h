@@ -5,10 +5,17 @@
  * the binary32 exponent range is set and restored around each MPFR call
  * (MPFR's exponent range is per-thread in a TLS build, which is checked).
  *
+ * Needs the default floating-point environment (round to nearest, no
+ * flush-to-zero: do not link the caller with -ffast-math's crtfastmath).
+ *
+ * MPFR keeps per-thread caches (pi, log 2): a thread that ends before the
+ * program should call mpfr_free_cache() first (LeakSanitizer reports them).
+ *
  * Speed: pfref_ulp_err, pfref_is_cr, pfref_f_fast and pfref_lsb_err decide
  * from glibc's double functions (tens of ns) and call MPFR only when that
  * estimate cannot settle the answer (near a rounding boundary, near an error
- * threshold, special inputs): well under 1e-4 of random inputs.
+ * threshold, special inputs): measured 1e-7 to 2e-6 of all floats for the
+ * rounding decision.
  */
 #ifndef PFREF_H
 #define PFREF_H
@@ -31,7 +38,7 @@ int pfref_mpfr(pf_func f, mpfr_t y, const mpfr_t x, const mpfr_t x2, mpfr_rnd_t 
 /* Correctly rounded binary32 result, round to nearest even, IEEE/C99 Annex F
    semantics: subnormals, overflow to inf, NaN on domain errors, signed zeros,
    atan2's special cases, exact argument reduction for sin/cos/tan.  Always
-   MPFR (about 1-10 us); x2 is ignored unless f is PF_ATAN2. */
+   MPFR (0.2-3 us here); x2 is ignored unless f is PF_ATAN2. */
 float pfref_f(pf_func f, float x, float x2);
 
 /* Same result as pfref_f, via the double fast path (MPFR only near midpoints). */
@@ -49,15 +56,20 @@ double pfref_exact_d(pf_func f, float x, float x2);
    signed zeros included) -> 0; got inf and correct finite, or the reverse, or
    infinities of opposite signs -> INFINITY; got and correct result zeros of
    opposite signs -> INFINITY.  Otherwise the error is accurate to about
-   1e-8 ULP (guaranteed < 1e-5 under very pessimistic glibc error bounds), and
-   exact (MPFR) whenever it is within 2^-16 of 0.5 or 1.0, so comparisons with
-   0.5 and 1 are always right. */
+   4e-9 ULP (< 2e-6 even if glibc were off by 512 double-ulps), and exact
+   (MPFR, 128 bits) whenever it is within 2^-16 of 0.5 or 1.0, so comparisons
+   with 0.5 and 1 are always right. */
 double pfref_ulp_err(pf_func f, float got, float x, float x2);
 
 /* As pfref_ulp_err but without the "correctly rounded -> 0" rule for finite
    results: the plain distance |got - exact| / ulp(exact) (so <= 0.5 when got
    is correctly rounded).  NaN, infinity and zero-sign rules as above. */
 double pfref_ulp_err_raw(pf_func f, float got, float x, float x2);
+
+/* pfref_ulp_err_raw and pfref_is_cr in one call (one glibc evaluation, so
+   about twice as fast as calling both): returns the raw error, *cr = 1 when
+   got is the correctly rounded result. */
+double pfref_ulp_err_cr(pf_func f, float got, float x, float x2, int *cr);
 
 /* 1 when got is the correctly rounded result (same bits, or both NaN), else 0.
    Always right: MPFR decides whenever the double estimate is near a midpoint. */
@@ -73,7 +85,7 @@ double pfref_exact_dd(pf_func f, double x, double x2);
    atan2) is the real number the caller's stored input denotes.  Uses glibc's
    double function when |f(x)| * 2^out_exp < 2^32 and |got_stored| < 2^53
    (then accurate to about 1e-6 LSB), MPFR otherwise and whenever the error is
-   within 2^-12 of 0.5 or 1.0.  NAN for domain errors, INFINITY at poles. */
+   within 2^-10 of 0.5 or 1.0.  NAN for domain errors, INFINITY at poles. */
 double pfref_lsb_err(pf_func f, int64_t got_stored, int out_exp, double x, double x2);
 
 #endif

@@ -21,8 +21,9 @@ double pfref_exact_dd(pf_func f, double x, double x2)
 
 /* Errors this close to 0.5 or 1.0 LSB are recomputed with MPFR.  With
    |f(x)| * 2^out_exp < 2^32 the double estimate is off by at most
-   PFREF_DREL * 2^32 = 2^-11 LSB pessimistically, 2^-20 really. */
-#define W 0x1p-12
+   PFREF_DREL * 2^32 = 2^-11 LSB pessimistically, 2^-21 really (glibc's
+   < 0.55 double-ulp). */
+#define W 0x1p-10
 #define SCALED_MAX 0x1p32
 
 static double lsb_slow(pf_func f, int64_t got_stored, int out_exp, double x, double x2)

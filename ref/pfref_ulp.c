@@ -8,13 +8,13 @@
 #define W 0x1p-16
 
 /* ulp as defined in pfref.h, from k = floor(log2|exact|). */
-static double ulp_scale(int k)
+static double ulp_scale(long k)
 {
     if (k < -126)
         k = -126;
     if (k > 127)
         k = 127;
-    return ldexp(1.0, 23 - k);   /* 1/ulp */
+    return ldexp(1.0, (int)(23 - k));   /* 1/ulp */
 }
 
 /* Special rules of pfref.h given the correctly rounded result c.  Returns
@@ -37,10 +37,12 @@ static int special(float c, float got, int raw, double *e)
     return 0;
 }
 
-static double slow(pf_func f, float got, float x, float x2, int raw)
+static double slow(pf_func f, float got, float x, float x2, int raw, int *cr)
 {
     double e;
-    if (special(pfref_f(f, x, x2), got, raw, &e))
+    float c = pfref_f(f, x, x2);
+    *cr = pfref__same(c, got);
+    if (special(c, got, raw, &e))
         return e;
     /* Both finite.  128 bits: e comes out with relative error ~2^-127. */
     pfref__env env;
@@ -48,10 +50,17 @@ static double slow(pf_func f, float got, float x, float x2, int raw)
     mpfr_init2(y, 128);
     mpfr_init2(g, 24);
     pfref__env_enter(&env, mpfr_get_emin_min(), mpfr_get_emax_max());
-    pfref__mpfr_flt(f, y, x, x2);
-    /* c finite means |exact| < 2^128; an exact zero (sin(0), log(1)) or an
+    /* Toward zero, so that y stays in the exact value's binade even when
+       that is within 2^-128 of a power of two (exp(-2^-130) = 1 - 2^-130).
+       c finite means |exact| < 2^128; an exact zero (sin(0), log(1)) or an
        underflow beyond MPFR's huge range (exp(-1e38)) both count as 0. */
-    int k = mpfr_zero_p(y) ? -126 : (int)mpfr_get_exp(y) - 1;
+    mpfr_t mx, mx2;
+    mpfr_inits2(24, mx, mx2, (mpfr_ptr)0);
+    mpfr_set_flt(mx, x, MPFR_RNDN);
+    mpfr_set_flt(mx2, x2, MPFR_RNDN);
+    pfref_mpfr(f, y, mx, mx2, MPFR_RNDZ);
+    mpfr_clears(mx, mx2, (mpfr_ptr)0);
+    long k = mpfr_zero_p(y) ? -126 : (long)mpfr_get_exp(y) - 1;   /* may be ~ -2^40 */
     mpfr_set_flt(g, got, MPFR_RNDN);
     mpfr_sub(y, g, y, MPFR_RNDN);
     e = fabs(mpfr_get_d(y, MPFR_RNDN)) * ulp_scale(k);
@@ -60,12 +69,13 @@ static double slow(pf_func f, float got, float x, float x2, int raw)
     return e;
 }
 
-static double ulp_err(pf_func f, float got, float x, float x2, int raw)
+static double ulp_err(pf_func f, float got, float x, float x2, int raw, int *cr)
 {
     float c;
     double d, e;
     if (!pfref__fast_cr(f, x, x2, &c, &d))
-        return slow(f, got, x, x2, raw);
+        return slow(f, got, x, x2, raw, cr);
+    *cr = pfref__same(c, got);
     if (special(c, got, raw, &e))
         return e;
     /* c finite, so d is finite with |d| < 2^128. */
@@ -73,21 +83,33 @@ static double ulp_err(pf_func f, float got, float x, float x2, int raw)
     int k = (int)(b >> 52) - 1023;
     uint64_t frac = b & ((1ull << 52) - 1);
     /* Within 2^-40 of a power of two the exact value may lie in the other
-       binade, where the ulp differs by 2. */
-    if (k >= -126 && (frac < (1ull << 12) || frac > (1ull << 52) - (1ull << 13)))
-        return slow(f, got, x, x2, raw);
+       binade, where the ulp differs by 2.  That matters unless got is c,
+       which is then that power of two p: if d and the exact value are on
+       opposite sides of p, both |p - d| and |p - exact| are below
+       |d - exact|, so either reading is as accurate as d itself (and
+       cos(tiny) = 1, exp(tiny) = 1 stay on the fast path). */
+    if (k >= -126 && (frac < (1ull << 12) || frac > (1ull << 52) - (1ull << 13))
+        && !*cr)
+        return slow(f, got, x, x2, raw, cr);
     e = fabs((double)got - d) * ulp_scale(k);
     if (fabs(e - 0.5) < W || fabs(e - 1.0) < W)
-        return slow(f, got, x, x2, raw);
+        return slow(f, got, x, x2, raw, cr);
     return e;
 }
 
 double pfref_ulp_err(pf_func f, float got, float x, float x2)
 {
-    return ulp_err(f, got, x, x2, 0);
+    int cr;
+    return ulp_err(f, got, x, x2, 0, &cr);
 }
 
 double pfref_ulp_err_raw(pf_func f, float got, float x, float x2)
 {
-    return ulp_err(f, got, x, x2, 1);
+    int cr;
+    return ulp_err(f, got, x, x2, 1, &cr);
+}
+
+double pfref_ulp_err_cr(pf_func f, float got, float x, float x2, int *cr)
+{
+    return ulp_err(f, got, x, x2, 1, cr);
 }

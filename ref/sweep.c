@@ -55,8 +55,8 @@ void pf_sweep_merge(pf_sweep_stats *a, const pf_sweep_stats *b)
 void pf_sweep_one(pf_sweep_stats *s, pf_func f, pf_fn1 fn1, pf_fn2 fn2, float x, float x2)
 {
     float got = fn2 ? fn2(x, x2) : fn1(x);
-    double e = pfref_ulp_err_raw(f, got, x, x2);
-    int cr = e <= 0.5 ? pfref_is_cr(f, got, x, x2) : 0;
+    int cr;
+    double e = pfref_ulp_err_cr(f, got, x, x2, &cr);
     s->count++;
     s->cr += cr;
     if (isfinite(e))

@@ -191,6 +191,8 @@ static void check_point(pf_func f, float x, float x2, int check_f)
           pfref_ulp_err(f, c, x, x2));
 
     if (isnan(c)) {
+        int crf = -1;
+        CHECK(pfref_ulp_err_cr(f, NAN, x, x2, &crf) == 0 && crf == 1, "%s(%a, %a): err_cr NaN", nm, x, x2);
         CHECK(pfref_ulp_err(f, 1.0f, x, x2) == INFINITY, "%s(%a, %a): NaN vs 1", nm, x, x2);
         CHECK(pfref_is_cr(f, 1.0f, x, x2) == 0, "%s(%a, %a): is_cr(1) for NaN", nm, x, x2);
         mpfr_clear(y);
@@ -209,8 +211,10 @@ static void check_point(pf_func f, float x, float x2, int check_f)
             continue;
         CHECK(pfref_is_cr(f, g, x, x2) == 0, "%s(%a, %a): is_cr(%a) = 1, cr %a", nm, x, x2, g, c);
         double e = pfref_ulp_err(f, g, x, x2), er = pfref_ulp_err_raw(f, g, x, x2);
-        CHECK(e == er || (isnan(e) && isnan(er)), "%s(%a, %a): err %g != raw %g for non-cr %a",
-              nm, x, x2, e, er, g);
+        int crf = -1;
+        double ecr = pfref_ulp_err_cr(f, g, x, x2, &crf);
+        CHECK(e == er && ecr == er && crf == 0, "%s(%a, %a): err %g, raw %g, err_cr %g (cr %d) for non-cr %a",
+              nm, x, x2, e, er, ecr, crf, g);
         if (isinf(g) || isinf(c) || (g == 0 && c == 0)) {
             CHECK(e == INFINITY, "%s(%a, %a): got %a cr %a: err %g, want inf", nm, x, x2, g, c, e);
             continue;
@@ -219,9 +223,16 @@ static void check_point(pf_func f, float x, float x2, int check_f)
         CHECK(e >= 0.5, "%s(%a, %a): non-cr %a has err %.9g < 0.5", nm, x, x2, g, e);
         CHECK(fabs(e - want) <= 1e-6 + 1e-9 * want, "%s(%a, %a): err(%a) = %.12g, want %.12g",
               nm, x, x2, g, e, want);
+        /* Near the thresholds 0.5 and 1 the error is computed by MPFR. */
+        if (fabs(want - 0.5) < 0x1p-17 || fabs(want - 1) < 0x1p-17)
+            CHECK(fabs(e - want) <= 1e-14, "%s(%a, %a): err(%a) = %.17g, want %.17g (exact)",
+                  nm, x, x2, g, e, want);
     }
     if (isfinite(c)) {
         double want = ref_ulp(y, c), er = pfref_ulp_err_raw(f, c, x, x2);
+        int crf = -1;
+        CHECK(pfref_ulp_err_cr(f, c, x, x2, &crf) == er && crf == 1, "%s(%a, %a): ulp_err_cr(cr)",
+              nm, x, x2);
         CHECK(want <= 0.5 && fabs(er - want) <= 1e-6, "%s(%a, %a): raw err(cr %a) = %.12g, want %.12g",
               nm, x, x2, c, er, want);
         /* With the exact value between c and n1 and everything in one
@@ -267,77 +278,78 @@ static void test_random_vs_mpfr(void **state)
 }
 
 /* Inputs whose exact result lies within 2^-20 ulp of a midpoint between two
-   floats (found by a search; only the inputs are listed), so the fast path
-   must hand over to MPFR. */
+   floats, so the fast path must hand over to MPFR.  Found by scanning float
+   ranges for a double estimate within 2^-22 ulp of a midpoint; only the
+   inputs are listed, and test_hard_cases re-checks their hardness. */
 static const struct { pf_func f; float x, x2; } hard[] = {
-      {PF_LOG, 0x1.5c1bd8p-122f, 0.0f},
-      {PF_LOG, 0x1.0286c8p-116f, 0.0f},
-      {PF_LOG, 0x1.ae89p-76f, 0.0f},
-      {PF_LOG, 0x1.1cb978p-75f, 0.0f},
-      {PF_LOG, 0x1.fffffcp-1f, 0.0f},
-      {PF_LOG2, 0x1.22952p-127f, 0.0f},
-      {PF_LOG2, 0x1.d7012p-122f, 0.0f},
-      {PF_LOG2, 0x1.22952p-121f, 0.0f},
-      {PF_LOG2, 0x1.bf3588p-120f, 0.0f},
-      {PF_LOG2, 0x1.fc64e8p-1f, 0.0f},
-      {PF_EXP, -0x1.65cf3p+6f, 0.0f},
-      {PF_EXP, -0x1.5800a4p+6f, 0.0f},
-      {PF_EXP, -0x1.5768a8p+6f, 0.0f},
-      {PF_EXP, -0x1.6dc968p+5f, 0.0f},
-      {PF_EXP, 0x1.3f024ap-10f, 0.0f},
-      {PF_EXP, 0x1.01753ap-9f, 0.0f},
-      {PF_EXP, 0x1.6438b6p-8f, 0.0f},
-      {PF_EXP, 0x1.707136p-6f, 0.0f},
-      {PF_EXP2, -0x1.e65b1cp+3f, 0.0f},
-      {PF_EXP2, -0x1.c65b1cp+3f, 0.0f},
-      {PF_EXP2, -0x1.a65b1cp+3f, 0.0f},
-      {PF_EXP2, -0x1.865b1cp+3f, 0.0f},
-      {PF_EXP2, 0x1.632a1ap-10f, 0.0f},
-      {PF_EXP2, 0x1.853a6ep-9f, 0.0f},
-      {PF_EXP2, 0x1.ed13d2p-8f, 0.0f},
-      {PF_EXP2, 0x1.05535ap-7f, 0.0f},
-      {PF_SIN, 0x1.61246ep-10f, 0.0f},
-      {PF_SIN, 0x1.dcfea2p-9f, 0.0f},
-      {PF_SIN, 0x1.59a062p-8f, 0.0f},
-      {PF_SIN, 0x1.e57bf6p-8f, 0.0f},
-      {PF_SIN, -0x1.0caa34p+82f, 0.0f},
-      {PF_SIN, -0x1.821474p+81f, 0.0f},
-      {PF_COS, 0x1.645642p-10f, 0.0f},
-      {PF_COS, 0x1.d1ed56p-10f, 0.0f},
-      {PF_COS, 0x1.41989ap-9f, 0.0f},
-      {PF_COS, 0x1.79464ap-9f, 0.0f},
-      {PF_COS, 0x1.cece7cp+19f, 0.0f},
-      {PF_COS, 0x1.bd0d8cp+23f, 0.0f},
-      {PF_TAN, 0x1.c8dad2p-8f, 0.0f},
-      {PF_TAN, 0x1.db3dcep-5f, 0.0f},
-      {PF_TAN, 0x1.0ed7c6p-4f, 0.0f},
-      {PF_TAN, 0x1.76cf86p-4f, 0.0f},
-      {PF_ASIN, -0x1.107434p-1f, 0.0f},
-      {PF_ASIN, -0x1.e5af18p-2f, 0.0f},
-      {PF_ASIN, -0x1.ba793ap-2f, 0.0f},
-      {PF_ASIN, -0x1.9b7b4p-2f, 0.0f},
-      {PF_ASIN, 0x1.d12eccp-12f, 0.0f},
-      {PF_ASIN, 0x1.d12ecep-12f, 0.0f},
-      {PF_ASIN, 0x1.d12edp-12f, 0.0f},
-      {PF_ASIN, 0x1.d12ed2p-12f, 0.0f},
-      {PF_ACOS, -0x1.f721a8p-1f, 0.0f},
-      {PF_ACOS, -0x1.b37e4p-1f, 0.0f},
-      {PF_ACOS, -0x1.00c66p-1f, 0.0f},
-      {PF_ACOS, -0x1.c70642p-2f, 0.0f},
-      {PF_ATAN, 0x1.588696p-10f, 0.0f},
-      {PF_ATAN, 0x1.695ba4p-10f, 0.0f},
-      {PF_ATAN, 0x1.f83792p-9f, 0.0f},
-      {PF_ATAN, 0x1.e35c7ep-5f, 0.0f},
-      {PF_ATAN, -0x1.e00a5p+25f, 0.0f},
-      {PF_ATAN, -0x1.e00a42p+25f, 0.0f},
-      {PF_ATAN2, -0x1.2f0b38p+2f, 0x1.cp+1f},
-      {PF_ATAN2, -0x1.27b6fap+2f, 0x1.cp+1f},
-      {PF_ATAN2, -0x1.df936ap+1f, 0x1.cp+1f},
-      {PF_ATAN2, -0x1.ba4816p+1f, 0x1.cp+1f},
-      {PF_ATAN2, 0x1.1af7p-9f, -0x1.8p-1f},
-      {PF_ATAN2, 0x1.69101p-8f, -0x1.8p-1f},
-      {PF_ATAN2, 0x1.8b00e8p-7f, -0x1.8p-1f},
-      {PF_ATAN2, 0x1.3ce614p-6f, -0x1.8p-1f},
+    { PF_LOG, 0x1.5c1bd8p-122f, 0.0f },
+    { PF_LOG, 0x1.0286c8p-116f, 0.0f },
+    { PF_LOG, 0x1.ae89p-76f, 0.0f },
+    { PF_LOG, 0x1.1cb978p-75f, 0.0f },
+    { PF_LOG, 0x1.fffffcp-1f, 0.0f },
+    { PF_LOG2, 0x1.22952p-127f, 0.0f },
+    { PF_LOG2, 0x1.d7012p-122f, 0.0f },
+    { PF_LOG2, 0x1.22952p-121f, 0.0f },
+    { PF_LOG2, 0x1.bf3588p-120f, 0.0f },
+    { PF_LOG2, 0x1.fc64e8p-1f, 0.0f },
+    { PF_EXP, -0x1.65cf3p+6f, 0.0f },
+    { PF_EXP, -0x1.5800a4p+6f, 0.0f },
+    { PF_EXP, -0x1.5768a8p+6f, 0.0f },
+    { PF_EXP, -0x1.6dc968p+5f, 0.0f },
+    { PF_EXP, 0x1.3f024ap-10f, 0.0f },
+    { PF_EXP, 0x1.01753ap-9f, 0.0f },
+    { PF_EXP, 0x1.6438b6p-8f, 0.0f },
+    { PF_EXP, 0x1.707136p-6f, 0.0f },
+    { PF_EXP2, -0x1.e65b1cp+3f, 0.0f },
+    { PF_EXP2, -0x1.c65b1cp+3f, 0.0f },
+    { PF_EXP2, -0x1.a65b1cp+3f, 0.0f },
+    { PF_EXP2, -0x1.865b1cp+3f, 0.0f },
+    { PF_EXP2, 0x1.632a1ap-10f, 0.0f },
+    { PF_EXP2, 0x1.853a6ep-9f, 0.0f },
+    { PF_EXP2, 0x1.ed13d2p-8f, 0.0f },
+    { PF_EXP2, 0x1.05535ap-7f, 0.0f },
+    { PF_SIN, 0x1.61246ep-10f, 0.0f },
+    { PF_SIN, 0x1.dcfea2p-9f, 0.0f },
+    { PF_SIN, 0x1.59a062p-8f, 0.0f },
+    { PF_SIN, 0x1.e57bf6p-8f, 0.0f },
+    { PF_SIN, -0x1.0caa34p+82f, 0.0f },
+    { PF_SIN, -0x1.821474p+81f, 0.0f },
+    { PF_COS, 0x1.645642p-10f, 0.0f },
+    { PF_COS, 0x1.d1ed56p-10f, 0.0f },
+    { PF_COS, 0x1.41989ap-9f, 0.0f },
+    { PF_COS, 0x1.79464ap-9f, 0.0f },
+    { PF_COS, 0x1.cece7cp+19f, 0.0f },
+    { PF_COS, 0x1.bd0d8cp+23f, 0.0f },
+    { PF_TAN, 0x1.c8dad2p-8f, 0.0f },
+    { PF_TAN, 0x1.db3dcep-5f, 0.0f },
+    { PF_TAN, 0x1.0ed7c6p-4f, 0.0f },
+    { PF_TAN, 0x1.76cf86p-4f, 0.0f },
+    { PF_ASIN, -0x1.107434p-1f, 0.0f },
+    { PF_ASIN, -0x1.e5af18p-2f, 0.0f },
+    { PF_ASIN, -0x1.ba793ap-2f, 0.0f },
+    { PF_ASIN, -0x1.9b7b4p-2f, 0.0f },
+    { PF_ASIN, 0x1.d12eccp-12f, 0.0f },
+    { PF_ASIN, 0x1.d12ecep-12f, 0.0f },
+    { PF_ASIN, 0x1.d12edp-12f, 0.0f },
+    { PF_ASIN, 0x1.d12ed2p-12f, 0.0f },
+    { PF_ACOS, -0x1.f721a8p-1f, 0.0f },
+    { PF_ACOS, -0x1.b37e4p-1f, 0.0f },
+    { PF_ACOS, -0x1.00c66p-1f, 0.0f },
+    { PF_ACOS, -0x1.c70642p-2f, 0.0f },
+    { PF_ATAN, 0x1.588696p-10f, 0.0f },
+    { PF_ATAN, 0x1.695ba4p-10f, 0.0f },
+    { PF_ATAN, 0x1.f83792p-9f, 0.0f },
+    { PF_ATAN, 0x1.e35c7ep-5f, 0.0f },
+    { PF_ATAN, -0x1.e00a5p+25f, 0.0f },
+    { PF_ATAN, -0x1.e00a42p+25f, 0.0f },
+    { PF_ATAN2, -0x1.2f0b38p+2f, 0x1.cp+1f },
+    { PF_ATAN2, -0x1.27b6fap+2f, 0x1.cp+1f },
+    { PF_ATAN2, -0x1.df936ap+1f, 0x1.cp+1f },
+    { PF_ATAN2, -0x1.ba4816p+1f, 0x1.cp+1f },
+    { PF_ATAN2, 0x1.1af7p-9f, -0x1.8p-1f },
+    { PF_ATAN2, 0x1.69101p-8f, -0x1.8p-1f },
+    { PF_ATAN2, 0x1.8b00e8p-7f, -0x1.8p-1f },
+    { PF_ATAN2, 0x1.3ce614p-6f, -0x1.8p-1f },
 };
 
 static void test_hard_cases(void **state)
@@ -774,6 +786,28 @@ static void test_lsb(void **state)
     double e1 = pfref_lsb_err(PF_SQRT, 1518500250, 30, 2.0, 0);
     CHECK(fabs(e0 + e1 - 1) < 1e-9 && e1 > 0.01197 && e1 < 0.01198, "sqrt2: %.12g %.12g", e0, e1);
 
+    /* Results within 2^-13 of 0.5 or 1 LSB must be exact (MPFR): inputs
+       chosen through the inverse function so that f(x) 2^31 is within about
+       1e-6 of n + 1/2 or n, and got = n or n + 1. */
+    int near = 0;
+    for (int i = 0; i < 300; i++) {
+        double n = floor(unif(0x1p29, 0x1p30)), h = (i & 1) ? 0.5 : 0.0, t = (n + h) * 0x1p-31;
+        const struct { pf_func f; double x; } c[] = {
+            { PF_EXP2, log2(t) }, { PF_LOG, exp(t) }, { PF_SIN, asin(t) }, { PF_ATAN, tan(t) },
+            { PF_SQRT, t * t }, { PF_COS, acos(t) },
+        };
+        for (size_t j = 0; j < sizeof c / sizeof c[0]; j++) {
+            int64_t got = (int64_t)n + (h == 0 ? 1 : 0);
+            double want = ref_lsb(c[j].f, got, 31, c[j].x, 0), r = pfref_lsb_err(c[j].f, got, 31, c[j].x, 0);
+            if (fabs(want - 0.5) < 0x1p-13 || fabs(want - 1) < 0x1p-13) {
+                near++;
+                CHECK(fabs(r - want) <= 1e-14, "%s(%a): lsb err %.17g, want %.17g (exact)",
+                      pfref_name(c[j].f), c[j].x, r, want);
+            }
+        }
+    }
+    CHECK(near > 1000, "only %d near-threshold cases", near);
+
     /* Random: out_exp up to 62 (the MPFR path for |got| >= 2^53), results
        rounded and off by a few LSBs or many. */
     mpfr_t y;
@@ -826,6 +860,7 @@ static void *thread_body(void *arg)
         }
     if (mpfr_get_emin() != (id == 0 ? -5000 : -100) || mpfr_get_emax() != (id == 0 ? 5000 : 100))
         bad += 1000000;
+    mpfr_free_cache();   /* MPFR's per-thread constant caches (pi, log 2) */
     return (void *)(intptr_t)bad;
 }
 
@@ -905,5 +940,7 @@ int main(void)
         cmocka_unit_test(test_threads),
         cmocka_unit_test(test_env_restored),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    int r = cmocka_run_group_tests(tests, NULL, NULL);
+    mpfr_free_cache();
+    return r;
 }
