@@ -81,6 +81,17 @@ asan-build:
 test-asan: asan-build
 	bash tests/run-tests.sh $(patsubst $(BUILD)/%,$(BUILD)/asan/%,$(TESTS))
 
+# make install PREFIX=...: headers, static and shared library (soname
+# libpfmath.so.$(PF_SOVERSION)) and pkg-config's pfmath.pc.
+PF_HEADERS = $(wildcard libpfmath/pfmath.h libpfmath/pfmath_fixed.h libpfmath/pffixed.h libpfmath/pfnoise.h)
+install: $(BUILD)/libpfmath.a $(BUILD)/libpfmath.so
+	install -d $(DESTDIR)$(PREFIX)/include/pfmath $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 $(PF_HEADERS) $(DESTDIR)$(PREFIX)/include/pfmath/
+	install -m 644 $(BUILD)/libpfmath.a $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(BUILD)/libpfmath.so $(DESTDIR)$(PREFIX)/lib/libpfmath.so.$(PF_SOVERSION)
+	ln -sf libpfmath.so.$(PF_SOVERSION) $(DESTDIR)$(PREFIX)/lib/libpfmath.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' libpfmath/pfmath.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/pfmath.pc
+
 clean:
 	rm -rf $(BUILD)
 

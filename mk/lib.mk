@@ -27,3 +27,8 @@ TESTS += $(BUILD)/tests/check-vectorize
 $(BUILD)/tests/check-vectorize: tests/check-vectorize.sh
 	@mkdir -p $(dir $@)
 	cp $< $@ && chmod +x $@
+
+TESTS += $(BUILD)/tests/check-install
+$(BUILD)/tests/check-install: tests/check-install.sh
+	@mkdir -p $(dir $@)
+	printf '#!/usr/bin/env bash\nexec bash tests/check-install.sh "%s"\n' '$(BUILD)' > $@ && chmod +x $@
