@@ -2,6 +2,7 @@
 #include "fixedgen.h"
 #include "fixedtype.h"
 #include "generate.h"
+#include "plot.h"
 #include "scene.h"
 
 #include <math.h>
@@ -40,6 +41,9 @@ static const char usage[] =
     "  --name NAME         emitted function name (default pf_<func>f, pf_<func>f_fast)\n"
     "  -o, --output FILE   write the C source to FILE (nothing is written on error)\n"
     "  --json              print the report as one JSON object on stdout instead of C\n"
+    "  --plot FILE.svg     draw the error of the emitted polynomial over its domain;\n"
+    "                      with --variant both, exact and fast side by side (then\n"
+    "                      no C is written)\n"
     "  --no-sweep          do not compile and sweep the emitted code\n"
     "  --scene FILE -o DIR generate exactly the functions a scene file lists (one\n"
     "                      'function exact|fast in-type out-type' a line), each at\n"
@@ -128,6 +132,7 @@ int main(int argc, char **argv)
         {"json", no_argument, 0, 'j'},          {"no-sweep", no_argument, 0, 'S'},
         {"help", no_argument, 0, 'h'},          {"target", required_argument, 0, 'T'},
         {"max-rel-err", required_argument, 0, 'R'}, {"max-abs-err", required_argument, 0, 'A'},
+        {"plot", required_argument, 0, 'P'},
         {0, 0, 0, 0}};
     for (int i = 1; i < argc; i++)
         if (!strcmp(argv[i], "--scene")) {
@@ -149,7 +154,7 @@ int main(int argc, char **argv)
     rq.method = NULL;
     char target_text[96] = "";
     rq.sweep = 1;
-    const char *out = NULL;
+    const char *out = NULL, *plot = NULL;
     int json = 0;
     opterr = 0;
     int c;
@@ -157,8 +162,8 @@ int main(int argc, char **argv)
         switch (c) {
         case 'f': rq.func = optarg; break;
         case 'v':
-            if (strcmp(optarg, "exact") && strcmp(optarg, "fast"))
-                die2("unknown variant '%s' (use exact or fast)%s", optarg, "");
+            if (strcmp(optarg, "exact") && strcmp(optarg, "fast") && strcmp(optarg, "both"))
+                die2("unknown variant '%s' (use exact, fast, or both with --plot)%s", optarg, "");
             rq.variant = optarg;
             break;
         case 'n': {
@@ -224,6 +229,7 @@ int main(int argc, char **argv)
             rq.name = optarg;
             break;
         case 'o': out = optarg; break;
+        case 'P': plot = optarg; break;
         case 'j': json = 1; break;
         case 'S': rq.sweep = 0; break;
         case 'h': printf(usage, pf_spec_func_list()); return 0;
@@ -242,8 +248,34 @@ int main(int argc, char **argv)
     rq.command = command_line(argc, argv);
     pf_gen_result r;
     char err[512];
+    if (!strcmp(rq.variant, "both")) {
+        if (!plot || out || json)
+            die2("--variant both is for --plot only (no -o, no --json)%s%s", "", "");
+        pf_gen_result r2;
+        rq.variant = "exact";
+        if (pf_generate(&rq, &r, err, sizeof err) != 0)
+            die2("%s%s", err, "");
+        rq.variant = "fast";
+        if (pf_generate(&rq, &r2, err, sizeof err) != 0)
+            die2("%s%s", err, "");
+        pf_report_text(stderr, &r);
+        pf_report_text(stderr, &r2);
+        const pf_gen_result *both[2] = {&r, &r2};
+        if (pf_plot_error(plot, both, 2, err, sizeof err) != 0) {
+            fprintf(stderr, "pfmathgen: %s\n", err);
+            return 1;
+        }
+        return 0;
+    }
     if (pf_generate(&rq, &r, err, sizeof err) != 0)
         die2("%s%s", err, "");
+    if (plot) {
+        const pf_gen_result *one[1] = {&r};
+        if (pf_plot_error(plot, one, 1, err, sizeof err) != 0) {
+            fprintf(stderr, "pfmathgen: %s\n", err);
+            return 1;
+        }
+    }
     if (json)
         pf_report_json(stdout, &r);
     else
