@@ -209,8 +209,8 @@ void pf_sweep_reduced_range(pf_func f, uint32_t *lo, uint32_t *hi)
         break;
     case PF_EXP:
     case PF_EXP2:
-        *lo = 0x3e800000u; /* |x| < 1: around the reduction's fold; positive side */
-        *hi = 0x3f800000u;
+        *lo = 0x3e800000u; /* [0.25, 2): every reduced r of exp and exp2, both signs of r */
+        *hi = 0x3fffffffu;
         break;
     case PF_SIN: case PF_COS: case PF_TAN:
         *lo = 0x3c000000u; /* [2^-7, 2pi] */
