@@ -216,6 +216,11 @@ void pf_sweep_reduced_range(pf_func f, uint32_t *lo, uint32_t *hi)
         *lo = 0x3c000000u; /* [2^-7, 2pi] */
         *hi = 0x40c90fdbu;
         break;
+    case PF_ATAN:
+    case PF_ATAN2:
+        *lo = 0x3c000000u; /* [2^-7, 2^7]: both sides of the fold at |x| = 1 */
+        *hi = 0x43000000u;
+        break;
     default:
         *lo = 0x3c000000u;
         *hi = 0x3f800000u;

@@ -13,15 +13,18 @@
 #include <unistd.h>
 
 static const char usage[] =
-    "usage: pfsweep --func NAME [--variant exact|fast] [--lib [PATH] | --source FILE.c]\n"
+    "usage: pfsweep --func NAME [--variant exact|fast] [--lib[=PATH] | --source FILE.c]\n"
     "               [--name SYMBOL] [--all] [--samples N] [--seed S] [--max-ulp B]\n"
     "Measures the ULP error of a float function against correctly rounded MPFR\n"
     "references: every float in the function's reduced domain, a seeded\n"
     "full-range sample, and a directed list of special and hard inputs.\n"
-    "  --lib [PATH]    the function from libpfmath.so (default: next to pfsweep)\n"
+    "  --lib[=PATH]    the function from libpfmath.so (default: next to pfsweep)\n"
     "  --source FILE   compile FILE.c with $CC (default cc) and sweep its function\n"
     "  --name SYMBOL   function symbol (default pf_<func>f or pf_<func>f_fast)\n"
-    "  --all           every one of the 2^32 floats instead (OpenMP threads)\n"
+    "  --all           every one of the 2^32 floats instead (OpenMP threads);\n"
+    "                  atan2: a dense seeded sample of --pairs pairs and every\n"
+    "                  pair of special values (tests/pfsweep_pairs.c)\n"
+    "  --pairs N       atan2 with --all: random pairs (default 2^28)\n"
     "  --samples N     size of the random sample (default 2^22)\n"
     "  --max-ulp B     exit with status 1 when the max error exceeds B ULP\n"
     "Exit status: 0 ok, 1 bound exceeded or load failure, 2 bad usage.\n";
@@ -33,6 +36,7 @@ static void die2(const char *msg, const char *arg)
 }
 
 int pfsweep_fixed_main(int argc, char **argv); /* tests/pfsweep_fixed.c */
+int pfsweep_pairs(pf_sweep_stats *s, pf_func f, pf_fn2 fn, uint64_t seed, uint64_t n); /* tests/pfsweep_pairs.c */
 
 int main(int argc, char **argv)
 {
@@ -45,10 +49,11 @@ int main(int argc, char **argv)
         {"name", required_argument, 0, 'N'},   {"all", no_argument, 0, 'a'},
         {"samples", required_argument, 0, 'n'}, {"seed", required_argument, 0, 'S'},
         {"max-ulp", required_argument, 0, 'm'}, {"help", no_argument, 0, 'h'},
+        {"pairs", required_argument, 0, 'P'},
         {0, 0, 0, 0}};
     const char *func = NULL, *variant = "exact", *lib = NULL, *src = NULL, *name = NULL;
     int all = 0, use_lib = 0;
-    unsigned long long samples = 1ull << 22, seed = 1;
+    unsigned long long samples = 1ull << 22, seed = 1, pairs = 1ull << 28;
     double max_ulp = -1;
     opterr = 0;
     int c;
@@ -73,6 +78,14 @@ int main(int argc, char **argv)
             break;
         }
         case 'S': seed = strtoull(optarg, NULL, 0); break;
+        case 'P': {
+            char *e;
+            errno = 0;
+            pairs = strtoull(optarg, &e, 0);
+            if (errno || *e)
+                die2("bad --pairs ", optarg);
+            break;
+        }
         case 'm': {
             char *e;
             max_ulp = strtod(optarg, &e);
@@ -155,6 +168,14 @@ int main(int argc, char **argv)
             pf_sweep_init(&s);
             pf_sweep_bits(&s, (pf_func)fid, f1, f2, lo, hi, isatty(2));
             pf_sweep_print(stdout, "reduced domain (every float)", (pf_func)fid, &s);
+            pf_sweep_merge(&tot, &s);
+        }
+        if (f2 && all) {
+            pf_sweep_init(&s);
+            int nsp = pfsweep_pairs(&s, (pf_func)fid, f2, seed, pairs);
+            char title[128];
+            snprintf(title, sizeof title, "dense seeded pairs (%llu) and all %d special pairs", pairs, nsp);
+            pf_sweep_print(stdout, title, (pf_func)fid, &s);
             pf_sweep_merge(&tot, &s);
         }
         pf_sweep_init(&s);
