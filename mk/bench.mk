@@ -1,0 +1,33 @@
+# Speed against error (issue 7): build/pfbench times every libpfmath function
+# beside glibc, libmvec and SLEEF and measures everyone's ULP error against
+# ref/; `make bench` runs it and draws one SVG per function with gnuplot.
+PFBENCH_SRCS := tests/pfbench.c tests/pfbench_err.c tests/pfbench_peers.c \
+                tests/pfbench_ours.c tests/pfbench_fixed.c
+PFBENCH_OBJS = $(PFBENCH_SRCS:%.c=$(BUILD)/obj/%.o)
+PROGS += $(BUILD)/pfbench
+
+# the error pass runs on every core (the timing is single-threaded)
+$(BUILD)/obj/tests/pfbench_err.o: ALL_CFLAGS += -fopenmp
+
+$(BUILD)/pfbench: $(PFBENCH_OBJS) $(BUILD)/libpfref.a
+	$(CC) $(LDFLAGS) -fopenmp -o $@ $^ -lsleef -lmvec $(LIBS_NUM)
+
+# bench.md, bench.csv and bench-<func>.svg in $(BUILD).  PFBENCH_ARGS passes
+# options through, e.g. make bench PFBENCH_ARGS='--func log,exp --reps 21'.
+.PHONY: bench-float
+bench: bench-float
+bench-float: $(BUILD)/pfbench $(BUILD)/libpfmath.so
+	$(BUILD)/pfbench --lib $(BUILD)/libpfmath.so --out $(BUILD) $(PFBENCH_ARGS)
+	bash tests/bench-plot.sh $(BUILD)/bench.csv $(BUILD)
+
+# Two benches timing at once on two cores would disturb each other: the
+# noise bench (mk/noise.mk) runs after this one.
+bench-noise: | bench-float
+
+# the error column's code against the sweep machinery (tests/test_bench.c)
+TESTS += $(BUILD)/tests/test_bench
+PFBENCH_TESTED = $(BUILD)/obj/tests/pfbench_err.o $(BUILD)/obj/tests/pfbench_fixed.o
+$(BUILD)/tests/test_bench: tests/test_bench.c $(PFBENCH_TESTED) $(BUILD)/libpfref.a $(BUILD)/libpfmath.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< $(PFBENCH_TESTED) -o $@ $(LDFLAGS) -fopenmp \
+	  $(BUILD)/libpfref.a $(BUILD)/libpfmath.a -lcmocka $(LIBS_NUM)

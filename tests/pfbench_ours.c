@@ -1,0 +1,211 @@
+/* pfbench: the pfmath candidates, found by name in libpfmath.so.
+ *
+ * Nothing here knows which functions the library has: a row appears when
+ * dlsym finds pf_<f>f (exact), pf_<f>f_fast, and their _array forms.
+ *
+ * The array forms are GCC target_clones (x86-64-v4, -v3, default) behind an
+ * ifunc, so dlsym gives only the clone the loader picked for this CPU.  To
+ * compare like with like (pfmath's AVX2 code against SLEEF's and libmvec's
+ * AVX2 code, and the same for AVX-512) the clones are looked up in the
+ * object's static symbol table (.symtab: pf_logf_array.arch_x86_64_v3 and so
+ * on) and called directly, each only when the CPU has that level.  A
+ * stripped library, or one built by another compiler, has no such symbols:
+ * then the row is the dispatched array form, labelled "dispatch". */
+#include "pfbench.h"
+
+#include <dlfcn.h>
+#include <elf.h>
+#include <fcntl.h>
+#include <link.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static void *lib_h;
+static uintptr_t lib_base;         /* load address of the library's first segment */
+static const Elf64_Sym *symtab;    /* the mapped file's .symtab, or NULL */
+static size_t nsyms;
+static const char *strtab;
+static int have_clones;
+
+/* .symtab lookup in the mapped file: st_value of a defined function */
+static uintptr_t sym_value(const char *name)
+{
+    for (size_t i = 0; symtab && i < nsyms; i++)
+        if (ELF64_ST_TYPE(symtab[i].st_info) == STT_FUNC && symtab[i].st_shndx != SHN_UNDEF &&
+            strcmp(strtab + symtab[i].st_name, name) == 0)
+            return (uintptr_t)symtab[i].st_value;
+    return 0;
+}
+
+static void map_symtab(const char *path)
+{
+    int fd = open(path, O_RDONLY);
+    if (fd < 0)
+        return;
+    struct stat st;
+    void *m = MAP_FAILED;
+    if (fstat(fd, &st) == 0 && (size_t)st.st_size >= sizeof(Elf64_Ehdr))
+        m = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
+    close(fd);
+    if (m == MAP_FAILED)
+        return;
+    /* the mapping is kept for the life of the process: names point into it */
+    const unsigned char *b = m;
+    size_t size = (size_t)st.st_size;
+    const Elf64_Ehdr *eh = m;
+    if (memcmp(eh->e_ident, ELFMAG, SELFMAG) || eh->e_ident[EI_CLASS] != ELFCLASS64 ||
+        eh->e_shoff == 0 || eh->e_shentsize != sizeof(Elf64_Shdr) ||
+        eh->e_shoff + (size_t)eh->e_shnum * sizeof(Elf64_Shdr) > size)
+        return;
+    const Elf64_Shdr *sh = (const Elf64_Shdr *)(b + eh->e_shoff);
+    for (int i = 0; i < eh->e_shnum; i++) {
+        if (sh[i].sh_type != SHT_SYMTAB || sh[i].sh_link >= eh->e_shnum)
+            continue;
+        const Elf64_Shdr *ss = &sh[sh[i].sh_link];
+        if (sh[i].sh_offset + sh[i].sh_size > size || ss->sh_offset + ss->sh_size > size ||
+            ss->sh_size == 0 || b[ss->sh_offset + ss->sh_size - 1] != 0)
+            return;
+        symtab = (const Elf64_Sym *)(b + sh[i].sh_offset);
+        nsyms = sh[i].sh_size / sizeof(Elf64_Sym);
+        strtab = (const char *)(b + ss->sh_offset);
+        return;
+    }
+}
+
+int pfb_ours_open(const char *lib, char *err, size_t errlen)
+{
+    lib_h = dlopen(lib, RTLD_NOW | RTLD_LOCAL);
+    if (!lib_h) {
+        snprintf(err, errlen, "%s", dlerror());
+        return -1;
+    }
+    struct link_map *lm = NULL;
+    if (dlinfo(lib_h, RTLD_DI_LINKMAP, &lm) == 0 && lm)
+        lib_base = (uintptr_t)lm->l_addr;
+    map_symtab(lib);
+    /* trust the table only if it places an exported function where dlsym does */
+    const char *probe[] = {"pf_logf", "pf_log2f", "pf_expf", "pf_sinf"};
+    for (size_t i = 0; i < sizeof probe / sizeof probe[0] && symtab; i++) {
+        void *p = dlsym(lib_h, probe[i]);
+        uintptr_t v = sym_value(probe[i]);
+        if (p && v) {
+            have_clones = (uintptr_t)p == lib_base + v;
+            break;
+        }
+    }
+    return 0;
+}
+
+int pfb_ours_have_clones(void) { return have_clones; }
+
+static void *clone_addr(const char *base, const char *suffix)
+{
+    char name[160];
+    snprintf(name, sizeof name, "%s.%s", base, suffix);
+    uintptr_t v = sym_value(name);
+    return v ? (void *)(lib_base + v) : NULL;
+}
+
+static void add(pfb_cand *c, int *n, const char *name, const char *isa, int fast, int arity,
+                void *scalar, void *array)
+{
+    pfb_cand *k = &c[(*n)++];
+    memset(k, 0, sizeof *k);
+    snprintf(k->name, sizeof k->name, "%s", name);
+    snprintf(k->isa, sizeof k->isa, "%s", isa);
+    k->ours = 1;
+    k->fast = fast;
+    /* POSIX: a dlsym result converts to a function pointer */
+    if (arity == 2) {
+        *(void **)&k->s2 = scalar;
+        *(void **)&k->a2 = array;
+    } else {
+        *(void **)&k->s1 = scalar;
+        *(void **)&k->a1 = array;
+    }
+}
+
+void pfb_ours(pf_func f, pfb_cand *c, int *n)
+{
+    if (!lib_h)
+        return;
+    __builtin_cpu_init();
+    int arity = pfref_arity(f);
+    for (int fast = 0; fast <= 1; fast++) {
+        char sym[96], arr[112];
+        snprintf(sym, sizeof sym, "pf_%sf%s", pfref_name(f), fast ? "_fast" : "");
+        snprintf(arr, sizeof arr, "%s_array", sym);
+        void *s = dlsym(lib_h, sym), *a = dlsym(lib_h, arr);
+        const char *name = fast ? "pfmath-fast" : "pfmath";
+        if (!s)
+            continue; /* not generated yet: no row */
+        add(c, n, name, "scalar", fast, arity, s, NULL);
+        if (!a)
+            continue;
+        void *v4 = have_clones ? clone_addr(arr, "arch_x86_64_v4") : NULL;
+        void *v3 = have_clones ? clone_addr(arr, "arch_x86_64_v3") : NULL;
+        void *v1 = have_clones ? clone_addr(arr, "default") : NULL;
+        if (!v4 && !v3 && !v1) {
+            add(c, n, name, "dispatch", fast, arity, NULL, a);
+            continue;
+        }
+        if (v1)
+            add(c, n, name, "sse2", fast, arity, NULL, v1);
+        if (v3 && __builtin_cpu_supports("x86-64-v3"))
+            add(c, n, name, "avx2", fast, arity, NULL, v3);
+        if (v4 && __builtin_cpu_supports("x86-64-v4"))
+            add(c, n, name, "avx512", fast, arity, NULL, v4);
+    }
+}
+
+void pfb_loop1(pf_fn1 f, const float *x, float *y, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        y[i] = f(x[i]);
+}
+
+void pfb_loop2(pf_fn2 f, const float *y, const float *x, float *out, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        out[i] = f(y[i], x[i]);
+}
+
+/* ---- fixed point ----
+ * Issue 5's default set.  The symbol names are this bench's guess at the
+ * library's naming (pf_<f>_<in>_<out>, stored-integer in and out, array
+ * form <sym>_array(const IN *x, OUT *y, size_t n)); edit the names here when
+ * the fixed-point functions land.  Until a symbol exists its row is absent. */
+static const pfb_fixed_row fixed_rows[] = {
+    {PF_SIN, "pf_sin_q12_q14", "fixed<15,12>", "fixed<15,14>", PFB_I16, PFB_I16, 12, 14, -3.14159265358979, 3.14159265358979},
+    {PF_COS, "pf_cos_q12_q14", "fixed<15,12>", "fixed<15,14>", PFB_I16, PFB_I16, 12, 14, -3.14159265358979, 3.14159265358979},
+    {PF_EXP, "pf_exp_q11_uq8", "fixed<15,11>", "ufixed<16,8>", PFB_I16, PFB_U16, 11, 8, -16, 5.5},
+    {PF_EXP2, "pf_exp2_q11_uq8", "fixed<15,11>", "ufixed<16,8>", PFB_I16, PFB_U16, 11, 8, -16, 8},
+    {PF_LOG, "pf_log_uq8_q11", "ufixed<16,8>", "fixed<15,11>", PFB_U16, PFB_I16, 8, 11, 0x1p-8, 256},
+    {PF_LOG2, "pf_log2_uq8_q11", "ufixed<16,8>", "fixed<15,11>", PFB_U16, PFB_I16, 8, 11, 0x1p-8, 256},
+    {PF_SQRT, "pf_sqrt_uq8_uq12", "ufixed<16,8>", "ufixed<16,12>", PFB_U16, PFB_U16, 8, 12, 0, 256},
+    {PF_SIN, "pf_sin_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, -1e4, 1e4},
+    {PF_COS, "pf_cos_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, -1e4, 1e4},
+    {PF_EXP, "pf_exp_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, -11, 10.3},
+    {PF_EXP2, "pf_exp2_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, -16, 14.9},
+    {PF_LOG, "pf_log_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, 0x1p-16, 32767},
+    {PF_LOG2, "pf_log2_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, 0x1p-16, 32767},
+    {PF_SQRT, "pf_sqrt_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, 0, 32767},
+};
+
+const pfb_fixed_row *pfb_fixed_rows(int *n)
+{
+    *n = (int)(sizeof fixed_rows / sizeof fixed_rows[0]);
+    return fixed_rows;
+}
+
+void *pfb_fixed_scalar(const pfb_fixed_row *r) { return lib_h ? dlsym(lib_h, r->sym) : NULL; }
+
+void *pfb_fixed_array(const pfb_fixed_row *r)
+{
+    char name[128];
+    snprintf(name, sizeof name, "%s_array", r->sym);
+    return lib_h ? dlsym(lib_h, name) : NULL;
+}
