@@ -1,9 +1,33 @@
+/* pfmathgen for fixed-point types: option parsing, the checks that make a
+ * bad type or pair a one-line error (exit 2, nothing written), and output.
+ * The pipeline itself is gen/fixed_core.c. */
 #include "fixedgen.h"
 
+#include "fixed_internal.h"
 #include "fixedtype.h"
 
+#include <ctype.h>
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+
+static const fx_func *const funcs[] = {&fx_func_sin, &fx_func_cos,  &fx_func_exp, &fx_func_exp2,
+                                       &fx_func_log, &fx_func_log2, &fx_func_sqrt};
+#define NFUNCS ((int)(sizeof funcs / sizeof funcs[0]))
+
+const fx_func *fx_func_find(const char *name)
+{
+    for (int i = 0; i < NFUNCS; i++)
+        if (!strcmp(funcs[i]->name, name))
+            return funcs[i];
+    return NULL;
+}
+
+const char *fx_func_list(void) { return "sin, cos, exp, exp2, log, log2, sqrt"; }
 
 int pfmathgen_wants_fixed(int argc, char **argv)
 {
@@ -21,10 +45,248 @@ int pfmathgen_wants_fixed(int argc, char **argv)
     return 0;
 }
 
+static const char usage[] =
+    "usage: pfmathgen --func NAME --type T [--out-type T2] [options]\n"
+    "Fixed-point generation: integer-only C taking and returning the stored integers.\n"
+    "  --func NAME         sin, cos, exp, exp2, log, log2, sqrt\n"
+    "  --type T            input type, e.g. 'fixed<15,12>', 'unsigned fixed<16,8>', 'ufixed<16,8>'\n"
+    "                      (storage up to 32 bits)\n"
+    "  --out-type T        output type (default: the input type)\n"
+    "  --variant V         exact (default: below 1 LSB of the output for every input) or\n"
+    "                      fast (within max(2^-10 relative, 4 LSB))\n"
+    "  --order N           polynomial degree (default: the smallest within the variant's bound)\n"
+    "  --method M          minimax (default for exact) or lsq (default for fast)\n"
+    "  --name NAME         function name (default pf_<func>_<in>_<out>[_fast], see docs/fixed.md)\n"
+    "  -o, --output FILE   write the C source to FILE (nothing is written on error)\n"
+    "  --json              print the report as one JSON object on stdout instead of C\n"
+    "  --no-sweep          do not compile and sweep the emitted code\n"
+    "  -h, --help          this text\n"
+    "Exit status: 0 ok, 2 bad usage, bad type or pair, impossible request, 1 internal failure.\n";
+
+static void die2(const char *fmt, const char *a, const char *b)
+{
+    fprintf(stderr, "pfmathgen: ");
+    fprintf(stderr, fmt, a, b);
+    fputc('\n', stderr);
+    exit(2);
+}
+
+static int is_identifier(const char *s)
+{
+    if (!*s || !(isalpha((unsigned char)*s) || *s == '_'))
+        return 0;
+    for (; *s; s++)
+        if (!(isalnum((unsigned char)*s) || *s == '_'))
+            return 0;
+    return 1;
+}
+
+/* the command line as a shell would re-run it (quoted where needed) */
+static char *command_line(int argc, char **argv)
+{
+    size_t cap = 64;
+    for (int i = 1; i < argc; i++)
+        cap += 4 * strlen(argv[i]) + 4;
+    char *s = malloc(cap);
+    if (!s)
+        exit(1);
+    strcpy(s, "pfmathgen");
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        int plain = *a != 0;
+        for (const char *p = a; *p; p++)
+            if (!(isalnum((unsigned char)*p) || strchr("-_./=,:+", *p)))
+                plain = 0;
+        strcat(s, " ");
+        if (plain) {
+            strcat(s, a);
+        } else {
+            strcat(s, "'");
+            for (const char *p = a; *p; p++) {
+                if (*p == '\'')
+                    strcat(s, "'\\''");
+                else
+                    strncat(s, p, 1);
+            }
+            strcat(s, "'");
+        }
+    }
+    return s;
+}
+
+static int write_atomically(const char *path, const char *data, size_t n)
+{
+    size_t len = strlen(path) + 32;
+    char *tmp = malloc(len);
+    if (!tmp)
+        return -1;
+    snprintf(tmp, len, "%s.tmp.%ld", path, (long)getpid());
+    FILE *f = fopen(tmp, "w");
+    int ok = f && fwrite(data, 1, n, f) == n;
+    if (f && fclose(f) != 0)
+        ok = 0;
+    if (ok && rename(tmp, path) != 0)
+        ok = 0;
+    if (!ok)
+        unlink(tmp);
+    free(tmp);
+    return ok ? 0 : -1;
+}
+
+static void parse_type(const char *what, const char *s, pf_type *t)
+{
+    char e[200];
+    if (pf_type_parse(s, t, e, sizeof e) != 0)
+        die2("bad %s: %s", what, e);
+    if (!t->is_float && t->storage_bits > 32) {
+        char f[64];
+        pf_type_format(t, f, sizeof f);
+        die2("unsupported %s %s: fixed-point functions take storage of at most 32 bits", what, f);
+    }
+}
+
 int pfmathgen_fixed_main(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "pfmathgen: fixed-point generation is not available in this build\n");
-    return 2;
+    static const struct option opts[] = {
+        {"func", required_argument, 0, 'f'},     {"variant", required_argument, 0, 'v'},
+        {"order", required_argument, 0, 'n'},    {"type", required_argument, 0, 't'},
+        {"out-type", required_argument, 0, 'O'}, {"method", required_argument, 0, 'm'},
+        {"name", required_argument, 0, 'N'},     {"output", required_argument, 0, 'o'},
+        {"json", no_argument, 0, 'j'},           {"no-sweep", no_argument, 0, 'S'},
+        {"help", no_argument, 0, 'h'},           {"reduction", required_argument, 0, 'X'},
+        {"target", required_argument, 0, 'X'},   {"max-rel-err", required_argument, 0, 'X'},
+        {"max-abs-err", required_argument, 0, 'X'}, {0, 0, 0, 0}};
+    const char *func = NULL, *variant = "exact", *type_s = NULL, *out_s = NULL, *method = NULL, *name = NULL,
+               *out = NULL;
+    int order = 0, json = 0, sweep = 1;
+    opterr = 0;
+    optind = 1;
+    int c;
+    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+        switch (c) {
+        case 'f': func = optarg; break;
+        case 'v':
+            if (strcmp(optarg, "exact") && strcmp(optarg, "fast"))
+                die2("unknown variant '%s' (use exact or fast)%s", optarg, "");
+            variant = optarg;
+            break;
+        case 'n': {
+            char *end;
+            errno = 0;
+            long v = strtol(optarg, &end, 10);
+            if (errno || end == optarg || *end || v < 1 || v > 30)
+                die2("bad order '%s': expected an integer 1..30%s", optarg, "");
+            order = (int)v;
+            break;
+        }
+        case 't': type_s = optarg; break;
+        case 'O': out_s = optarg; break;
+        case 'm':
+            if (strcmp(optarg, "lsq") && strcmp(optarg, "minimax"))
+                die2("unknown method '%s' (available: minimax, lsq)%s", optarg, "");
+            method = optarg;
+            break;
+        case 'N':
+            if (!is_identifier(optarg))
+                die2("bad --name '%s': not a C identifier%s", optarg, "");
+            name = optarg;
+            break;
+        case 'o': out = optarg; break;
+        case 'j': json = 1; break;
+        case 'S': sweep = 0; break;
+        case 'X': die2("--reduction, --target, --max-rel-err and --max-abs-err are not available with "
+                       "fixed-point types%s%s", "", ""); break;
+        case 'h': fputs(usage, stdout); return 0;
+        case ':': die2("option '%s' needs an argument%s", argv[optind - 1], ""); break;
+        default: die2("unknown option '%s' (see --help)%s", argv[optind - 1], ""); break;
+        }
+    }
+    if (optind < argc)
+        die2("unexpected argument '%s' (see --help)%s", argv[optind], "");
+    if (!func)
+        die2("--func is required (see --help)%s%s", "", "");
+    pf_type in, ot;
+    if (type_s)
+        parse_type("--type", type_s, &in);
+    if (out_s)
+        parse_type("--out-type", out_s, &ot);
+    if (!type_s)
+        in = ot;
+    if (!out_s)
+        ot = in;
+    if (in.is_float || ot.is_float) {
+        char a[64], b[64];
+        pf_type_format(&in, a, sizeof a);
+        pf_type_format(&ot, b, sizeof b);
+        die2("bad type pair %s -> %s: float and fixed point do not mix (both float, or both fixed)", a, b);
+    }
+    const fx_func *F = fx_func_find(func);
+    if (!F)
+        die2("no fixed-point %s (available: %s)", func, fx_func_list());
+    fx_gen *G = calloc(1, sizeof *G);
+    if (!G)
+        return 1;
+    G->fn = F;
+    G->exact = !strcmp(variant, "exact");
+    G->in = in;
+    G->out = ot;
+    pf_type_format(&in, G->in_text, sizeof G->in_text);
+    pf_type_format(&ot, G->out_text, sizeof G->out_text);
+    G->it = pf_type_ctype(&in);
+    G->ot = pf_type_ctype(&ot);
+    G->order_req = order;
+    G->minimax = method ? !strcmp(method, "minimax") : -1;
+    if (name)
+        snprintf(G->name, sizeof G->name, "%s", name);
+    else
+        pf_fixed_default_name(F->name, &in, &ot, !G->exact, G->name, sizeof G->name);
+    char *cmd = command_line(argc, argv);
+    G->command = cmd;
+    char err[800];
+    int rc = fx_generate(G, sweep, err, sizeof err);
+    if (rc == -1)
+        die2("%s%s", err, "");
+    if (rc != 0) {
+        fprintf(stderr, "pfmathgen: %s\n", err);
+        return 1;
+    }
+    if (G->swept) {
+        /* the sweep checks the error model: a violation is a bug, not a result */
+        const char *bad = NULL;
+        char why[300];
+        if (G->sw.mismatch)
+            bad = "the scalar and array forms differ";
+        else if (G->exact && !(G->sw.max_err < 1))
+            bad = "the exact variant reaches 1 LSB";
+        else if (!G->exact && G->sw.over_fast)
+            bad = "the fast variant exceeds max(2^-10 relative, 4 LSB)";
+        else if (G->sw.max_err > G->bound_lsb + 1e-6)
+            bad = "the sweep exceeds the error bound";
+        if (bad) {
+            snprintf(why, sizeof why, "%s (max %.4f LSB at x = %lld, bound %.4f LSB)", bad, G->sw.max_err,
+                     (long long)G->sw.worst_x, G->bound_lsb);
+            fx_report_text(stderr, G);
+            fprintf(stderr, "pfmathgen: internal failure: %s\n", why);
+            return 1;
+        }
+    }
+    size_t len;
+    char *src = fx_emit(G, &len);
+    if (json)
+        fx_report_json(stdout, G);
+    else
+        fx_report_text(stderr, G);
+    int ret = 0;
+    if (out) {
+        if (write_atomically(out, src, len) != 0) {
+            fprintf(stderr, "pfmathgen: cannot write %s\n", out);
+            ret = 1;
+        }
+    } else if (!json) {
+        fwrite(src, 1, len, stdout);
+    }
+    free(src);
+    free(cmd);
+    free(G);
+    return ret;
 }

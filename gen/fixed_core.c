@@ -1,0 +1,620 @@
+/* The fixed-point generation pipeline, shared by every function:
+ *   fit (minimax for exact, least squares for fast) -> Horner formats from
+ *   the bit-width analysis -> coefficients rounded to the lsb of their
+ *   Horner step by pin-and-refit -> measured polynomial error -> the
+ *   function's error model -> smallest order within the variant's bound
+ *   (32-bit words first, then 64) -> emit from the templates -> compile and
+ *   sweep the emitted code -> emit again with the sweep in the provenance. */
+#include "fixed_internal.h"
+
+#include "compile.h"
+#include "fixedgen.h"
+#include "pf_templates.h"
+#include "round_fixed.h"
+
+#include <dlfcn.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- strings and templates ---- */
+
+static void put_n(fx_buf *b, const char *s, size_t n)
+{
+    if (b->n + n + 1 > b->cap) {
+        b->cap = 2 * (b->n + n + 1) + 1024;
+        b->s = realloc(b->s, b->cap);
+        if (!b->s)
+            abort();
+    }
+    memcpy(b->s + b->n, s, n);
+    b->n += n;
+    b->s[b->n] = 0;
+}
+
+void fx_put(fx_buf *b, const char *s) { put_n(b, s, strlen(s)); }
+
+void fx_printf(fx_buf *b, const char *fmt, ...)
+{
+    char tmp[4096];
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(tmp, sizeof tmp, fmt, ap);
+    va_end(ap);
+    put_n(b, tmp, (size_t)(n < (int)sizeof tmp ? n : (int)sizeof tmp - 1));
+}
+
+const char *fx_template(const char *name)
+{
+    for (int i = 0; pf_templates[i].name; i++)
+        if (!strcmp(pf_templates[i].name, name))
+            return pf_templates[i].text;
+    return NULL;
+}
+
+void fx_subst(fx_buf *b, const char *text, const char *const *kv)
+{
+    const char *p = text;
+    while (*p) {
+        const char *at = strchr(p, '@');
+        if (!at) {
+            fx_put(b, p);
+            break;
+        }
+        put_n(b, p, (size_t)(at - p));
+        const char *end = strchr(at + 1, '@');
+        int done = 0;
+        if (end)
+            for (int i = 0; kv[i]; i += 2)
+                if (strlen(kv[i]) == (size_t)(end - at - 1) && !strncmp(kv[i], at + 1, (size_t)(end - at - 1))) {
+                    fx_put(b, kv[i + 1]);
+                    p = end + 1;
+                    done = 1;
+                    break;
+                }
+        if (!done) {
+            put_n(b, "@", 1);
+            p = at + 1;
+        }
+    }
+}
+
+/* ---- small helpers ---- */
+
+double fx_lsb(const fx_gen *G) { return ldexp(1.0, -G->out.exp); }
+
+double fx_out_max(const fx_gen *G) { return ldexp((double)pf_type_max_stored(&G->out), -G->out.exp); }
+
+int fx_bitlen(uint64_t v)
+{
+    int n = 0;
+    while (v) {
+        n++;
+        v >>= 1;
+    }
+    return n;
+}
+
+void fx_lit(char *buf, size_t n, int64_t v, int w64)
+{
+    if (w64)
+        snprintf(buf, n, "INT64_C(%lld)", (long long)v);
+    else
+        snprintf(buf, n, "%lld", (long long)v);
+}
+
+static uint64_t uabs64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
+
+static int int_bits(const pf_type *t) { return t->size - t->exp; }
+
+static void type_text(const pf_type *t, char *buf, size_t n) { pf_type_format(t, buf, n); }
+
+/* ---- the polynomial: fit, formats, rounding ---- */
+
+static pf_type coef_type(int64_t stored, int e)
+{
+    int b = fx_bitlen(uabs64(stored));
+    return pf_type_fixed(1, b < 1 ? 1 : b, e);
+}
+
+static fit_refit_fn refit_of(const fx_gen *G) { return G->minimax ? fit_minimax : fit_lsq; }
+
+/* Horner formats for P's exponent Ep from coefficient types ct; E[] gets
+ * each coefficient's lsb exponent.  0, or -1 when something does not fit
+ * the W-bit word (then the caller lowers Ep). */
+static int formats(fx_gen *G, int Ep, const pf_type *ct, int *E, pf_bw_step *st)
+{
+    int m = G->m, W = G->W;
+    pf_type dest = pf_type_fixed(1, Ep + 1, Ep);
+    if (pf_bw_horner(ct, m, G->xt, dest, st) != 0)
+        return -1;
+    for (int j = 0; j < m; j++)
+        E[j] = st[j].p.exp;
+    /* the leading coefficient feeds a product whose lsb the analysis caps at
+       E[m-1] + (integer bits of x) */
+    E[m] = m ? E[m - 1] + int_bits(&G->xt) : Ep;
+    for (int j = 0; j < m; j++)
+        if (st[j].p.size > W - 2 || st[j].shift < 1 || st[j].shift > 2 * W - 2)
+            return -1;
+    return 0;
+}
+
+static int fit_at(fx_gen *G, int order, char *err, size_t errlen)
+{
+    const fx_func *F = G->fn;
+    fit_problem *pb = &G->pb;
+    memset(pb, 0, sizeof *pb);
+    pb->g = F->g;
+    pb->a = F->a;
+    pb->b = F->b;
+    pb->order = order;
+    pb->parity = F->parity;
+    pb->errkind = G->errkind;
+    if (F->con_zero) {
+        pb->ncon = 1;
+        pb->con[0].kind = FIT_CON_VALUE;
+        pb->con[0].t = 0;
+    }
+    fit_refit_fn refit = refit_of(G);
+    if (refit(pb, &G->real, err, errlen) != 0)
+        return -1;
+    fit_measure(pb, &G->real);
+    int m = -1;
+    for (int k = 0; k <= order; k++) {
+        if ((F->parity == FIT_PARITY_ODD && k % 2 == 0) || (F->parity == FIT_PARITY_EVEN && k % 2 == 1))
+            continue;
+        G->deg[++m] = k;
+    }
+    G->m = m;
+    G->order = order;
+    G->xt = pf_type_fixed(0, G->W - 1, G->W - 1);
+    for (int Ep = G->W - 2; Ep >= 8; Ep--) {
+        pf_type ct[FX_MAXC];
+        int E[FX_MAXC], E2[FX_MAXC];
+        for (int j = 0; j <= m; j++) {
+            fit_real v = G->real.c[G->deg[j]];
+            fit_real s = v * (fit_real)ldexp(1.0, Ep + 8);
+            if (!(s < (fit_real)0x1p62 && s > -(fit_real)0x1p62))
+                goto lower;
+            ct[j] = coef_type(fit_fixed_stored(v, Ep + 8), Ep + 8);
+        }
+        if (formats(G, Ep, ct, E, G->st) != 0)
+            continue;
+        int exps[FIT_MAX_ORDER + 1] = {0};
+        for (int j = 0; j <= m; j++)
+            exps[G->deg[j]] = E[j];
+        G->poly = G->real;
+        int64_t stored[FIT_MAX_ORDER + 1];
+        if (fit_round_fixed(pb, exps, refit, &G->poly, stored, err, errlen) != 0)
+            return -1;
+        for (int j = 0; j <= m; j++) {
+            G->C[j] = stored[G->deg[j]];
+            ct[j] = coef_type(G->C[j], E[j]);
+            if (ct[j].size > G->W - 2)
+                goto lower;
+        }
+        /* the analysis again, on the rounded coefficients: same lsbs */
+        if (formats(G, Ep, ct, E2, G->st) != 0)
+            continue;
+        for (int j = 0; j <= m; j++)
+            if (E2[j] != E[j])
+                goto lower;
+        memcpy(G->E, E, sizeof E);
+        G->Ep = m ? G->st[0].p.exp : E[0];
+        G->pt = m ? G->st[0].p : ct[0];
+        /* was p_0 trimmed below its bottom-up integer bits? then saturate it */
+        {
+            int ib = int_bits(&ct[m]);
+            for (int j = m - 1; j >= 0; j--) {
+                int a = ib + int_bits(&G->xt), c = int_bits(&ct[j]);
+                ib = (a > c ? a : c) + 1;
+            }
+            G->root_sat = m > 0 && ib > int_bits(&G->pt);
+        }
+        G->arith = 0;
+        G->dP = 0;
+        for (int j = 0; j <= m; j++) {
+            if (j < m)
+                G->arith += 0.5 * ldexp(1.0, -E[j]);
+            if (j > 0)
+                G->dP += j * ldexp((double)uabs64(G->C[j]), -E[j]);
+        }
+        if (G->root_sat)
+            G->arith += ldexp(1.0, -G->Ep);
+        fit_measure(pb, &G->poly);
+        G->poly_err = G->poly.max_err;
+        return 0;
+    lower:;
+    }
+    snprintf(err, errlen, "order %d: no Horner formats fit %d-bit words", order, G->W);
+    return -1;
+}
+
+/* the variant's bound on the error model; fills bound_lsb */
+static int accept(fx_gen *G)
+{
+    double L = fx_lsb(G);
+    double tot = G->R * G->fmax + G->A;
+    G->bound_lsb = 0.5 + tot / L;
+    if (!(tot == tot))
+        return 0;
+    if (G->exact)
+        return tot < 0.5 * L * (1 - 1e-9);
+    /* fast: R|f| + A + L/2 <= max(2^-10 |f|, 4L) for every |f|: it is
+       enough at |f| = 2^12 L (the kink) and at |f| = 0, as R <= 2^-10 */
+    return G->R <= 0x1p-10 && G->R * 4096 * L + G->A + 0.5 * L <= 4 * L * (1 - 1e-9);
+}
+
+/* ---- provenance ---- */
+
+void fx_formats_text(const fx_gen *G, char *buf, size_t n)
+{
+    char t[64];
+    size_t o = 0;
+    buf[0] = 0;
+    type_text(&G->xt, t, sizeof t);
+    o += (size_t)snprintf(buf + o, n - o, "x %s; ", t);
+    for (int j = G->m; j >= 0 && o < n; j--) {
+        pf_type p = j == G->m ? pf_type_fixed(1, fx_bitlen(uabs64(G->C[j])) ? fx_bitlen(uabs64(G->C[j])) : 1, G->E[j])
+                              : G->st[j].p;
+        type_text(&p, t, sizeof t);
+        o += (size_t)snprintf(buf + o, n - o, "p%d %s%s", j, t, j ? ", " : "");
+    }
+    if (G->m > 0 && o < n)
+        o += (size_t)snprintf(buf + o, n - o, "; product shifts %d", G->st[G->m - 1].shift);
+    if (G->root_sat && o < n)
+        snprintf(buf + o, n - o, "; p0 saturated to its format");
+}
+
+static void wrap_text(fx_buf *b, const char *label, const char *text)
+{
+    /* " * Label:       text" wrapped at ~100 columns */
+    const int width = 96;
+    fx_printf(b, " * %-12s ", label);
+    int col = 16;
+    const char *p = text;
+    while (*p) {
+        const char *sp = strchr(p, ' ');
+        size_t wl = sp ? (size_t)(sp - p) : strlen(p);
+        if (col + (int)wl > width && col > 16) {
+            fx_put(b, "\n *              ");
+            col = 16;
+        }
+        put_n(b, p, wl);
+        col += (int)wl;
+        p += wl;
+        if (*p == ' ') {
+            p++;
+            if (*p) {
+                put_n(b, " ", 1);
+                col++;
+            }
+        }
+    }
+    fx_put(b, "\n");
+}
+
+static const char *method_text(const fx_gen *G)
+{
+    static char buf[320];
+    const char *kind = G->errkind == FIT_REL ? "relative" : "absolute";
+    snprintf(buf, sizeof buf,
+             "%s %s error%s, coefficients rounded to the lsb of their Horner step (bit-width analysis) by "
+             "pin-and-refit",
+             G->minimax ? "minimax" : "least-squares", kind,
+             G->minimax ? " (nlopt SLSQP, epigraph form, from the least-squares fit)" : " (Gauss-Legendre quadrature)");
+    return buf;
+}
+
+static void provenance(fx_buf *b, const fx_gen *G)
+{
+    const fx_func *F = G->fn;
+    char tmp[2048], a[64], bb[64];
+    fx_printf(b, "/* %s: %s for %s -> %s (%s -> %s), %s variant.\n", G->name, F->name, G->in_text, G->out_text,
+              G->it, G->ot, G->exact ? "exact" : "fast");
+    fx_printf(b, " * Generated by pfmathgen: do not edit.\n *\n");
+    fx_printf(b, " * Regenerate:  %s\n", G->command);
+    snprintf(a, sizeof a, "%.9g", ldexp((double)pf_type_min_stored(&G->in), -G->in.exp));
+    snprintf(bb, sizeof bb, "%.9g", ldexp((double)pf_type_max_stored(&G->in), -G->in.exp));
+    snprintf(tmp, sizeof tmp, "%s x, value x 2^%d in [%s, %s]", G->it, -G->in.exp, a, bb);
+    wrap_text(b, "Input:", tmp);
+    snprintf(a, sizeof a, "%.9g", ldexp((double)pf_type_min_stored(&G->out), -G->out.exp));
+    snprintf(bb, sizeof bb, "%.9g", ldexp((double)pf_type_max_stored(&G->out), -G->out.exp));
+    snprintf(tmp, sizeof tmp, "%s y, value y 2^%d in [%s, %s]", G->ot, -G->out.exp, a, bb);
+    wrap_text(b, "Output:", tmp);
+    wrap_text(b, "Reduction:", G->red_text);
+    snprintf(tmp, sizeof tmp, "%s on t in [%g, %g]%s", F->target_text, F->a, F->b,
+             F->parity == FIT_PARITY_ODD ? " (odd polynomial t P(t^2))" : "");
+    wrap_text(b, "Domain:", tmp);
+    snprintf(tmp, sizeof tmp, "%d (%d fixed-point coefficients; %s words, %d-bit products)", G->order, G->m + 1,
+             G->wt, 2 * G->W);
+    wrap_text(b, "Order:", tmp);
+    wrap_text(b, "Method:", method_text(G));
+    wrap_text(b, "Constraints:", F->con_zero ? F->con_text : "none");
+    fx_formats_text(G, tmp, sizeof tmp);
+    wrap_text(b, "Formats:", tmp);
+    snprintf(tmp, sizeof tmp, "max %s error %.3e (2^%.2f) at t = %.9g", G->errkind == FIT_REL ? "relative" : "absolute",
+             G->poly_err, log2(G->poly_err), G->poly.max_err_at);
+    wrap_text(b, "Polynomial:", tmp);
+    if (G->R > 0)
+        snprintf(tmp, sizeof tmp,
+                 "|result - f(x)| <= 0.5 LSB (final rounding) + %.3e |f(x)| (polynomial %.3e, arithmetic and "
+                 "reduction %.3e, relative) = %.4f LSB at most (|f| <= %.6g)",
+                 G->R, G->poly_err, G->R - G->poly_err, G->bound_lsb, G->fmax);
+    else
+        snprintf(tmp, sizeof tmp,
+                 "|result - f(x)| <= 0.5 LSB (final rounding) + %.4f LSB (polynomial %.4f, arithmetic and "
+                 "reduction %.4f) = %.4f LSB",
+                 G->A / fx_lsb(G), G->poly_err / fx_lsb(G), (G->A - G->poly_err) / fx_lsb(G), G->bound_lsb);
+    if (G->bound_note[0]) {
+        size_t o = strlen(tmp);
+        snprintf(tmp + o, sizeof tmp - o, "; %s", G->bound_note);
+    }
+    wrap_text(b, "Error bound:", tmp);
+    if (G->swept) {
+        snprintf(tmp, sizeof tmp, "max %.4f LSB at x = %lld (%.9g), mean %.4f LSB; %s", G->sw.max_err,
+                 (long long)G->sw.worst_x, ldexp((double)G->sw.worst_x, -G->in.exp), pf_fx_mean(&G->sw),
+                 G->sweep_desc);
+        wrap_text(b, "Sweep:", tmp);
+    }
+    {
+        char st[512];
+        snprintf(st, sizeof st, "%s%sresults beyond the output range give its max or min", G->sat_text,
+                 G->sat_text[0] ? "; " : "");
+        wrap_text(b, "Saturation:", st);
+    }
+    wrap_text(b, "Target:",
+              G->exact ? "exact: below 1 LSB of the output for every input"
+                       : "fast: within max(2^-10 |f(x)|, 4 LSB) for every input");
+    wrap_text(b, "Arithmetic:",
+              "integers only (no floating point, no <math.h>); every rounding to nearest, ties to even; "
+              "bit-identical under any compiler flags");
+    fx_put(b, " */\n#include <stddef.h>\n#include <stdint.h>\n\n");
+}
+
+char *fx_emit(const fx_gen *G, size_t *len)
+{
+    fx_buf b = {0};
+    provenance(&b, G);
+    fx_put(&b, fx_template("fx_common.h"));
+    G->fn->emit((fx_gen *)G, &b);
+    const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, NULL};
+    fx_subst(&b, fx_template("fx_tail.c"), kv);
+    *len = b.n;
+    return b.s;
+}
+
+/* ---- the sweep of the compiled code ---- */
+
+static int sweep_emitted(fx_gen *G, const char *src, size_t len, char *err, size_t errlen)
+{
+    void *h = pf_compile_load(src, len, err, errlen);
+    if (!h)
+        return -1;
+    char an[160];
+    snprintf(an, sizeof an, "%s_array", G->name);
+    pf_fx_fn fn = {dlsym(h, G->name), dlsym(h, an), pf_type_to_fmt(&G->in), pf_type_to_fmt(&G->out)};
+    if (!fn.scalar || !fn.array) {
+        snprintf(err, errlen, "emitted code lacks %s or %s", G->name, an);
+        dlclose(h);
+        return -1;
+    }
+    pf_fx_stats_init(&G->sw);
+    int64_t lo = pf_type_min_stored(&G->in), hi = pf_type_max_stored(&G->in);
+    if (G->in.storage_bits <= 16) {
+        pf_fx_sweep_range(&G->sw, G->fn->ref, &fn, lo, hi, 1, 0);
+        G->exhaustive = 1;
+        snprintf(G->sweep_desc, sizeof G->sweep_desc, "exhaustive: all %llu inputs",
+                 (unsigned long long)(hi - lo + 1));
+    } else {
+        /* every input within 2^16 of 0, and 2^20 seeded random ones */
+        int64_t a = lo > -65536 ? lo : -65536, z = hi < 65536 ? hi : 65536;
+        pf_fx_sweep_range(&G->sw, G->fn->ref, &fn, a, z, 1, 0);
+        pf_fx_sweep_random(&G->sw, G->fn->ref, &fn, 20260509, 1u << 20);
+        G->exhaustive = 0;
+        snprintf(G->sweep_desc, sizeof G->sweep_desc,
+                 "sampled: every input in [%lld, %lld] and 2^20 seeded random ones (%llu; pfsweep --all "
+                 "for all 2^%d)",
+                 (long long)a, (long long)z, (unsigned long long)G->sw.count, G->in.storage_bits);
+    }
+    dlclose(h);
+    G->swept = 1;
+    return 0;
+}
+
+/* ---- the pipeline ---- */
+
+int fx_generate(fx_gen *G, int sweep, char *err, size_t errlen)
+{
+    const fx_func *F = G->fn;
+    char why[600] = "";
+    G->below_err = -1;
+    G->minimax = G->minimax < 0 ? G->exact : G->minimax;
+    G->errkind = G->exact ? F->errkind : F->errkind_fast;
+    int found = 0;
+    for (int W = 32; W <= 64 && !found; W += 32) {
+        G->W = W;
+        G->wt = W == 32 ? "int32_t" : "int64_t";
+        G->mul = W == 32 ? "pf_fx_mul32" : "pf_fx_mul64";
+        char e2[600] = "";
+        int rc = F->prepare(G, e2, sizeof e2);
+        if (rc == -1) {
+            snprintf(err, errlen, "%s", e2);
+            return -1;
+        }
+        if (rc == -2) {
+            snprintf(why, sizeof why, "%s", e2);
+            continue;
+        }
+        int lo = 1, hi = FX_MAX_SEARCH;
+        if (G->order_req)
+            lo = hi = G->order_req;
+        double prev = -1, best = -1;
+        int best_order = 0;
+        for (int order = lo; order <= hi; order++) {
+            if (F->parity == FIT_PARITY_ODD && order % 2 == 0 && !G->order_req)
+                continue;
+            /* a fast variant whose error may be absolute or relative (sin,
+               cos) tries both fits: absolute suits coarse outputs, relative
+               fine ones */
+            int kinds[2] = {G->errkind, -1};
+            if (!G->exact && F->errkind_fast != F->errkind)
+                kinds[0] = F->errkind, kinds[1] = F->errkind_fast;
+            int fitted = 0;
+            for (int ki = 0; ki < 2 && kinds[ki] >= 0 && !found; ki++) {
+                G->errkind = kinds[ki];
+                if (fit_at(G, order, e2, sizeof e2) != 0) {
+                    snprintf(why, sizeof why, "%s", e2);
+                    continue;
+                }
+                fitted = 1;
+                F->budget(G);
+                if (accept(G)) {
+                    found = 1;
+                    G->below_err = G->order_req ? -1 : prev;
+                }
+            }
+            if (found)
+                break;
+            if (!fitted)
+                continue;
+            if (best < 0 || G->bound_lsb < best) {
+                best = G->bound_lsb;
+                best_order = order;
+            }
+            prev = G->bound_lsb;
+            /* the bound without any polynomial error: when the arithmetic
+               and the reduction alone miss it, higher orders cannot help */
+            double pe = G->poly_err;
+            G->poly_err = 0;
+            F->budget(G);
+            int floor_ok = accept(G);
+            G->poly_err = pe;
+            F->budget(G);
+            accept(G);
+            if (!floor_ok)
+                break;
+        }
+        if (found)
+            break;
+        if (G->order_req && best >= 0)
+            snprintf(why, sizeof why, "order %d is bounded by %.4f LSB with %d-bit words", G->order_req, best, W);
+        else if (best >= 0)
+            snprintf(why, sizeof why, "the best order, %d, is bounded by %.4f LSB with %d-bit words", best_order,
+                     best, W);
+    }
+    if (!found) {
+        snprintf(err, errlen, "impossible: no %s %s for %s -> %s within %s (%s)", G->exact ? "exact" : "fast",
+                 F->name, G->in_text, G->out_text, G->exact ? "1 LSB" : "max(2^-10 relative, 4 LSB)",
+                 why[0] ? why : "no fit");
+        return -1;
+    }
+    if (sweep) {
+        size_t len;
+        char *src = fx_emit(G, &len);
+        int rc = sweep_emitted(G, src, len, err, errlen);
+        free(src);
+        if (rc != 0)
+            return -2;
+    }
+    return 0;
+}
+
+/* ---- reports ---- */
+
+void fx_report_text(FILE *o, const fx_gen *G)
+{
+    const fx_func *F = G->fn;
+    char tmp[2048];
+    fprintf(o, "%s: %s, %s variant, %s -> %s\n", G->name, F->name, G->exact ? "exact" : "fast", G->in_text,
+            G->out_text);
+    fprintf(o, "  reduction    %s\n", G->red_text);
+    fprintf(o, "  domain       %s for t in [%g, %g]\n", F->target_text, F->a, F->b);
+    fprintf(o, "  order        %d%s, %s words\n", G->order, G->below_err >= 0 ? " (smallest within the bound)" : "",
+            G->wt);
+    if (G->below_err >= 0)
+        fprintf(o, "               the order below is bounded by %.4f LSB\n", G->below_err);
+    fprintf(o, "  method       %s\n", method_text(G));
+    fprintf(o, "  constraints  %s\n", F->con_zero ? F->con_text : "none");
+    fx_formats_text(G, tmp, sizeof tmp);
+    fprintf(o, "  formats      %s\n", tmp);
+    fprintf(o, "  coefficients (stored, lsb, value):\n");
+    for (int j = 0; j <= G->m; j++)
+        fprintf(o, "    c%-2d %20lld  2^-%-3d %.12g\n", G->deg[j], (long long)G->C[j], G->E[j],
+                ldexp((double)G->C[j], -G->E[j]));
+    fprintf(o, "  max %s error of the rounded polynomial: %.4e (2^%.2f) at t = %.9g\n",
+            G->errkind == FIT_REL ? "rel" : "abs", G->poly_err, log2(G->poly_err), G->poly.max_err_at);
+    fprintf(o, "    (real-coefficient fit: %.4e)\n", G->real.max_err);
+    fprintf(o, "  error bound  %.4f LSB (R = %.3e relative, A = %.3e absolute, |f| <= %.6g)\n", G->bound_lsb, G->R,
+            G->A, G->fmax);
+    if (G->swept) {
+        snprintf(tmp, sizeof tmp, "  LSB sweep of the emitted function (%s)", G->sweep_desc);
+        pf_fx_stats_print(o, tmp, F->ref, pf_type_to_fmt(&G->in), pf_type_to_fmt(&G->out), &G->sw, !G->exact);
+    }
+}
+
+void fx_report_json(FILE *o, const fx_gen *G)
+{
+    const fx_func *F = G->fn;
+    fprintf(o, "{\"func\": \"%s\", \"variant\": \"%s\", \"type\": \"%s\", \"out_type\": \"%s\", \"name\": \"%s\", ",
+            F->name, G->exact ? "exact" : "fast", G->in_text, G->out_text, G->name);
+    fprintf(o, "\"order\": %d, \"word_bits\": %d, \"method\": \"%s\", \"coefficients\": [", G->order, G->W,
+            G->minimax ? "minimax" : "lsq");
+    for (int j = 0; j <= G->m; j++)
+        fprintf(o, "%s{\"degree\": %d, \"stored\": %lld, \"exp\": %d}", j ? ", " : "", G->deg[j], (long long)G->C[j],
+                G->E[j]);
+    fprintf(o, "], \"%s\": %.6e, \"bound_lsb\": %.6f", G->errkind == FIT_REL ? "max_rel_error" : "max_abs_error",
+            G->poly_err, G->bound_lsb);
+    if (G->swept)
+        fprintf(o, ", \"sweep\": {\"max_lsb\": %.6f, \"mean_lsb\": %.6f, \"worst_input\": %lld, \"count\": %llu, "
+                   "\"exhaustive\": %s, \"over_fast\": %llu, \"mismatch\": %llu}",
+                G->sw.max_err, pf_fx_mean(&G->sw), (long long)G->sw.worst_x, (unsigned long long)G->sw.count,
+                G->exhaustive ? "true" : "false", (unsigned long long)G->sw.over_fast,
+                (unsigned long long)G->sw.mismatch);
+    fprintf(o, "}\n");
+}
+
+/* ---- the Horner block ---- */
+
+static void coef_lit(const fx_gen *G, char *buf, size_t n, int64_t v, int add)
+{
+    char l[64];
+    fx_lit(l, sizeof l, v < 0 && add ? -v : v, G->W == 64);
+    if (add)
+        snprintf(buf, n, "%s %s", v < 0 ? "-" : "+", l);
+    else
+        snprintf(buf, n, "%s", l);
+}
+
+void fx_emit_horner(const fx_gen *G, fx_buf *b, const char *x, const char *ind)
+{
+    char l[80];
+    int m = G->m;
+    /* x >= 0: with every coefficient >= 0 so is every p, and the 64-bit
+       product needs no sign handling */
+    int pos = 1;
+    for (int j = 0; j <= m; j++)
+        pos = pos && G->C[j] >= 0;
+    coef_lit(G, l, sizeof l, G->C[m], 0);
+    fx_printf(b, "%s%s p = %s; /* c%d = %.12g */\n", ind, G->wt, l, G->deg[m], ldexp((double)G->C[m], -G->E[m]));
+    for (int j = m - 1; j >= 0; j--) {
+        coef_lit(G, l, sizeof l, G->C[j], 1);
+        if (!G->C[j])
+            l[0] = 0;
+        if (G->W == 32)
+            fx_printf(b, "%sp = (int32_t)pf_fx_mul32(p, %s, %d)%s%s; /* c%d = %.12g */\n", ind, x, G->st[j].shift,
+                      l[0] ? " " : "", l, G->deg[j], ldexp((double)G->C[j], -G->E[j]));
+        else
+            fx_printf(b, "%sp = pf_fx_mul64%s(p, %s, %d)%s%s; /* c%d = %.12g */\n", ind, pos ? "p" : "", x, G->st[j].shift, l[0] ? " " : "", l, G->deg[j],
+                      ldexp((double)G->C[j], -G->E[j]));
+    }
+    if (G->root_sat) {
+        char hi[64], lo[64], t[64];
+        fx_lit(hi, sizeof hi, pf_type_max_stored(&G->pt), G->W == 64);
+        fx_lit(lo, sizeof lo, pf_type_min_stored(&G->pt), G->W == 64);
+        pf_type_format(&G->pt, t, sizeof t);
+        fx_printf(b, "%sp = p > %s ? %s : p < %s ? %s : p; /* p0 saturated to %s */\n", ind, hi, hi, lo, lo, t);
+    }
+}

@@ -1,0 +1,257 @@
+/* exp and exp2 in fixed point (see gen/templates/fx_exp.c.in).
+ *
+ * Inputs are first clamped to [XLO, XSAT - 1]: from XSAT up f(x) is at least
+ * the output's max (saturate), below XLO it is under 1/4 lsb (the result
+ * rounds to 0, and XLO's does too).  t = x (exp2) or x log2(e) (exp) in
+ * 64 bits with Ft fraction bits; k = floor(t), f = t - k are taken with a
+ * bias that makes t non-negative, so only unsigned shifts occur.  exp's
+ * constant C = round(log2(e) 2^(Ft+Ei)) errs by at most 1/2 in its last
+ * place: |error of t| <= |X|max 2^-(Ft+1), a relative error of
+ * ln2 |error of t| in the result. */
+#include "fixed_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void g_exp2(mpfr_t y, const mpfr_t t, const void *ctx)
+{
+    (void)ctx;
+    mpfr_exp2(y, t, MPFR_RNDN);
+}
+
+#define XLO k[0]    /* clamp range of the stored input */
+#define XHI k[1]
+#define XSAT k[2]   /* first saturating input, or > max */
+#define CEXP k[3]   /* exp: round(log2e 2^(Ft+Ei)) */
+#define KLO k[4]
+#define KHI k[5]
+#define K0 k[6]     /* bias in units of 2^Ft */
+#define FT s[0]
+#define LOCLAMP s[1]
+#define SAT s[2]
+
+/* ceil / floor of v 2^e for an MPFR value v, as int64 (clamped to +-2^62) */
+static int64_t scaled_int(const mpfr_t v, int e, mpfr_rnd_t rnd)
+{
+    mpfr_t a;
+    mpfr_init2(a, mpfr_get_prec(v) + 16);
+    mpfr_mul_2si(a, v, e, MPFR_RNDN); /* exact */
+    mpfr_rint(a, a, rnd);
+    double d = mpfr_get_d(a, MPFR_RNDN);
+    mpfr_clear(a);
+    if (d > 0x1p62)
+        return (int64_t)1 << 62;
+    if (d < -0x1p62)
+        return -((int64_t)1 << 62);
+    return (int64_t)d;
+}
+
+static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
+{
+    const char *fn = base2 ? "exp2" : "exp";
+    int Ei = G->in.exp, Eo = G->out.exp;
+    if (Ei > 62 || Ei < -62 || Eo > 62 || Eo < -62) {
+        snprintf(err, errlen, "%s: exponents beyond +-62 are not supported", fn);
+        return -1;
+    }
+    int64_t imin = pf_type_min_stored(&G->in), imax = pf_type_max_stored(&G->in);
+    int64_t omax = pf_type_max_stored(&G->out);
+    mpfr_t a;
+    mpfr_init2(a, 256);
+    /* XSAT: the smallest x with f(x) >= max value: x >= log(max) */
+    mpfr_set_si(a, (long)omax, MPFR_RNDN);
+    mpfr_mul_2si(a, a, -Eo, MPFR_RNDN);
+    if (base2)
+        mpfr_log2(a, a, MPFR_RNDU);
+    else
+        mpfr_log(a, a, MPFR_RNDU);
+    int64_t xsat = scaled_int(a, Ei, MPFR_RNDU);
+    /* XLO: the largest x with f(x) < lsb/4: x < log(2^-(Eo+2)), rounded down
+       and one below when that lands on the bound */
+    mpfr_set_si(a, -(Eo + 2), MPFR_RNDN);
+    if (!base2) {
+        mpfr_t l2;
+        mpfr_init2(l2, 256);
+        mpfr_const_log2(l2, MPFR_RNDU);
+        mpfr_mul(a, a, l2, MPFR_RNDD);
+        mpfr_clear(l2);
+    }
+    int64_t xlo = scaled_int(a, Ei, MPFR_RNDD) - 1;
+    mpfr_clear(a);
+    G->SAT = xsat <= imax;
+    G->LOCLAMP = xlo > imin;
+    G->XSAT = xsat;
+    G->XLO = xlo > imin ? xlo : imin;
+    G->XHI = xsat - 1 < imax ? xsat - 1 : imax;
+    if (G->XHI < G->XLO + 1) {
+        snprintf(err, errlen, "%s: output type %s has no room between 1/4 lsb and its max for %s inputs", fn,
+                 G->out_text, G->in_text);
+        return -1;
+    }
+    double xl = ldexp((double)G->XLO, -Ei), xh = ldexp((double)G->XHI, -Ei);
+    double c = base2 ? 1 : M_LOG2E;
+    G->KLO = (int64_t)floor(xl * c) - 1; /* one of margin each side: computed t errs */
+    G->KHI = (int64_t)floor(xh * c) + 1;
+    G->K0 = G->KLO < 0 ? -G->KLO : 0;
+    double xmaxabs = fmax(fabs((double)G->XLO), fabs((double)G->XHI));
+    G->fmax = fx_out_max(G);
+    if (G->SAT)
+        snprintf(G->sat_text, sizeof G->sat_text, "x >= %lld (stored; %.9g) overflows: %lld (the max)",
+                 (long long)G->XSAT, ldexp((double)G->XSAT, -Ei), (long long)omax);
+    else
+        snprintf(G->sat_text, sizeof G->sat_text, "no input overflows");
+    if (base2) {
+        G->FT = Ei > 0 ? Ei : 0;
+        G->dred = 0;
+        snprintf(G->red_text, sizeof G->red_text,
+                 "t = x; k = floor(t), f = t - k (exact%s); inputs clamped to [%lld, %lld] (stored)%s",
+                 Ei > 0 ? ", the low bits of the stored integer" : ": x is an integer", (long long)G->XLO,
+                 (long long)G->XHI, G->SAT ? ", saturating from there" : "");
+    } else {
+        /* (t + K0) 2^Ft and x C both stay below 2^61 */
+        int64_t B = (G->KHI > -G->KLO ? G->KHI : -G->KLO) + G->K0 + 2;
+        G->FT = 61 - fx_bitlen((uint64_t)B);
+        int cc = (int)G->FT - Ei;
+        if (G->FT < 1 || cc < 1 || cc > 61) {
+            snprintf(err, errlen, "%s: input exponent %d not supported", fn, Ei);
+            return -1;
+        }
+        mpfr_t l;
+        mpfr_init2(l, 256);
+        mpfr_set_ui(l, 1, MPFR_RNDN);
+        mpfr_exp(l, l, MPFR_RNDN);
+        mpfr_log2(l, l, MPFR_RNDN);
+        G->CEXP = scaled_int(l, cc, MPFR_RNDN);
+        mpfr_clear(l);
+        G->dred = xmaxabs * ldexp(0.5, -G->FT);
+        snprintf(G->red_text, sizeof G->red_text,
+                 "t = x log2(e) = x C 2^-%d with C = round(log2(e) 2^%d) = %lld (MPFR); k = floor(t), f = t - k; "
+                 "inputs clamped to [%lld, %lld] (stored)%s; error of t <= %.3e",
+                 G->FT, cc, (long long)G->CEXP, (long long)G->XLO, (long long)G->XHI,
+                 G->SAT ? ", saturating from there" : "", G->dred);
+    }
+    return 0;
+}
+
+static int prep_exp(fx_gen *G, char *err, size_t n) { return prepare(G, err, n, 0); }
+static int prep_exp2(fx_gen *G, char *err, size_t n) { return prepare(G, err, n, 1); }
+
+/* rounding of f to the Horner variable's 2^-(W-1) (and its saturation) */
+static double df_of(const fx_gen *G) { return G->FT > G->W - 1 ? 1.5 * ldexp(1.0, -(G->W - 1)) : 0; }
+
+static void budget(fx_gen *G)
+{
+    G->A = 0;
+    G->R = G->poly_err + G->arith + M_LN2 * (G->dred + df_of(G)) * (1 + 1e-6);
+    int shmax = G->Ep - G->out.exp - (int)G->KLO, shmin = G->Ep - G->out.exp - (int)G->KHI;
+    /* left shifts must stay inside 64 bits */
+    if (shmin < -(62 - (G->Ep + 2)) || shmax > 4000)
+        G->R = INFINITY;
+}
+
+static void emit(fx_gen *G, fx_buf *b, int base2)
+{
+    fx_buf clamp = {0}, split = {0}, horner = {0}, out = {0};
+    int W = G->W, Ei = G->in.exp, Ft = (int)G->FT;
+    /* clamp */
+    fx_put(&clamp, "    int64_t xc = x;");
+    if (G->LOCLAMP)
+        fx_printf(&clamp, "\n    xc = xc < %lld ? %lld : xc;", (long long)G->XLO, (long long)G->XLO);
+    if (G->SAT)
+        fx_printf(&clamp, "\n    xc = xc > %lld ? %lld : xc;", (long long)G->XHI, (long long)G->XHI);
+    /* t 2^Ft, biased by K0 2^Ft so that it is >= 0; kb = k + K0 */
+    if (base2 && Ei <= 0) {
+        fx_printf(&split, "    /* x is an integer: k = x, f = 0 */\n    uint64_t kb = (uint64_t)(xc * %lld + %lld);\n",
+                  (long long)1 << -Ei, (long long)G->K0);
+        fx_printf(&split, "    %s f = 0;", G->wt);
+    } else {
+        if (base2)
+            fx_printf(&split, "    uint64_t tb = (uint64_t)(xc + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
+                      (long long)(G->K0 << Ft), (long long)G->K0, Ft);
+        else if (G->XLO < INT32_MIN || G->XHI > INT32_MAX)
+            fx_printf(&split,
+                      "    uint64_t tb = (uint64_t)(xc * INT64_C(%lld) + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
+                      (long long)G->CEXP, (long long)(G->K0 << Ft), (long long)G->K0, Ft);
+        else if (G->CEXP <= INT32_MAX)
+            fx_printf(&split,
+                      "    uint64_t tb = (uint64_t)((int64_t)(int32_t)xc * %lld + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
+                      (long long)G->CEXP, (long long)(G->K0 << Ft), (long long)G->K0, Ft);
+        else
+            /* x C from two 32x32-bit products (C = CH 2^31 + CL), which
+               vectorize where a 64x64-bit product does not; the sum is
+               in [0, 2^63), so its value mod 2^64 is the value */
+            fx_printf(&split,
+                      "    uint64_t tb = ((uint64_t)((int64_t)(int32_t)xc * %lld) << 31) + (uint64_t)((int64_t)(int32_t)xc * %lld)\n"
+                      "                  + UINT64_C(%lld); /* (t + %lld) 2^%d, t = x %lld 2^-%d */\n",
+                      (long long)(G->CEXP >> 31), (long long)(G->CEXP & 0x7fffffff), (long long)(G->K0 << Ft),
+                      (long long)G->K0, Ft, (long long)G->CEXP, (int)G->FT - G->in.exp);
+        fx_printf(&split, "    uint64_t kb = tb >> %d; /* k + %lld */\n", Ft, (long long)G->K0);
+        fx_printf(&split, "    uint64_t fr = tb & UINT64_C(0x%llx); /* f 2^%d */\n",
+                  (unsigned long long)(((uint64_t)1 << Ft) - 1), Ft);
+        if (Ft <= W - 1)
+            fx_printf(&split, "    %s f = (%s)(fr << %d); /* f in [0, 1), 2^-%d units */", G->wt, G->wt, W - 1 - Ft,
+                      W - 1);
+        else
+            fx_printf(&split,
+                      "    uint64_t f1 = pf_fx_rne_u(fr, %d);\n"
+                      "    %s f = (%s)(f1 < UINT64_C(0x%llx) ? f1 : UINT64_C(0x%llx)); /* f in [0, 1), 2^-%d units */",
+                      Ft - (W - 1), G->wt, G->wt, (unsigned long long)(((uint64_t)1 << (W - 1)) - 1),
+                      (unsigned long long)(((uint64_t)1 << (W - 1)) - 1), W - 1);
+    }
+    fx_emit_horner(G, &horner, "f", "    ");
+    if (horner.n && horner.s[horner.n - 1] == '\n')
+        horner.s[--horner.n] = 0;
+    /* P 2^k in output units: shift right by sh = Ep - Eo - k */
+    int base = G->Ep - G->out.exp;
+    int shmin = base - (int)G->KHI, shmax = base - (int)G->KLO;
+    int64_t omax = pf_type_max_stored(&G->out);
+    long long bk = (long long)base + (long long)G->K0; /* sh = bk - kb */
+    const char *pcast = "(uint64_t)(p > 0 ? p : 0)";
+    if (shmin >= 1) {
+        fx_printf(&out, "    uint64_t sh = %lld - kb;\n", bk);
+        fx_printf(&out, "    uint64_t r = pf_fx_rne_u(%s, %s);\n", pcast, shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
+    } else {
+        fx_printf(&out, "    int64_t sh = %lld - (int64_t)kb;\n", bk);
+        if (shmax <= 0)
+            fx_printf(&out, "    uint64_t r = %s << -sh;\n", pcast);
+        else
+            fx_printf(&out,
+                      "    uint64_t r = sh >= 1 ? pf_fx_rne_u(%s, (uint64_t)(sh < 63 ? sh : 63))\n"
+                      "                         : %s << (sh > -62 ? -sh : 62);\n",
+                      pcast, pcast);
+    }
+    fx_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
+    if (G->SAT)
+        fx_printf(&out, "    return (%s)(x >= %lld ? %lluu : r);", G->ot, (long long)G->XSAT, (unsigned long long)omax);
+    else
+        fx_printf(&out, "    return (%s)r;", G->ot);
+    char xsat[32], xlo[32], tdef[64];
+    snprintf(xsat, sizeof xsat, "%lld", (long long)G->XSAT);
+    snprintf(xlo, sizeof xlo, "%lld", (long long)G->XLO);
+    snprintf(tdef, sizeof tdef, "%s", base2 ? "x" : "x log2(e)");
+    const char *kv[] = {"FUNC", base2 ? "exp2" : "exp", "TDEF", tdef, "XSAT", xsat, "XLO", xlo, "NAME", G->name,
+                        "IT", G->it, "OT", G->ot, "CLAMP_CODE", clamp.s, "SPLIT_CODE", split.s, "HORNER", horner.s,
+                        "OUT_TYPE", G->out_text, "OUT_CODE", out.s, NULL};
+    fx_subst(b, fx_template("fx_exp.c"), kv);
+    free(clamp.s);
+    free(split.s);
+    free(horner.s);
+    free(out.s);
+}
+
+static void emit_exp(fx_gen *G, fx_buf *b) { emit(G, b, 0); }
+static void emit_exp2(fx_gen *G, fx_buf *b) { emit(G, b, 1); }
+
+const fx_func fx_func_exp = {
+    .name = "exp", .ref = PF_EXP, .tmpl = "fx_exp", .target_text = "2^t", .g = g_exp2, .a = 0, .b = 1,
+    .parity = FIT_PARITY_NONE, .errkind = FIT_REL, .errkind_fast = FIT_REL, .con_zero = 1, .con_text = "p(0) = 1 (exact powers of 2 at integer t)",
+    .prepare = prep_exp, .budget = budget, .emit = emit_exp,
+};
+
+const fx_func fx_func_exp2 = {
+    .name = "exp2", .ref = PF_EXP2, .tmpl = "fx_exp", .target_text = "2^t", .g = g_exp2, .a = 0, .b = 1,
+    .parity = FIT_PARITY_NONE, .errkind = FIT_REL, .errkind_fast = FIT_REL, .con_zero = 1, .con_text = "p(0) = 1 (exact powers of 2 at integer t)",
+    .prepare = prep_exp2, .budget = budget, .emit = emit_exp2,
+};

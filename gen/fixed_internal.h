@@ -1,0 +1,137 @@
+/* Internals of the fixed-point generator (gen/fixed_*.c): one generation's
+ * state, the per-function hooks, and the shared helpers. */
+#ifndef PF_FIXED_INTERNAL_H
+#define PF_FIXED_INTERNAL_H
+
+#include "bitwidth.h"
+#include "fit.h"
+#include "fixedtype.h"
+#include "pfref.h"
+#include "sweep_fixed.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define FX_MAXC (FIT_MAX_ORDER + 1)
+#define FX_MAX_SEARCH 24 /* highest order tried when searching */
+
+/* ---- a growable string ---- */
+typedef struct {
+    char *s;
+    size_t n, cap;
+} fx_buf;
+
+void fx_put(fx_buf *b, const char *s);
+__attribute__((format(printf, 2, 3))) void fx_printf(fx_buf *b, const char *fmt, ...);
+/* the embedded template gen/templates/<name>.in, or NULL */
+const char *fx_template(const char *name);
+/* text with @KEY@ replaced from kv (NULL-terminated key, value pairs) */
+void fx_subst(fx_buf *b, const char *text, const char *const *kv);
+
+typedef struct fx_gen fx_gen;
+
+/* One function's hooks.  prepare() checks the types and sets the reduction
+ * up for G->W; it returns 0, -1 (with a message: a bad type pair, exit 2)
+ * or -2 (this word size cannot do it: try 64 bits).  budget() turns the
+ * formats and the measured polynomial into the error model G->R, G->A;
+ * emit() writes the body's snippets. */
+typedef struct {
+    const char *name;
+    pf_func ref;
+    const char *tmpl;          /* gen/templates/<tmpl>.c.in */
+    const char *target_text;   /* what P fits, e.g. "sin(pi/2 t)" */
+    fit_target_fn g;
+    double a, b;               /* domain of t */
+    int parity;                /* FIT_PARITY_ODD: P is in s = t^2 */
+    int errkind;               /* FIT_ABS or FIT_REL */
+    int errkind_fast;          /* the same for the fast variant */
+    int con_zero;              /* constraint p(0) = g(0) */
+    const char *con_text;
+    int (*prepare)(fx_gen *G, char *err, size_t errlen);
+    void (*budget)(fx_gen *G);
+    void (*emit)(fx_gen *G, fx_buf *body);
+} fx_func;
+
+struct fx_gen {
+    const fx_func *fn;
+    int exact;
+    pf_type in, out;
+    char in_text[64], out_text[64];
+    const char *it, *ot;       /* C storage types */
+    char name[128];
+    const char *command;
+    int order_req;             /* --order, 0: smallest meeting the bound */
+    int minimax;
+    int errkind;               /* of the fit: the function's, exact or fast */
+
+    /* kernel: W-bit values, 2W-bit products */
+    int W;
+    const char *wt;            /* "int32_t" / "int64_t" */
+    const char *mul;           /* "pf_fx_mul32" / "pf_fx_mul64" */
+
+    /* the fit and its rounded polynomial */
+    fit_problem pb;
+    fit_poly real, poly;
+    int order;
+    double poly_err;           /* max error (errkind) of the rounded polynomial */
+    double below_err;          /* the order below's bound in LSB when searched, else -1 */
+
+    /* P(x) = sum C[j] 2^-E[j] x^j, Horner in x of type xt = ufixed<W-1,W-1> */
+    int m;                     /* degree of P */
+    int deg[FX_MAXC];          /* degree in t of P's coefficient j */
+    int64_t C[FX_MAXC];
+    int E[FX_MAXC];
+    pf_bw_step st[FX_MAXC];
+    pf_type xt, pt;            /* Horner variable; p_0 */
+    int Ep;                    /* p_0's exponent */
+    int root_sat;              /* p_0 was trimmed: saturate it */
+    double arith;              /* Horner rounding bound, in P's units */
+    double dP;                 /* bound of |P'| on [0, 1] */
+
+    /* error model before the final rounding: |z - f(x)| <= R |f(x)| + A,
+       with |f| <= fmax where it is not saturated */
+    double R, A, fmax;
+    double bound_lsb;          /* 0.5 + (R fmax + A) / lsb */
+    double dred;               /* reduction's own error (function's units) */
+
+    /* function-specific reduction parameters */
+    int kind;                  /* reduction variant */
+    int64_t k[16];
+    int s[16];
+    double d[8];
+    char red_text[600];
+    char sat_text[300];        /* the defined saturations, for the provenance */
+    char bound_note[160];      /* appended to the error bound's line */
+
+    /* sweep of the compiled code */
+    int swept, exhaustive;
+    pf_fx_stats sw;
+    char sweep_desc[200];
+};
+
+/* the functions (gen/fixed_trig.c, fixed_exp.c, fixed_log.c, fixed_sqrt.c) */
+extern const fx_func fx_func_sin, fx_func_cos, fx_func_exp, fx_func_exp2, fx_func_log, fx_func_log2,
+    fx_func_sqrt;
+const fx_func *fx_func_find(const char *name);
+const char *fx_func_list(void);
+
+/* ---- helpers (gen/fixed_core.c) ---- */
+double fx_lsb(const fx_gen *G);                 /* output lsb 2^-Eo */
+int fx_bitlen(uint64_t v);
+/* "INT64_C(-123)" or "-123" for the kernel's word */
+void fx_lit(char *buf, size_t n, int64_t v, int w64);
+/* the Horner block: "p = C_m; p = mul(p, x, sh) + C_j; ..." on variable x */
+void fx_emit_horner(const fx_gen *G, fx_buf *b, const char *x, const char *indent);
+/* description of the formats, for the provenance */
+void fx_formats_text(const fx_gen *G, char *buf, size_t n);
+/* largest value of the output type, as a double */
+double fx_out_max(const fx_gen *G);
+
+/* the whole generation (gen/fixed_core.c) */
+int fx_generate(fx_gen *G, int sweep, char *err, size_t errlen);
+void fx_report_text(FILE *o, const fx_gen *G);
+void fx_report_json(FILE *o, const fx_gen *G);
+/* emitted C (malloc'ed, NUL-terminated) */
+char *fx_emit(const fx_gen *G, size_t *len);
+
+#endif

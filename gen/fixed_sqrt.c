@@ -1,0 +1,160 @@
+/* sqrt in fixed point (see gen/templates/fx_sqrt.c.in).
+ *
+ * x = X 2^-Ei, X > 0 = 2^n (1 + t) as for log; e = n - Ei, j = floor(e/2):
+ * sqrt(x) = 2^j (sqrt 2 if e is odd) P(t), P(t) ~ sqrt(1 + t) in [1, sqrt 2).
+ * y = P q with q = 1 or round(sqrt2 2^Eq) 2^-Eq is rounded to P's lsb, then
+ * shifted by j and rounded to the output.  All of these errors are
+ * relative (y >= 1).
+ * The exact variant then corrects the result R to the correctly rounded one
+ * (as pffixed.h's pf_fx_sqrt: to nearest, ties to even, saturated): with
+ * 4N = X 2^G the exact square of 2 sqrt(x) 2^Eo, R is right when
+ * (2R - 1)^2 < 4N < (2R + 1)^2; as the bound keeps R within one of it, a
+ * step of +-1 decided by exact 64-bit squares suffices. */
+#include "fixed_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void g_sqrt1p(mpfr_t y, const mpfr_t t, const void *ctx)
+{
+    (void)ctx;
+    mpfr_t a;
+    mpfr_init2(a, mpfr_get_prec(y) + 64);
+    mpfr_add_ui(a, t, 1, MPFR_RNDN);
+    mpfr_sqrt(y, a, MPFR_RNDN);
+    mpfr_clear(a);
+}
+
+#define QS k[0]     /* round(sqrt2 2^Eq) */
+#define J0 k[1]     /* bias: e + 2 J0 >= 0 */
+#define JLO k[2]
+#define JHI k[3]
+#define EQ s[0]
+#define CORR s[1]   /* exact: emit the correction */
+#define GSH s[2]    /* G = 2 Eo - Ei + 2 */
+
+static int prepare(fx_gen *G, char *err, size_t errlen)
+{
+    int Ei = G->in.exp, Eo = G->out.exp, W = G->W;
+    if (Ei > 200 || Ei < -200 || Eo > 62 || Eo < -62) {
+        snprintf(err, errlen, "sqrt: exponents out of the supported range");
+        return -1;
+    }
+    int64_t imax = pf_type_max_stored(&G->in), omax = pf_type_max_stored(&G->out);
+    int nb = fx_bitlen((uint64_t)imax);
+    int64_t elo = -Ei, ehi = nb - 1 - Ei;
+    G->JLO = elo >= 0 ? elo / 2 : -((-elo + 1) / 2);
+    G->JHI = ehi >= 0 ? ehi / 2 : -((-ehi + 1) / 2);
+    G->J0 = G->JLO < 0 ? -G->JLO : 0;
+    G->EQ = W - 2;
+    mpfr_t a;
+    mpz_t z;
+    mpfr_init2(a, 256);
+    mpz_init(z);
+    mpfr_set_ui(a, 2, MPFR_RNDN);
+    mpfr_sqrt(a, a, MPFR_RNDN);
+    mpfr_mul_2si(a, a, G->EQ, MPFR_RNDN);
+    mpfr_get_z(z, a, MPFR_RNDN);
+    G->QS = (int64_t)mpz_get_si(z);
+    mpz_clear(z);
+    mpfr_clear(a);
+    double inmax = ldexp((double)imax, -Ei);
+    G->fmax = fmin(fx_out_max(G), sqrt(inmax) * (1 + 1e-9));
+    G->dred = 0;
+    snprintf(G->sat_text, sizeof G->sat_text, "sqrt(x) for x < 0 (undefined) gives 0");
+    G->bound_note[0] = 0;
+    /* the correction needs exact squares in 64 bits */
+    int gs = 2 * Eo - Ei + 2, bo = fx_bitlen((uint64_t)omax);
+    G->GSH = gs;
+    G->CORR = G->exact && bo <= 31 && (gs >= 0 ? nb + gs <= 64 : 2 * (bo + 1) - gs <= 64);
+    if (G->CORR)
+        snprintf(G->bound_note, sizeof G->bound_note,
+                 "the +-1 correction then makes the result correctly rounded (at most 0.5 LSB)");
+    snprintf(G->red_text, sizeof G->red_text,
+             "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (leading-zero count), t in [0, 1) exact; "
+             "sqrt(x) = 2^floor(e/2) (sqrt2 if e is odd) P(t), sqrt2 = %lld 2^-%d (MPFR)%s; x <= 0 -> 0",
+             Ei, (long long)G->QS, (int)G->EQ,
+             G->CORR ? "; then corrected by +-1 with exact squares to the correctly rounded result (ties to even)" : "");
+    return 0;
+}
+
+static void budget(fx_gen *G)
+{
+    G->A = 0;
+    G->R = G->poly_err + G->arith + ldexp(0.5, -(int)G->EQ) / M_SQRT2 + ldexp(0.5, -G->Ep);
+    int base = G->Ep - G->out.exp;
+    if (base - (int)G->JHI < -(62 - (G->Ep + 2)))
+        G->R = INFINITY;
+}
+
+static void emit(fx_gen *G, fx_buf *b)
+{
+    fx_buf norm = {0}, horner = {0}, out = {0};
+    int W = G->W, Ei = G->in.exp;
+    int64_t omax = pf_type_max_stored(&G->out);
+    fx_put(&norm, "    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */\n"
+                  "    int n = pf_fx_bitlen(ux) - 1;\n");
+    if (W == 32)
+        fx_put(&norm, "    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */");
+    else
+        fx_put(&norm, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
+    fx_emit_horner(G, &horner, "t", "    ");
+    if (horner.n && horner.s[horner.n - 1] == '\n')
+        horner.s[--horner.n] = 0;
+    char qs[64], q1[64];
+    fx_lit(qs, sizeof qs, G->QS, W == 64);
+    fx_lit(q1, sizeof q1, (int64_t)1 << G->EQ, W == 64);
+    fx_printf(&out, "    uint64_t eb = (uint64_t)(n + %lld); /* e + 2 J0 = n - %d + 2 J0 >= 0, J0 = %lld */\n",
+              (long long)(2 * G->J0 - Ei), Ei, (long long)G->J0);
+    fx_printf(&out, "    %s q = (eb & 1) ? %s : %s; /* sqrt2 or 1, 2^-%d units */\n", G->wt, qs, q1, (int)G->EQ);
+    fx_printf(&out, "    int64_t y = %s(p, q, %d); /* P q, 2^-%d units */\n", G->mul, (int)G->EQ, G->Ep);
+    int base = G->Ep - G->out.exp;
+    int shmin = base - (int)G->JHI, shmax = base - (int)G->JLO;
+    long long bj = (long long)base + (long long)G->J0; /* sh = Ep - Eo - floor(e/2) = bj - (eb >> 1) */
+    if (shmin >= 1) {
+        fx_printf(&out, "    uint64_t sh = %lld - (eb >> 1);\n", bj);
+        fx_printf(&out, "    uint64_t r = pf_fx_rne_u((uint64_t)y, %s);\n", shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
+    } else {
+        fx_printf(&out, "    int64_t sh = %lld - (int64_t)(eb >> 1);\n", bj);
+        if (shmax <= 0)
+            fx_put(&out, "    uint64_t r = (uint64_t)y << -sh;\n");
+        else
+            fx_put(&out, "    uint64_t r = sh >= 1 ? pf_fx_rne_u((uint64_t)y, (uint64_t)(sh < 63 ? sh : 63))\n"
+                         "                         : (uint64_t)y << (sh > -62 ? -sh : 62);\n");
+    }
+    fx_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
+    if (G->CORR) {
+        int gs = (int)G->GSH;
+        fx_put(&out, "    /* correctly rounded: R is right when (2R-1)^2 < 4N < (2R+1)^2, 4N = x 2^G exactly */\n");
+        /* 2R +- 1 < 2^32 (bo <= 31): squares from 32x32-bit products; when
+           everything stays below 2^63 the compares are signed (AVX2 has no
+           unsigned 64-bit compare) */
+        int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in)), bo = fx_bitlen((uint64_t)omax);
+        int sgn = (gs >= 0 ? nb + gs <= 62 && 2 * (bo + 1) <= 62 : 2 * (bo + 1) - gs <= 62);
+        const char *ct = sgn ? "int64_t" : "uint64_t";
+        fx_put(&out, "    uint32_t a1 = (uint32_t)(2 * r + 1), a0 = (uint32_t)(2 * r - 1);\n");
+        if (gs >= 0)
+            fx_printf(&out, "    %s n4 = (%s)((uint64_t)ux << %d), hi2 = (%s)((uint64_t)a1 * a1), lo2 = (%s)((uint64_t)a0 * a0);\n",
+                      ct, ct, gs, ct, ct);
+        else
+            fx_printf(&out, "    %s n4 = (%s)ux, hi2 = (%s)((uint64_t)a1 * a1 << %d), lo2 = (%s)((uint64_t)a0 * a0 << %d);\n",
+                      ct, ct, ct, -gs, ct, -gs);
+        fx_put(&out, "    r = r + (n4 > hi2 || (n4 == hi2 && (r & 1))) - (r > 0 && (n4 < lo2 || (n4 == lo2 && (r & 1))));\n");
+        fx_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
+    }
+    fx_printf(&out, "    return (%s)(x > 0 ? r : 0);", G->ot);
+    const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "NORM_CODE", norm.s, "HORNER", horner.s,
+                        "OUT_CODE", out.s, NULL};
+    fx_subst(b, fx_template("fx_sqrt.c"), kv);
+    free(norm.s);
+    free(horner.s);
+    free(out.s);
+}
+
+const fx_func fx_func_sqrt = {
+    .name = "sqrt", .ref = PF_SQRT, .tmpl = "fx_sqrt", .target_text = "sqrt(1+t)", .g = g_sqrt1p, .a = 0, .b = 1,
+    .parity = FIT_PARITY_NONE, .errkind = FIT_REL, .errkind_fast = FIT_REL, .con_zero = 1, .con_text = "p(0) = 1 (exact at powers of 4)",
+    .prepare = prepare, .budget = budget, .emit = emit,
+};

@@ -1,0 +1,90 @@
+# Generated fixed-point functions (issue 5, second half): pfmathgen with
+# fixed<size,exp> types (gen/fixedgen.c, gen/fixed_*.c, templates
+# gen/templates/fx_*.c.in), the fixed-point sweep (ref/sweep_fixed.c,
+# pfsweep --type/--out-type in tests/pfsweep_fixed.c), the per-step
+# coefficient rounding (fit/round_fixed.c) and the library's default set
+# libpfmath/generated/pf_fx_*.c.  See docs/fixed.md.
+FIT_SRCS += fit/round_fixed.c
+REF_SRCS += ref/sweep_fixed.c
+$(BUILD)/obj/ref/sweep_fixed.o: ALL_CFLAGS += -fopenmp
+
+# gen/fixed_*.c go into libpfgen.a next to gen.mk's sources ($^ there).
+FIXEDGEN_SRCS := $(sort $(wildcard gen/fixed_*.c))
+$(BUILD)/libpfgen.a: $(FIXEDGEN_SRCS:%.c=$(BUILD)/obj/%.o)
+$(BUILD)/obj/gen/fixed_core.o: $(BUILD)/include/pf_templates.h
+# pfsweep's fixed-point half parses types (fit/fixedtype.c)
+$(BUILD)/pfsweep: $(BUILD)/libpffit.a
+
+# Tests: the command line and the issue's sin example (test_fixedgen).
+TESTS += $(BUILD)/tests/test_fixedgen
+$(BUILD)/tests/test_fixedgen: $(BUILD)/pfmathgen $(BUILD)/pfsweep
+# Every function, exact and fast, for many 16-bit and 8-bit types, swept
+# exhaustively against MPFR (test_fixedgen_funcs).
+TESTS += $(BUILD)/tests/test_fixedgen_funcs
+
+# The library's default fixed-point set: NAME/FUNC/INPUT/OUTPUT, each giving
+# libpfmath/generated/pf_fx_NAME.c (pf_NAME, exact) and pf_fx_NAME_fast.c
+# (pf_NAME_fast), written by exactly
+#   pfmathgen --func FUNC --type 'INPUT' --out-type 'OUTPUT' [--variant fast] \
+#             -o libpfmath/generated/pf_fx_NAME[_fast].c
+# from the repository root (`make regen-fixed`; tests/check-regen-fixed.sh
+# re-runs the commands and compares).  Declarations: libpfmath/pfmath_fixed.h.
+FX_LIB := sin_q12_q14/sin/fixed<15,12>/fixed<15,14> cos_q12_q14/cos/fixed<15,12>/fixed<15,14> \
+          exp_q11_uq8/exp/fixed<15,11>/ufixed<16,8> exp2_q11_uq8/exp2/fixed<15,11>/ufixed<16,8> \
+          log_uq8_q11/log/ufixed<16,8>/fixed<15,11> log2_uq8_q11/log2/ufixed<16,8>/fixed<15,11> \
+          sqrt_uq8_uq12/sqrt/ufixed<16,8>/ufixed<16,12> \
+          sin_q16/sin/fixed<31,16>/fixed<31,16> cos_q16/cos/fixed<31,16>/fixed<31,16> \
+          exp_q16/exp/fixed<31,16>/fixed<31,16> exp2_q16/exp2/fixed<31,16>/fixed<31,16> \
+          log_q16/log/fixed<31,16>/fixed<31,16> log2_q16/log2/fixed<31,16>/fixed<31,16> \
+          sqrt_q16/sqrt/fixed<31,16>/fixed<31,16>
+FX_LIB_QUOTED = $(foreach e,$(FX_LIB),'$(e)')
+
+.PHONY: regen-fixed
+regen: regen-fixed
+regen-fixed: $(BUILD)/pfmathgen
+	@mkdir -p libpfmath/generated
+	@set -e; for e in $(FX_LIB_QUOTED); do \
+	  n=$${e%%/*}; r=$${e#*/}; f=$${r%%/*}; r=$${r#*/}; in=$${r%%/*}; out=$${r#*/}; \
+	  for v in exact fast; do s=""; [ $$v = fast ] && s=_fast; \
+	    o=libpfmath/generated/pf_fx_$$n$$s.c; echo "  GEN $$o"; \
+	    $(BUILD)/pfmathgen --func $$f --type "$$in" --out-type "$$out" $${s:+--variant fast} -o $$o 2>/dev/null; \
+	  done; \
+	done
+
+TESTS += $(BUILD)/tests/check-regen-fixed
+$(BUILD)/tests/check-regen-fixed: tests/check-regen-fixed.sh $(BUILD)/pfmathgen mk/fixedgen.mk
+	@mkdir -p $(dir $@)
+	sed -e 's|@PFMATHGEN@|$(abspath $(BUILD)/pfmathgen)|' -e "s|@FXLIB@|$(FX_LIB_QUOTED)|" $< > $@ && chmod +x $@
+# The library's set: sweeps, saturation, exact values (test_fixed_lib).
+TESTS += $(BUILD)/tests/test_fixed_lib
+# The 16-bit functions compiled with -O0 ... -O3 -march=native: identical
+# output tables (test_fixed_hash).
+TESTS += $(BUILD)/tests/test_fixed_hash
+
+# make sweep: the default fixed-point set over every input (2^32 for the
+# Q16.16 functions: minutes each); exact below 1 LSB, fast within
+# max(2^-10 relative, 4 LSB) or pfsweep exits 1.  Writes build/sweep-fixed.md.
+.PHONY: sweep-fixed
+sweep: sweep-fixed
+sweep-fixed: $(BUILD)/pfsweep $(BUILD)/libpfmath.so
+	@echo "| function | input -> output | max LSB | mean LSB | worst input (stored) | inputs |" > $(BUILD)/sweep-fixed.md
+	@echo "|---|---|---|---|---|---|" >> $(BUILD)/sweep-fixed.md
+	@set -e; for e in $(FX_LIB_QUOTED); do \
+	  n=$${e%%/*}; r=$${e#*/}; f=$${r%%/*}; r=$${r#*/}; in=$${r%%/*}; out=$${r#*/}; \
+	  for v in exact fast; do s=""; b="--max-lsb 1"; [ $$v = fast ] && s=_fast && b=""; \
+	    $(BUILD)/pfsweep --func $$f --type "$$in" --out-type "$$out" --variant $$v --all $$b \
+	      > $(BUILD)/sweep-fixed-$$n$$s.txt; \
+	    tail -1 $(BUILD)/sweep-fixed-$$n$$s.txt; \
+	    awk -v fn="pf_$$n$$s" -v io="$$in -> $$out" '/^TOTAL/ { for (i=1;i<=NF;i++) { split($$i,a,"="); v[a[1]]=a[2] } \
+	      printf "| %s | %s | %.4f | %.4f | %s | %s |\n", fn, io, v["max_lsb"], v["mean_lsb"], v["worst"], v["count"] }' \
+	      $(BUILD)/sweep-fixed-$$n$$s.txt >> $(BUILD)/sweep-fixed.md; \
+	  done; \
+	done
+	@cat $(BUILD)/sweep-fixed.md
+
+# ns/element of the fixed-point set beside the float exact/fast variants
+# (not a test): $(BUILD)/bench_fixed
+PROGS += $(BUILD)/bench_fixed
+$(BUILD)/bench_fixed: tests/bench_fixed.c $(BUILD)/libpfmath.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lm

@@ -1,0 +1,203 @@
+/* Bit-identical whatever the flags: every 16-bit function of the library's
+ * fixed-point set (libpfmath/generated/pf_fx_*.c) is compiled here with
+ * several flag sets, from -O0 to -O3 -march=native (vectorized, the widest
+ * SIMD the machine has) and -ffast-math, and the full output table of its
+ * scalar and array forms is hashed: all builds and both forms must agree.
+ * The -O0 table is also swept against MPFR (exact: below 1 LSB; fast: its
+ * bound), so every build is within bound.  The one golden hash is derived,
+ * not recorded: the exact sqrt's table must hash like the table of
+ * pffixed.h's correctly rounded pf_fx_sqrt. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "pffixed.h"
+#include "sweep_fixed.h"
+
+#include <dlfcn.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+typedef struct {
+    const char *stem; /* pf_<stem>: libpfmath/generated/pf_fx_<stem>.c */
+    pf_func f;
+    pf_fmt in, out;
+} hfn;
+
+static const hfn fns[] = {
+    {"sin_q12_q14", PF_SIN, {1, 15, 12}, {1, 15, 14}},  {"cos_q12_q14", PF_COS, {1, 15, 12}, {1, 15, 14}},
+    {"exp_q11_uq8", PF_EXP, {1, 15, 11}, {0, 16, 8}},   {"exp2_q11_uq8", PF_EXP2, {1, 15, 11}, {0, 16, 8}},
+    {"log_uq8_q11", PF_LOG, {0, 16, 8}, {1, 15, 11}},   {"log2_uq8_q11", PF_LOG2, {0, 16, 8}, {1, 15, 11}},
+    {"sqrt_uq8_uq12", PF_SQRT, {0, 16, 8}, {0, 16, 12}},
+};
+#define NFNS ((int)(sizeof fns / sizeof fns[0]))
+
+/* compiler ("" = $CC or cc) and flags; clang's rows run when it is installed */
+static const char *const flagsets[][2] = {
+    {"", "-O0"}, {"", "-O1 -fno-inline"}, {"", "-O2 -ffast-math"}, {"", "-Os -fno-tree-vectorize"},
+    {"", "-O3 -march=native"}, {"clang", "-O0"}, {"clang", "-O3 -march=native -ffast-math"},
+};
+#define NFLAGS ((int)(sizeof flagsets / sizeof flagsets[0]))
+
+static char root[PATH_MAX];
+
+/* the repository: the current directory, or above the test program */
+static int find_root(void)
+{
+    struct stat sb;
+    if (stat("libpfmath/generated", &sb) == 0) {
+        snprintf(root, sizeof root, ".");
+        return 0;
+    }
+    char self[PATH_MAX];
+    ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (k <= 0)
+        return -1;
+    self[k] = 0;
+    for (int up = 0; up < 6; up++) {
+        char *s = strrchr(self, '/');
+        if (!s)
+            return -1;
+        *s = 0;
+        char p[PATH_MAX + 32];
+        snprintf(p, sizeof p, "%s/libpfmath/generated", self);
+        if (stat(p, &sb) == 0) {
+            snprintf(root, sizeof root, "%s", self);
+            return 0;
+        }
+    }
+    return -1;
+}
+
+static uint64_t fnv(uint64_t h, int64_t v)
+{
+    uint32_t u = (uint32_t)v;
+    for (int i = 0; i < 4; i++) {
+        h ^= (u >> (8 * i)) & 0xff;
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+static void *build(const char *src, const char *compiler, const char *flags, const char *so)
+{
+    const char *cc = *compiler ? compiler : getenv("CC");
+    char cmd[3 * PATH_MAX];
+    snprintf(cmd, sizeof cmd, "%s -std=c17 -Wall -Wextra -Werror %s -fPIC -shared -o '%s' '%s' 2>&1",
+             cc && *cc ? cc : "cc", flags, so, src);
+    if (system(cmd) != 0) {
+        print_message("failed: %s\n", cmd);
+        return NULL;
+    }
+    void *h = dlopen(so, RTLD_NOW | RTLD_LOCAL);
+    unlink(so);
+    return h;
+}
+
+/* hash of the scalar form's and the array form's full tables */
+static void tables(const pf_fx_fn *fn, int64_t *ys, int64_t *ya, uint64_t *hs, uint64_t *ha)
+{
+    int64_t lo = pf_fmt_min_stored(fn->in), hi = pf_fmt_max_stored(fn->in), n = hi - lo + 1;
+    int64_t *x = malloc(sizeof(int64_t) * (size_t)n);
+    for (int64_t i = 0; i < n; i++) {
+        x[i] = lo + i;
+        ys[i] = pf_fx_call_scalar(fn, x[i]);
+    }
+    pf_fx_call_array(fn, x, ya, (size_t)n);
+    *hs = *ha = 0xcbf29ce484222325ull;
+    for (int64_t i = 0; i < n; i++) {
+        *hs = fnv(*hs, ys[i]);
+        *ha = fnv(*ha, ya[i]);
+    }
+    free(x);
+}
+
+static void test_flags(void **st)
+{
+    (void)st;
+    assert_int_equal(find_root(), 0);
+    int have_clang = system("clang --version >/dev/null 2>&1") == 0;
+    if (!have_clang)
+        print_message("clang not found: gcc builds only\n");
+    char dir[] = "/tmp/pf-fxhash-XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    int bad = 0;
+    for (int i = 0; i < NFNS; i++) {
+        for (int fast = 0; fast <= 1; fast++) {
+            const hfn *F = &fns[i];
+            char src[PATH_MAX + 64], so[96], sym[96], asym[112];
+            snprintf(src, sizeof src, "%s/libpfmath/generated/pf_fx_%s%s.c", root, F->stem, fast ? "_fast" : "");
+            snprintf(sym, sizeof sym, "pf_%s%s", F->stem, fast ? "_fast" : "");
+            snprintf(asym, sizeof asym, "%s_array", sym);
+            uint64_t h0 = 0;
+            int64_t n = pf_fmt_max_stored(F->in) - pf_fmt_min_stored(F->in) + 1;
+            int64_t *ys = malloc(sizeof(int64_t) * (size_t)n), *ya = malloc(sizeof(int64_t) * (size_t)n);
+            for (int k = 0; k < NFLAGS; k++) {
+                if (*flagsets[k][0] && !have_clang)
+                    continue;
+#if defined(__SANITIZE_ADDRESS__)
+                /* the sanitized copy of this test compiles the same code:
+                   only the two ends of the flag range */
+                if (k != 0 && k != 4)
+                    continue;
+#endif
+                snprintf(so, sizeof so, "%s/f%d.so", dir, k);
+                void *h = build(src, flagsets[k][0], flagsets[k][1], so);
+                assert_non_null(h);
+                pf_fx_fn fn = {dlsym(h, sym), dlsym(h, asym), F->in, F->out};
+                assert_non_null(fn.scalar);
+                assert_non_null(fn.array);
+                uint64_t hs, ha;
+                tables(&fn, ys, ya, &hs, &ha);
+                char fl[80];
+                snprintf(fl, sizeof fl, "%s%s%s", flagsets[k][0], *flagsets[k][0] ? " " : "", flagsets[k][1]);
+                print_message("%-24s %-36s scalar %016llx array %016llx\n", sym, fl, (unsigned long long)hs,
+                              (unsigned long long)ha);
+                if (k == 0) {
+                    h0 = hs;
+                    /* within bound (so every build with the same hash is too) */
+                    pf_fx_stats s;
+                    pf_fx_stats_init(&s);
+                    for (int64_t j = 0; j < n; j++)
+                        pf_fx_stats_add(&s, F->f, F->in, F->out, pf_fmt_min_stored(F->in) + j, ys[j]);
+                    if (fast ? s.over_fast != 0 : !(s.max_err < 1)) {
+                        print_message("FAILED: %s -O0 max %.4f LSB\n", sym, s.max_err);
+                        bad++;
+                    }
+                    if (F->f == PF_SQRT && !fast) {
+                        uint64_t hr = 0xcbf29ce484222325ull;
+                        for (int64_t j = 0; j < n; j++)
+                            hr = fnv(hr, pf_fx_sqrt(pf_fmt_min_stored(F->in) + j, F->in, F->out));
+                        print_message("%-24s %-36s scalar %016llx\n", sym, "pffixed.h pf_fx_sqrt", (unsigned long long)hr);
+                        if (hr != hs) {
+                            print_message("FAILED: %s is not the correctly rounded table\n", sym);
+                            bad++;
+                        }
+                    }
+                }
+                if (hs != h0 || ha != h0) {
+                    print_message("FAILED: %s with %s differs from -O0\n", sym, fl);
+                    bad++;
+                }
+                dlclose(h);
+            }
+            free(ys);
+            free(ya);
+        }
+    }
+    rmdir(dir);
+    assert_int_equal(bad, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_flags),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

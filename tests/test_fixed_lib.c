@@ -1,0 +1,171 @@
+/* The library's default fixed-point set (libpfmath/pfmath_fixed.h): every
+ * 16-bit function over all 2^16 inputs, the Q16.16 ones over every input
+ * within 2^16 of 0 and a seeded sample (all 2^32: `make sweep`), against
+ * MPFR; scalar and array forms agree; the defined saturations; exact
+ * values (powers of two, perfect squares, sin 0, cos 0); the exact sqrt is
+ * pffixed.h's correctly rounded pf_fx_sqrt; sin is odd and cos even. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "pffixed.h"
+#include "pfmath_fixed.h"
+#include "sweep_fixed.h"
+
+#include <string.h>
+
+static void *vp(void (*f)(void))
+{
+    void *v;
+    memcpy(&v, &f, sizeof v);
+    return v;
+}
+
+typedef struct {
+    const char *name;
+    pf_func f;
+    void (*scalar)(void), (*array)(void);
+    pf_fmt in, out;
+    int exact;
+} lib_fn;
+
+#define Q(e) {1, 15, e}
+#define UQ(e) {0, 16, e}
+#define Q16 {1, 31, 16}
+#define ROW(nm, fn, i, o)                                                                                  \
+    {#nm, fn, (void (*)(void))nm, (void (*)(void))nm##_array, i, o, 1},                                  \
+    {#nm "_fast", fn, (void (*)(void))nm##_fast, (void (*)(void))nm##_fast_array, i, o, 0}
+
+static const lib_fn fns[] = {
+    ROW(pf_sin_q12_q14, PF_SIN, Q(12), Q(14)),     ROW(pf_cos_q12_q14, PF_COS, Q(12), Q(14)),
+    ROW(pf_exp_q11_uq8, PF_EXP, Q(11), UQ(8)),     ROW(pf_exp2_q11_uq8, PF_EXP2, Q(11), UQ(8)),
+    ROW(pf_log_uq8_q11, PF_LOG, UQ(8), Q(11)),     ROW(pf_log2_uq8_q11, PF_LOG2, UQ(8), Q(11)),
+    ROW(pf_sqrt_uq8_uq12, PF_SQRT, UQ(8), UQ(12)), ROW(pf_sin_q16, PF_SIN, Q16, Q16),
+    ROW(pf_cos_q16, PF_COS, Q16, Q16),             ROW(pf_exp_q16, PF_EXP, Q16, Q16),
+    ROW(pf_exp2_q16, PF_EXP2, Q16, Q16),           ROW(pf_log_q16, PF_LOG, Q16, Q16),
+    ROW(pf_log2_q16, PF_LOG2, Q16, Q16),           ROW(pf_sqrt_q16, PF_SQRT, Q16, Q16),
+};
+#define NFNS ((int)(sizeof fns / sizeof fns[0]))
+
+static pf_fx_fn fx(const lib_fn *l)
+{
+    pf_fx_fn f = {vp(l->scalar), vp(l->array), l->in, l->out};
+    return f;
+}
+
+static void test_sweeps(void **st)
+{
+    (void)st;
+    int bad = 0;
+    for (int i = 0; i < NFNS; i++) {
+        const lib_fn *l = &fns[i];
+        pf_fx_fn fn = fx(l);
+        pf_fx_stats s;
+        pf_fx_stats_init(&s);
+        int64_t lo = pf_fmt_min_stored(l->in), hi = pf_fmt_max_stored(l->in);
+        char title[200];
+        if (pf_fmt_storage_bits(l->in) <= 16) {
+            pf_fx_sweep_range(&s, l->f, &fn, lo, hi, 1, 0);
+            snprintf(title, sizeof title, "%s: every input", l->name);
+        } else {
+            pf_fx_sweep_range(&s, l->f, &fn, -65536, 65536, 1, 0);
+            pf_fx_sweep_random(&s, l->f, &fn, 0x5eed + (uint64_t)i, 1u << 18);
+            snprintf(title, sizeof title, "%s: |x| <= 2^16 and 2^18 random inputs", l->name);
+        }
+        pf_fx_stats_print(stdout, title, l->f, l->in, l->out, &s, !l->exact);
+        int ok = s.mismatch == 0 && (l->exact ? s.max_err < 1.0 : s.over_fast == 0);
+        if (!ok) {
+            print_message("FAILED: %s\n", l->name);
+            bad++;
+        }
+    }
+    assert_int_equal(bad, 0);
+}
+
+static void test_defined_values(void **st)
+{
+    (void)st;
+    /* saturation: exp above ln 256 is the max of unsigned fixed<16,8> */
+    assert_int_equal(pf_exp_q11_uq8(32767), 65535);
+    assert_int_equal(pf_exp_q11_uq8_fast(32767), 65535);
+    assert_int_equal(pf_exp2_q11_uq8(8 << 11), 65535);
+    assert_int_equal(pf_exp_q16(INT32_MAX), INT32_MAX);
+    assert_int_equal(pf_exp2_q16(15 << 16), INT32_MAX);
+    /* and underflow is 0 */
+    assert_int_equal(pf_exp_q11_uq8(-32768), 0);
+    assert_int_equal(pf_exp_q16(INT32_MIN), 0);
+    /* log(0), log(negative): the most negative output */
+    assert_int_equal(pf_log_uq8_q11(0), INT16_MIN);
+    assert_int_equal(pf_log2_uq8_q11_fast(0), INT16_MIN);
+    for (int32_t x = -5; x <= 0; x++) {
+        assert_int_equal(pf_log_q16(x), INT32_MIN);
+        assert_int_equal(pf_log2_q16(x), INT32_MIN);
+        assert_int_equal(pf_log_q16_fast(x), INT32_MIN);
+        assert_int_equal(pf_sqrt_q16(x), 0); /* sqrt of x <= 0: 0 */
+        assert_int_equal(pf_sqrt_q16_fast(x), 0);
+    }
+    assert_int_equal(pf_log_q16(INT32_MIN), INT32_MIN);
+    assert_int_equal(pf_sqrt_q16(INT32_MIN), 0);
+    /* exact values: powers of two through exp2 and log2, sin 0, cos 0 */
+    for (int k = -8; k <= 7; k++) {
+        assert_int_equal(pf_exp2_q11_uq8((int16_t)(k * 2048)), 256 >> (k < 0 ? -k : 0) << (k > 0 ? k : 0));
+        assert_int_equal(pf_log2_uq8_q11((uint16_t)(256u << (k + 8) >> 8)), k * 2048);
+    }
+    for (int k = -16; k <= 14; k++) {
+        assert_int_equal(pf_exp2_q16(k * 65536), k >= -16 ? (int32_t)(((int64_t)65536 << 16 >> 16 << (k + 16)) >> 16) : 0);
+        assert_int_equal(pf_log2_q16((int32_t)((int64_t)65536 << (k + 16) >> 16)), k * 65536);
+    }
+    assert_int_equal(pf_sin_q12_q14(0), 0);
+    assert_int_equal(pf_cos_q12_q14(0), 16384);
+    assert_int_equal(pf_sin_q16(0), 0);
+    assert_int_equal(pf_cos_q16(0), 65536);
+    assert_int_equal(pf_exp_q16(0), 65536);
+    assert_int_equal(pf_log_q16(65536), 0);
+    /* perfect squares: sqrt(k^2) = k */
+    for (int k = 0; k < 16; k++)
+        assert_int_equal(pf_sqrt_uq8_uq12((uint16_t)(k * k * 256)), k * 4096);
+    for (int k = 0; k < 181; k++)
+        assert_int_equal(pf_sqrt_q16(k * k * 65536), k * 65536);
+}
+
+static void test_sqrt_correctly_rounded(void **st)
+{
+    (void)st;
+    for (int32_t x = 0; x <= 65535; x++)
+        assert_int_equal(pf_sqrt_uq8_uq12((uint16_t)x), pf_fx_sqrt(x, pf_fmt_make(0, 16, 8), pf_fmt_make(0, 16, 12)));
+    uint64_t s = 12345;
+    for (int i = 0; i < 1 << 20; i++) {
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        int32_t x = (int32_t)(uint32_t)(s >> 32);
+        assert_int_equal(pf_sqrt_q16(x), pf_fx_sqrt(x, pf_fmt_make(1, 31, 16), pf_fmt_make(1, 31, 16)));
+    }
+}
+
+static void test_symmetry(void **st)
+{
+    (void)st;
+    for (int32_t x = -32767; x <= 32767; x++) {
+        assert_int_equal(pf_sin_q12_q14((int16_t)-x), -pf_sin_q12_q14((int16_t)x));
+        assert_int_equal(pf_cos_q12_q14((int16_t)-x), pf_cos_q12_q14((int16_t)x));
+        assert_int_equal(pf_sin_q12_q14_fast((int16_t)-x), -pf_sin_q12_q14_fast((int16_t)x));
+    }
+    uint64_t s = 777;
+    for (int i = 0; i < 1 << 18; i++) {
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        int32_t x = (int32_t)(uint32_t)(s >> 33);
+        assert_int_equal(pf_sin_q16(-x), -pf_sin_q16(x));
+        assert_int_equal(pf_cos_q16(-x), pf_cos_q16(x));
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sweeps),
+        cmocka_unit_test(test_defined_values),
+        cmocka_unit_test(test_sqrt_correctly_rounded),
+        cmocka_unit_test(test_symmetry),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,252 @@
+/* pfmathgen with fixed-point types, through its command line: the issue's
+ * sin example emits integer-only C with the stored-integer signature and the
+ * provenance block, is exhaustively within 1 LSB of MPFR, and is
+ * deterministic; bad types and pairs are one-line errors (exit 2) that
+ * write nothing; the fast variant is cheaper and within its bound. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "compile.h"
+#include "sweep_fixed.h"
+#include "testutil.h"
+
+#include <dlfcn.h>
+#include <sys/stat.h>
+
+static tu_run_result R;
+static char dir[64];
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *s = malloc((size_t)n + 1);
+    size_t got = fread(s, 1, (size_t)n, f);
+    s[got] = 0;
+    fclose(f);
+    return s;
+}
+
+/* the code without its comments */
+static char *strip_comments(const char *s)
+{
+    char *o = malloc(strlen(s) + 1), *q = o;
+    while (*s) {
+        if (s[0] == '/' && s[1] == '*') {
+            const char *e = strstr(s + 2, "*/");
+            s = e ? e + 2 : s + strlen(s);
+        } else if (s[0] == '/' && s[1] == '/') {
+            while (*s && *s != '\n')
+                s++;
+        } else {
+            *q++ = *s++;
+        }
+    }
+    *q = 0;
+    return o;
+}
+
+static int run_gen(const char *args, const char *out)
+{
+    char a[1024];
+    snprintf(a, sizeof a, "%s -o %s", args, out);
+    tu_run("pfmathgen", a, &R);
+    if (R.status != 0)
+        print_message("pfmathgen %s -> %d: %s\n", a, R.status, R.err);
+    return R.status;
+}
+
+static int setup(void **st)
+{
+    (void)st;
+    snprintf(dir, sizeof dir, "/tmp/pf-fxgen-XXXXXX");
+    return mkdtemp(dir) ? 0 : -1;
+}
+
+static int teardown(void **st)
+{
+    (void)st;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static void test_sin_example(void **st)
+{
+    (void)st;
+    char out[128];
+    snprintf(out, sizeof out, "%s/my_sin.c", dir);
+    const char *args = "--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --variant exact --name my_sin";
+    assert_int_equal(run_gen(args, out), 0);
+    char *src = slurp(out);
+    assert_non_null(src);
+    /* integer-only C: no floating-point type, no <math.h>, in the code */
+    char *code = strip_comments(src);
+    assert_null(strstr(code, "float"));
+    assert_null(strstr(code, "double"));
+    assert_null(strstr(code, "math.h"));
+    assert_non_null(strstr(code, "int16_t my_sin(int16_t x)"));
+    assert_non_null(strstr(code, "void my_sin_array(const int16_t *restrict x, int16_t *restrict y, size_t n)"));
+    free(code);
+    /* provenance: the regenerating command, types, method, the sweep */
+    char cmdline[512];
+    snprintf(cmdline, sizeof cmdline, " * Regenerate:  pfmathgen %s -o %s\n", args, out);
+    assert_non_null(strstr(src, cmdline));
+    assert_non_null(strstr(src, "sin for fixed<15,12> -> fixed<15,14> (int16_t -> int16_t), exact variant"));
+    assert_non_null(strstr(src, " * Domain:      sin(pi/2 t) on t in [0, 1]"));
+    assert_non_null(strstr(src, " * Method:      minimax absolute error"));
+    assert_non_null(strstr(src, " * Constraints: "));
+    assert_non_null(strstr(src, " * Formats:     "));
+    assert_non_null(strstr(src, " * Sweep:       max 0."));
+    assert_non_null(strstr(src, "exhaustive: all"));
+    /* the emitted code, compiled here, against MPFR on every input */
+    char err[512];
+    void *h = pf_compile_load_file(out, err, sizeof err);
+    if (!h)
+        print_message("%s\n", err);
+    assert_non_null(h);
+    pf_fx_fn fn = {dlsym(h, "my_sin"), dlsym(h, "my_sin_array"), pf_fmt_make(1, 15, 12), pf_fmt_make(1, 15, 14)};
+    assert_non_null(fn.scalar);
+    assert_non_null(fn.array);
+    pf_fx_stats s;
+    pf_fx_stats_init(&s);
+    pf_fx_sweep_range(&s, PF_SIN, &fn, -32768, 32767, 1, 0);
+    pf_fx_stats_print(stdout, "my_sin, every input", PF_SIN, fn.in, fn.out, &s, 0);
+    assert_int_equal(s.count, 65536);
+    assert_true(s.max_err < 1.0);
+    assert_int_equal(s.mismatch, 0);
+    /* a few values by hand: sin(0) = 0, sin(pi/2) = 1 (x = 6434 ~ 1.5708) */
+    int16_t (*f)(int16_t);
+    *(void **)&f = fn.scalar;
+    assert_int_equal(f(0), 0);
+    assert_int_equal(f(6434), 16384);
+    assert_int_equal(f(-6434), -16384);
+    dlclose(h);
+    /* pfsweep --type/--out-type on the same file: exhaustive, same figures */
+    char a[512];
+    snprintf(a, sizeof a, "--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --source %s --name my_sin --max-lsb 1",
+             out);
+    tu_run("pfsweep", a, &R);
+    print_message("%s", R.out);
+    assert_int_equal(R.status, 0);
+    assert_non_null(strstr(R.out, "count=65536 over_fast=0 mismatch=0"));
+    char tot[64];
+    snprintf(tot, sizeof tot, "TOTAL max_lsb=%.6f", s.max_err);
+    assert_non_null(strstr(R.out, tot));
+    assert_non_null(strstr(R.out, "histogram"));
+    /* a bound it does not meet: status 1 */
+    snprintf(a, sizeof a, "--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --source %s --name my_sin --max-lsb 0.5",
+             out);
+    tu_run("pfsweep", a, &R);
+    assert_int_equal(R.status, 1);
+    /* bad usage: status 2 */
+    tu_run("pfsweep", "--func sin --type 'fixed<15,12' --source x.c", &R);
+    assert_int_equal(R.status, 2);
+    tu_run("pfsweep", "--func tan --type 'fixed<15,12>'", &R);
+    assert_int_equal(R.status, 2);
+    free(src);
+}
+
+static void test_deterministic(void **st)
+{
+    (void)st;
+    char out[128];
+    snprintf(out, sizeof out, "%s/det.c", dir);
+    const char *args = "--func exp --type 'fixed<15,11>' --out-type 'ufixed<16,8>'";
+    assert_int_equal(run_gen(args, out), 0);
+    char *a = slurp(out);
+    assert_int_equal(run_gen(args, out), 0);
+    char *b = slurp(out);
+    assert_non_null(a);
+    assert_non_null(b);
+    assert_string_equal(a, b);
+    /* the default name and the unsigned output */
+    assert_non_null(strstr(a, "uint16_t pf_exp_q11_uq8(int16_t x)"));
+    free(a);
+    free(b);
+}
+
+static void expect_error(const char *args)
+{
+    char a[1024], out[128];
+    snprintf(out, sizeof out, "%s/bad.c", dir);
+    unlink(out);
+    snprintf(a, sizeof a, "%s -o %s", args, out);
+    tu_run("pfmathgen", a, &R);
+    print_message("pfmathgen %s -> %d: %s", args, R.status, R.err);
+    assert_int_equal(R.status, 2);
+    assert_int_equal(tu_count_lines(R.err), 1);
+    assert_non_null(strstr(R.err, "pfmathgen: "));
+    struct stat sb;
+    assert_int_not_equal(stat(out, &sb), 0);
+    assert_int_equal(R.out[0], 0);
+}
+
+static void test_bad_types_and_pairs(void **st)
+{
+    (void)st;
+    expect_error("--func sin --type 'fixed<15>'");
+    expect_error("--func sin --type 'fixed<15,12' --out-type 'fixed<15,14>'");
+    expect_error("--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>,'");
+    expect_error("--func sin --type 'fixed<40,20>'");           /* 64-bit storage */
+    expect_error("--func sin --type 'fixed<15,12>' --out-type 'ufixed<40,14>'");
+    expect_error("--func sin --type float --out-type 'fixed<15,14>'"); /* float and fixed */
+    expect_error("--func sin --type 'fixed<15,12>' --out-type float");
+    expect_error("--func sin --type 'fixed<15,12>' --out-type 'ufixed<16,14>'"); /* sin < 0 */
+    expect_error("--func cos --type 'fixed<15,12>' --out-type 'unsigned fixed<16,14>'");
+    expect_error("--func log --type 'ufixed<16,8>' --out-type 'ufixed<16,11>'"); /* log < 0 */
+    expect_error("--func log2 --type 'ufixed<16,8>' --out-type 'ufixed<16,11>'");
+    expect_error("--func tan --type 'fixed<15,12>'");            /* no fixed-point tan */
+    expect_error("--func sin --type 'fixed<15,12>' --target 'fixed<15,14>'");
+    expect_error("--func sin --type 'fixed<15,12>' --variant quick");
+    expect_error("--func sin --type 'fixed<15,12>' --order 0");
+    expect_error("--func sin --type 'fixed<15,12>' --name 9lives");
+    expect_error("--type 'fixed<15,12>'");
+    /* an order below what the exact bound needs */
+    expect_error("--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --order 3");
+}
+
+static int json_int(const char *s, const char *key)
+{
+    const char *p = strstr(s, key);
+    return p ? atoi(p + strlen(key)) : -1;
+}
+
+static void test_fast_variant(void **st)
+{
+    (void)st;
+    const char *types[] = {"--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>'",
+                           "--func log2 --type 'ufixed<16,8>' --out-type 'fixed<15,11>'"};
+    for (int i = 0; i < 2; i++) {
+        char a[512];
+        snprintf(a, sizeof a, "%s --variant fast --json", types[i]);
+        tu_run("pfmathgen", a, &R);
+        assert_int_equal(R.status, 0);
+        int of = json_int(R.out, "\"order\": ");
+        assert_int_equal(json_int(R.out, "\"over_fast\": "), 0);
+        assert_non_null(strstr(R.out, "\"exhaustive\": true"));
+        snprintf(a, sizeof a, "%s --json", types[i]);
+        tu_run("pfmathgen", a, &R);
+        assert_int_equal(R.status, 0);
+        int oe = json_int(R.out, "\"order\": ");
+        print_message("%s: fast order %d, exact order %d\n", types[i], of, oe);
+        assert_true(of > 0 && of < oe);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sin_example),
+        cmocka_unit_test(test_deterministic),
+        cmocka_unit_test(test_bad_types_and_pairs),
+        cmocka_unit_test(test_fast_variant),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}

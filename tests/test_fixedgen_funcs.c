@@ -1,0 +1,148 @@
+/* Every fixed-point function, exact and fast, generated in-process for the
+ * library's 16-bit types and for odd ones (8-bit, unsigned inputs, negative
+ * and large exponents, integer inputs, signed inputs to log and sqrt,
+ * outputs that saturate), compiled here and swept over EVERY input against
+ * MPFR: exact below 1 LSB, fast within max(2^-10 relative, 4 LSB), never
+ * above the generator's own error bound, scalar and array forms equal.
+ * The exact sqrt is also compared with pffixed.h's correctly rounded
+ * pf_fx_sqrt (an independent implementation) on every input. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "compile.h"
+#include "fixed_internal.h"
+#include "fixedgen.h"
+#include "pffixed.h"
+
+#include <dlfcn.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    const char *func, *in, *out;
+    int exact;
+} fx_case;
+
+static const fx_case cases[] = {
+    /* the library's 16-bit types */
+    {"sin", "fixed<15,12>", "fixed<15,14>", 1},   {"sin", "fixed<15,12>", "fixed<15,14>", 0},
+    {"cos", "fixed<15,12>", "fixed<15,14>", 1},   {"cos", "fixed<15,12>", "fixed<15,14>", 0},
+    {"exp", "fixed<15,11>", "ufixed<16,8>", 1},   {"exp", "fixed<15,11>", "ufixed<16,8>", 0},
+    {"exp2", "fixed<15,11>", "ufixed<16,8>", 1},  {"exp2", "fixed<15,11>", "ufixed<16,8>", 0},
+    {"log", "ufixed<16,8>", "fixed<15,11>", 1},   {"log", "ufixed<16,8>", "fixed<15,11>", 0},
+    {"log2", "ufixed<16,8>", "fixed<15,11>", 1},  {"log2", "ufixed<16,8>", "fixed<15,11>", 0},
+    {"sqrt", "ufixed<16,8>", "ufixed<16,12>", 1}, {"sqrt", "ufixed<16,8>", "ufixed<16,12>", 0},
+    /* odd ones */
+    {"sin", "fixed<7,4>", "fixed<7,6>", 1},       /* 8-bit */
+    {"sin", "fixed<7,4>", "fixed<7,6>", 0},
+    {"cos", "ufixed<16,12>", "fixed<15,14>", 1},  /* unsigned input */
+    {"sin", "fixed<15,-2>", "fixed<15,14>", 1},   /* x multiples of 4, up to 2^17 */
+    {"cos", "fixed<15,15>", "fixed<15,15>", 1},   /* cos(0) = 1 saturates */
+    {"sin", "fixed<15,4>", "fixed<10,9>", 1},     /* 16-bit storage, 11 bits used */
+    {"exp2", "fixed<15,8>", "fixed<15,4>", 1},    /* signed output */
+    {"exp2", "fixed<15,8>", "fixed<15,4>", 0},
+    {"exp", "ufixed<8,4>", "ufixed<16,4>", 1},    /* 8-bit input */
+    {"exp2", "fixed<7,0>", "ufixed<16,0>", 1},    /* integer input */
+    {"exp", "fixed<15,12>", "ufixed<16,16>", 1},  /* saturates from x = 0 */
+    {"exp", "fixed<15,14>", "fixed<31,16>", 1},   /* 16-bit in, 32-bit out */
+    {"log", "fixed<15,4>", "fixed<15,10>", 1},    /* negative inputs: most negative */
+    {"log", "fixed<15,4>", "fixed<15,10>", 0},
+    {"log2", "ufixed<16,16>", "fixed<15,10>", 1}, /* inputs below 1 */
+    {"log", "ufixed<8,0>", "fixed<7,4>", 1},      /* 8-bit */
+    {"log2", "ufixed<16,0>", "fixed<31,24>", 1},  /* 32-bit output */
+    {"sqrt", "fixed<15,0>", "ufixed<16,8>", 1},   /* negative inputs: 0 */
+    {"sqrt", "fixed<15,0>", "ufixed<16,8>", 0},
+    {"sqrt", "ufixed<16,-2>", "ufixed<16,4>", 1}, /* negative exponent */
+    {"sqrt", "ufixed<16,16>", "ufixed<16,16>", 1},
+    {"sqrt", "ufixed<8,3>", "ufixed<8,6>", 1},
+    {"sqrt", "ufixed<16,2>", "ufixed<16,0>", 1},  /* exact ties: sqrt(odd^2 / 4) */
+};
+#define NCASES ((int)(sizeof cases / sizeof cases[0]))
+
+static int run_case(const fx_case *c, double *max_err)
+{
+    fx_gen *G = calloc(1, sizeof *G);
+    char err[800];
+    assert_non_null(G);
+    G->fn = fx_func_find(c->func);
+    assert_non_null(G->fn);
+    assert_int_equal(pf_type_parse(c->in, &G->in, err, sizeof err), 0);
+    assert_int_equal(pf_type_parse(c->out, &G->out, err, sizeof err), 0);
+    pf_type_format(&G->in, G->in_text, sizeof G->in_text);
+    pf_type_format(&G->out, G->out_text, sizeof G->out_text);
+    G->it = pf_type_ctype(&G->in);
+    G->ot = pf_type_ctype(&G->out);
+    G->exact = c->exact;
+    G->minimax = -1;
+    G->command = "test_fixedgen_funcs";
+    pf_fixed_default_name(c->func, &G->in, &G->out, !c->exact, G->name, sizeof G->name);
+    int rc = fx_generate(G, 0, err, sizeof err);
+    if (rc != 0)
+        print_message("%s %s -> %s: %s\n", c->func, c->in, c->out, err);
+    assert_int_equal(rc, 0);
+    size_t len;
+    char *src = fx_emit(G, &len);
+    void *h = pf_compile_load(src, len, err, sizeof err);
+    if (!h)
+        print_message("%s\n", err);
+    assert_non_null(h);
+    char an[160];
+    snprintf(an, sizeof an, "%s_array", G->name);
+    pf_fx_fn fn = {dlsym(h, G->name), dlsym(h, an), pf_type_to_fmt(&G->in), pf_type_to_fmt(&G->out)};
+    assert_non_null(fn.scalar);
+    assert_non_null(fn.array);
+    pf_fx_stats s;
+    pf_fx_stats_init(&s);
+    int64_t lo = pf_type_min_stored(&G->in), hi = pf_type_max_stored(&G->in);
+    pf_fx_sweep_range(&s, G->fn->ref, &fn, lo, hi, 1, 0);
+    char title[300];
+    snprintf(title, sizeof title, "%s %s: %s -> %s, order %d, %s words, bound %.4f LSB", G->name,
+             c->exact ? "exact" : "fast", c->in, c->out, G->order, G->wt, G->bound_lsb);
+    pf_fx_stats_print(stdout, title, G->fn->ref, fn.in, fn.out, &s, !c->exact);
+    int ok = s.count == (uint64_t)(hi - lo + 1) && s.mismatch == 0 && s.max_err <= G->bound_lsb + 1e-9;
+    if (c->exact)
+        ok = ok && s.max_err < 1.0;
+    else
+        ok = ok && s.over_fast == 0;
+    if (c->exact && !strcmp(c->func, "sqrt")) {
+        /* correctly rounded (RNE, saturating): equal to pffixed.h's */
+        uint64_t diff = 0;
+        for (int64_t x = lo; x <= hi; x++)
+            diff += pf_fx_call_scalar(&fn, x) != pf_fx_sqrt(x, fn.in, fn.out);
+        print_message("  sqrt: %llu inputs differ from pf_fx_sqrt\n", (unsigned long long)diff);
+        ok = ok && diff == 0;
+    }
+    *max_err = s.max_err;
+    dlclose(h);
+    free(src);
+    free(G);
+    return ok;
+}
+
+static void test_all_cases(void **st)
+{
+    (void)st;
+    int bad = 0, step = 1;
+#if defined(__SANITIZE_ADDRESS__)
+    step = 4; /* under the sanitizers, a quarter of the cases (every function still) */
+#endif
+    for (int i = 0; i < NCASES; i += step) {
+        double m;
+        if (!run_case(&cases[i], &m)) {
+            print_message("FAILED: %s %s %s -> %s (max %.4f LSB)\n", cases[i].func,
+                          cases[i].exact ? "exact" : "fast", cases[i].in, cases[i].out, m);
+            bad++;
+        }
+    }
+    assert_int_equal(bad, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_all_cases),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
