@@ -1,6 +1,263 @@
-/* Function table rows for the trig family (see gen/funcs.h). */
+/* Function table rows for the trig family: sin, cos, tan (see gen/funcs.h).
+ *
+ * Two polynomials serve the three functions:
+ *   sin(t) on [0, pi/2], odd: sin and cos.  The argument is reduced by pi,
+ *     x + s pi/2 = k pi + r, r in [-pi/2, pi/2], s = 0 (sin) or 1 (cos), so
+ *     sin(x) = (-1)^k sin(r) and cos(x) = sin(x + pi/2) = (-1)^k sin(r).
+ *     One odd polynomial on [-pi/2, pi/2] then covers both: no cos
+ *     polynomial and no quadrant select between two polynomials.
+ *   tan(t) on [0, pi/4], odd: x = n pi/2 + r, r in [-pi/4, pi/4],
+ *     tan(x) = tan(r) (n even) or -1/tan(r) = -cot(r) (n odd).
+ * Why this is enough: near the ends of [-pi/2, pi/2] sin is flat (slope
+ * cos r -> 0), so the error of the reduction does not matter there; near
+ * r = 0 the relative error of r is that of the result, and r is exact to
+ * far more bits than float needs (below).
+ *
+ * Exact variants (double evaluation, float coefficients):
+ *   |x| < 2^20: Cody-Waite, r = (|x| - m P1) - m P2 in double with
+ *     pi/2 = P1 + P2 + O(2^-86), P1 of 33 bits so m P1 and |x| - m P1 are
+ *     exact for |m| < 2^20; the error |m| 2^-86 < 2^-66 is below 2^-38 of the
+ *     smallest |r| of any float there (2^-28.5 in units of pi/2, found by an
+ *     exhaustive search: docs/trig.md).
+ *   |x| >= 2^20 (every float up to 3.4e38): Payne-Hanek, |x| * 2/pi mod 4 in
+ *     64-bit fixed point (62 fraction bits) from a 96-bit window of the bits
+ *     of 2/pi selected by the exponent (3 words of a 40-word table); the
+ *     error, under 2 units of 2^-62, is below 2^-31 of the smallest |r| of
+ *     any float (2^-29.86 in units of pi/2, at 0x1.f37c8ap+95).
+ *   The bits of 2/pi and the split of pi/2 come from MPFR here (the `extra`
+ *   callbacks), never typed by hand.
+ * Fast variants (float evaluation): Cody-Waite in float, pi/2 split into
+ *   six parts, five of 7 bits so that m * part is exact for |m| < 2^17 and the
+ *   chain of subtractions is exact while r is small; the last carries the
+ *   rest.  Within |x| <= 2^17 the reduction error is below 2^-44 absolute,
+ *   2^-16 relative to the smallest |r| of any float there (2^-27.9, next to a
+ *   multiple of pi/2), so the relative error stays the polynomial's even at
+ *   the zeros of sin, cos, tan and the poles of tan.  Beyond 2^17, r is
+ *   clamped, so the result stays finite (and within [-1, 1] for sin, cos). */
 #include "funcs.h"
 
+#include <stdio.h>
+#include <stdint.h>
+#include <string.h>
+
+/* ---- fit targets, in the fit variable t ---- */
+static void g_sin(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_sin(y, t, MPFR_RNDN);
+}
+
+static void g_tan(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_tan(y, t, MPFR_RNDN);
+}
+
+/* ---- constants of the reductions, computed with MPFR ---- */
+#define TRIG_PREC 1024
+
+/* v = pi/2 */
+static void pio2(mpfr_t v)
+{
+    mpfr_const_pi(v, MPFR_RNDN);
+    mpfr_div_2ui(v, v, 1, MPFR_RNDN);
+}
+
+/* Cody-Waite split: part[i] = the next `bits[i]` significant bits of pi/2
+   (truncated toward the remainder, so every part but the last is exactly a
+   prefix of pi/2's binary expansion), the last part rounded to prec bits. */
+static void pio2_split(int nparts, const int *bits, int prec, double *part)
+{
+    mpfr_t rest, p;
+    mpfr_init2(rest, TRIG_PREC);
+    mpfr_init2(p, TRIG_PREC);
+    pio2(rest);
+    for (int i = 0; i < nparts; i++) {
+        int b = i < nparts - 1 ? bits[i] : prec;
+        mpfr_set_prec(p, b);
+        mpfr_set(p, rest, i < nparts - 1 ? MPFR_RNDZ : MPFR_RNDN);
+        part[i] = mpfr_get_d(p, MPFR_RNDN); /* exact: b <= 53 */
+        mpfr_sub(rest, rest, p, MPFR_RNDN); /* exact at TRIG_PREC bits */
+    }
+    mpfr_clears(rest, p, (mpfr_ptr)0);
+}
+
+/* 2/pi * 2^scale rounded to prec bits */
+static double twoopi(int prec, int scale)
+{
+    mpfr_t v;
+    mpfr_init2(v, TRIG_PREC);
+    mpfr_const_pi(v, MPFR_RNDN);
+    mpfr_ui_div(v, 2, v, MPFR_RNDN);
+    mpfr_mul_2si(v, v, scale, MPFR_RNDN);
+    mpfr_prec_round(v, prec, MPFR_RNDN);
+    double d = mpfr_get_d(v, MPFR_RNDN);
+    mpfr_clear(v);
+    return d;
+}
+
+/* pi/2 * 2^scale rounded to double */
+static double pio2_scaled(int scale)
+{
+    mpfr_t v;
+    mpfr_init2(v, TRIG_PREC);
+    pio2(v);
+    mpfr_mul_2si(v, v, scale, MPFR_RNDN);
+    double d = mpfr_get_d(v, MPFR_RNDN);
+    mpfr_clear(v);
+    return d;
+}
+
+/* Bit i >= 1 of the binary expansion 2/pi = sum b_i 2^-i (b_i = 0 for i <= 0). */
+#define PH_WORDS 40
+static void twoopi_words(uint32_t *w)
+{
+    enum { NB = 8 * PH_WORDS + 64 };
+    static unsigned char b[NB + 1];
+    mpfr_t v;
+    mpfr_init2(v, TRIG_PREC);
+    mpfr_const_pi(v, MPFR_RNDN);
+    mpfr_ui_div(v, 2, v, MPFR_RNDN); /* 2/pi < 1: b_0 = 0 */
+    for (int i = 1; i <= NB; i++) {
+        mpfr_mul_2ui(v, v, 1, MPFR_RNDN); /* exact */
+        b[i] = mpfr_cmp_ui(v, 1) >= 0;
+        if (b[i])
+            mpfr_sub_ui(v, v, 1, MPFR_RNDN); /* exact */
+    }
+    mpfr_clear(v);
+    /* word j holds b_i for i = 8j - 151 .. 8j - 120, most significant first:
+       for a float of biased exponent e the template takes words e>>3, +4, +8
+       and shifts the significand left by e&7 (see sin_pi.c.in) */
+    for (int j = 0; j < PH_WORDS; j++) {
+        uint32_t x = 0;
+        for (int k = 0; k < 32; k++) {
+            int i = 8 * j - 151 + k;
+            x = x << 1 | (uint32_t)(i >= 1 ? b[i] : 0);
+        }
+        w[j] = x;
+    }
+}
+
+/* Cody-Waite bound of the exact variants: |x| < 2^CW_LOG2, |m| < 2^CW_LOG2 */
+#define CW_LOG2 20
+
+static int extra_trig_double(char *buf, size_t n)
+{
+    double part[2];
+    int bits[1] = {53 - CW_LOG2};
+    pio2_split(2, bits, 53, part);
+    uint32_t w[PH_WORDS];
+    twoopi_words(w);
+    int len = snprintf(
+        buf, n,
+        "/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c).\n"
+        "   Cody-Waite for |x| < 2^%d: pi/2 = PIO2_1 + PIO2_2 + O(2^-86), PIO2_1 of %d\n"
+        "   significant bits so m * PIO2_1 is exact for |m| < 2^%d. */\n"
+        "static const double PF_TRIG_2OPI = %a;          /* 2/pi */\n"
+        "static const double PF_TRIG_PIO2_1 = %a;\n"
+        "static const double PF_TRIG_PIO2_2 = %a;\n"
+        "static const uint32_t PF_TRIG_CW_LIMIT = 0x%08xu; /* bits of 2^%d */\n"
+        "/* Payne-Hanek for larger |x|: the result r = f * PIO2_2M62, f the signed\n"
+        "   62-bit fraction of |x| * 2/pi */\n"
+        "static const double PF_TRIG_PIO2_2M62 = %a;     /* pi/2 * 2^-62 */\n"
+        "/* Bits of 2/pi = sum b_i 2^-i: word j holds b_(8j-151) .. b_(8j-120), b_i = 0\n"
+        "   for i < 1.  A float of biased exponent e takes words e>>3, +4, +8: a 96-bit\n"
+        "   window starting 2 bits above the units of |x| * 2/pi. */\n"
+        "static const uint32_t PF_TRIG_2OPI_BITS[%d] = {",
+        CW_LOG2, 53 - CW_LOG2, CW_LOG2, twoopi(53, 0), part[0], part[1],
+        (unsigned)((127 + CW_LOG2) << 23), CW_LOG2, pio2_scaled(-62), PH_WORDS);
+    for (int j = 0; j < PH_WORDS && len >= 0 && (size_t)len < n; j++)
+        len += snprintf(buf + len, n - (size_t)len, "%s0x%08xu,", j % 6 ? " " : "\n    ", w[j]);
+    if (len >= 0 && (size_t)len < n)
+        len += snprintf(buf + len, n - (size_t)len, "\n};\n\n");
+    return len;
+}
+
+/* Fast variants: pi/2 in float parts of 7 significant bits (|m| < 2^17, so
+   m * part is exact) and a last part of 24 bits.  Six parts leave r within
+   about 2^-44 absolute for |x| <= 2^17, where the smallest |r| of any float is
+   2^-27.9 (next to a multiple of pi/2): r is then right to 2^-16
+   relative, so the result keeps the polynomial's relative error even next to
+   the zeros of sin, cos, tan and the poles of tan.  Three parts would do for
+   2^-20 absolute, but leave the relative error near the zeros unbounded. */
+#define FAST_PARTS 6
+static int extra_trig_float(char *buf, size_t n, int nparts, int rmax_scale)
+{
+    double part[8];
+    int bits[7] = {7, 7, 7, 7, 7, 7, 7};
+    pio2_split(nparts, bits, 24, part);
+    int len = snprintf(buf, n,
+                       "/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c):\n"
+                       "   2/pi rounded to float; pi/2 = sum PF_TRIG_PIO2F[i] (Cody-Waite), each\n"
+                       "   part but the last of 7 significant bits, so m * part is exact for\n"
+                       "   |m| < 2^17; the last part is the rest rounded to float. */\n"
+                       "static const float PF_TRIG_2OPIF = %af;\n"
+                       "#define PF_TRIG_NPARTS %d\n"
+                       "static const float PF_TRIG_PIO2F[PF_TRIG_NPARTS] = {",
+                       twoopi(24, 0), nparts);
+    for (int i = 0; i < nparts && len >= 0 && (size_t)len < n; i++)
+        len += snprintf(buf + len, n - (size_t)len, "%s%af", i ? ", " : "", part[i]);
+    if (len >= 0 && (size_t)len < n)
+        len += snprintf(buf + len, n - (size_t)len,
+                        "};\n/* pi/%d + 1/16: r exceeds the domain's end pi/%d by the rounding of\n"
+                        "   x * 2/pi in float, under 0.02 for |x| <= 2^17 (the polynomial,\n"
+                        "   matched in value and slope there, extends smoothly); beyond 2^17 r is\n"
+                        "   clamped to +-PF_TRIG_RMAX so the result stays finite */\n"
+                        "static const float PF_TRIG_RMAX = %af;\n\n",
+                        2 << -rmax_scale, 2 << -rmax_scale, (double)(float)(pio2_scaled(rmax_scale) + 0.0625));
+    return len;
+}
+
+static int extra_sincos_float(char *buf, size_t n) { return extra_trig_float(buf, n, FAST_PARTS, 0); }
+static int extra_tan_float(char *buf, size_t n) { return extra_trig_float(buf, n, FAST_PARTS, -1); }
+
+/* ---- rows ---- */
+#define PIO2 1.5707963267948966 /* the nearest double to pi/2 (below it) */
+#define PIO4 0.7853981633974483
+
+#define SIN_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 0); sin x = (-1)^k sin r"
+#define COS_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 1); cos x = sin(x + pi/2) = (-1)^k sin r"
+#define TAN_RED "x = n pi/2 + r, r in [-pi/4, pi/4]; tan x = tan r (n even), -1/tan r (n odd)"
+#define RED_EXACT ", Cody-Waite |x| < 2^20, Payne-Hanek beyond"
+#define RED_FAST ", float Cody-Waite (bound for |x| <= 2^17)"
+
+#define CON_SLOPE1 {FIT_CON_DERIV, 0, "p'(0) = 1"}
+#define SIN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO2, "p(pi/2) = 1"}, {FIT_CON_DERIV, PIO2, "p'(pi/2) = 0"}}
+#define TAN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO4, "p(pi/4) = 1"}, {FIT_CON_DERIV, PIO4, "p'(pi/4) = 2"}}
+
+/* exact orders: the smallest odd orders whose float-coefficient polynomial is
+   within 2^-29 relative (then <= 0.5 + 2^-29 2^24 = 0.53 ULP after the final
+   rounding): sin 11 reaches 2^-31.0 (9: only 2^-27.3), tan 15 reaches 2^-29.55
+   (13: only 2^-25.7).  Exhaustive sweeps: docs/trig.md. */
+#define SIN_EXACT_ORDER 11
+#define TAN_EXACT_ORDER 15
+
+#define ROW_SIN_EXACT(fn, phase, red)                                                             \
+    {.func = fn, .reduction = "pi", .variant = "exact", .tmpl = "sin_pi", .arity = 1,             \
+     .reduction_text = red RED_EXACT, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,     \
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
+     .default_order = SIN_EXACT_ORDER, .real = "double", .kscale = phase, .ulp_bound = 1.0,      \
+     .extra = extra_trig_double}
+#define ROW_SIN_FAST(fn, phase, red)                                                              \
+    {.func = fn, .reduction = "pi", .variant = "fast", .tmpl = "sin_pi_fast", .arity = 1,         \
+     .reduction_text = red RED_FAST, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,      \
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = SIN_FAST_CON,                \
+     .default_order = 0, .fast_target = 0x1p-10, .real = "float", .kscale = phase,                \
+     .extra = extra_sincos_float}
+
 const pf_spec pf_specs_trig[] = {
+    ROW_SIN_EXACT("sin", "0", SIN_RED),
+    ROW_SIN_FAST("sin", "0", SIN_RED),
+    ROW_SIN_EXACT("cos", "1", COS_RED),
+    ROW_SIN_FAST("cos", "1", COS_RED),
+    {.func = "tan", .reduction = "pio2", .variant = "exact", .tmpl = "tan_pio2", .arity = 1,
+     .reduction_text = TAN_RED RED_EXACT, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},
+     .default_order = TAN_EXACT_ORDER, .real = "double", .ulp_bound = 1.0,
+     .extra = extra_trig_double},
+    {.func = "tan", .reduction = "pio2", .variant = "fast", .tmpl = "tan_pio2_fast", .arity = 1,
+     .reduction_text = TAN_RED RED_FAST, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = TAN_FAST_CON,
+     .default_order = 0, .fast_target = 0x1p-10, .real = "float", .extra = extra_tan_float},
     {0},
 };

@@ -22,3 +22,5 @@ TESTS += $(BUILD)/tests/test_log
 $(BUILD)/tests/test_log: $(BUILD)/pfmathgen
 TESTS += $(BUILD)/tests/test_sollya
 $(BUILD)/tests/test_sollya: $(BUILD)/pfmathgen
+TESTS += $(BUILD)/tests/test_scene
+$(BUILD)/tests/test_scene: $(BUILD)/pfmathgen

@@ -1,0 +1,12 @@
+# trig family: sin, cos, tan (gen/funcs_trig.c, gen/templates/sin_pi*.c.in,
+# tan_pio2*.c.in).  Library sources libpfmath/generated/pf_{sin,cos,tan}f*.c.
+LIB_GEN += sin:exact sin:fast cos:exact cos:fast tan:exact tan:fast
+
+TESTS += $(BUILD)/tests/test_trig
+$(BUILD)/tests/test_trig: $(BUILD)/pfmathgen
+
+# ns/element of the array forms against glibc (not part of `make test`)
+PROGS += $(BUILD)/bench_trig
+$(BUILD)/bench_trig: tests/bench_trig.c $(BUILD)/libpfmath.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) $< -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lm
