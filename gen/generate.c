@@ -139,8 +139,9 @@ static void emit(sbuf *b, const pf_gen_result *r, const char *command)
     }
     sb_printf(b, " */\n"
                  "/* no FP-exception semantics are promised, and dropping them lets GCC\n"
-                 "   if-convert the special-case selects so the array loop vectorizes */\n"
-                 "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC optimize(\"no-trapping-math\")\n#endif\n"
+                 "   if-convert the special-case selects so the array loop vectorizes;\n"
+                 "   no FMA contraction, so every x86-64 level gives the same bits */\n"
+                 "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC optimize(\"no-trapping-math\", \"fp-contract=off\")\n#endif\n"
                  "#include <math.h>\n#include <stddef.h>\n#include <stdint.h>\n#include <string.h>\n\n");
     sb_put(b, template_text("poly_float.h"), strlen(template_text("poly_float.h")));
     int k0 = s->parity == FIT_PARITY_ODD ? 1 : 0, dk = s->parity == FIT_PARITY_NONE ? 1 : 2;
@@ -286,6 +287,7 @@ int pf_generate(const pf_gen_req *rq, pf_gen_result *r, char *err, size_t errlen
             return -1;
         }
         r->below_err = prev;
+        r->searched = 1;
     }
     if (r->minimax) {
         fit_poly tmp;
@@ -335,7 +337,7 @@ void pf_report_text(FILE *o, const pf_gen_result *r)
     fprintf(o, "%s: %s, %s variant, float\n", r->name, s->func, s->variant);
     fprintf(o, "  reduction    %s\n", s->reduction_text);
     fprintf(o, "  domain       %s for t in [%a, %a] = [%.9g, %.9g]\n", s->target_text, s->a, s->b, s->a, s->b);
-    fprintf(o, "  order        %d%s\n", r->order, r->below_err >= 0 ? " (smallest meeting the target)" : "");
+    fprintf(o, "  order        %d%s\n", r->order, r->below_err >= 0 || r->searched ? " (smallest meeting the target)" : "");
     if (r->below_err >= 0 || r->target > 0)
         fprintf(o, "  target       %s%smax %s error <= %.3g; order %d reaches %.3e%s\n", r->target_text,
                 r->target_text[0] ? ": " : "", r->pb.errkind == FIT_REL ? "relative" : "absolute",

@@ -27,6 +27,7 @@ typedef struct {
     int order;
     double below_err;     /* error of order-1 when the order was searched, else -1 */
     int minimax;          /* method: 1 minimax, 0 least squares */
+    int searched;         /* the order was searched (smallest meeting the target) */
     fit_poly lsq_poly;    /* with minimax: the rounded LSQ fit of the same order, for comparison */
     double target;
     int target_abs;

@@ -149,7 +149,7 @@ static void directed_list(float *v, int *n)
         0x3f800000u, 0x3f7fffffu, 0x3f7ffffeu, 0x3f800001u, 0x3f800002u, 0x3f7ffff0u, 0x3f800010u,
         0x3f000000u, 0x3fffffffu, 0x40000000u, 0x3f3504f3u, 0x3fb504f3u, 0x3f3504f2u, 0x3fb504f4u,
         0x7f7fffffu, 0x7f800000u, 0x7fc00000u, 0x7fa00000u,
-        0x3fc90fdbu, 0x40490fdbu, 0x40c90fdbu, 0x5a82a5a0u /* nearest 1e22... approx */,
+        0x3fc90fdbu, 0x40490fdbu, 0x40c90fdbu, 0x64078678u /* the float nearest 1e22 */,
         0x42b17218u, 0x42b17217u, 0xc2cff1b5u, 0xc2ce8ed0u, 0x42fe0000u, 0xc3150000u,
     };
     for (size_t i = 0; i < sizeof bits / sizeof bits[0]; i++) {

@@ -11,9 +11,10 @@
  *              rounded; sampled sweep of 3932785 inputs (every 16th float in [0x1p-7, 0x1p+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
-   if-convert the special-case selects so the array loop vectorizes */
+   if-convert the special-case selects so the array loop vectorizes;
+   no FMA contraction, so every x86-64 level gives the same bits */
 #if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math")
+#pragma GCC optimize("no-trapping-math", "fp-contract=off")
 #endif
 #include <math.h>
 #include <stddef.h>
@@ -23,7 +24,13 @@
 /* Polynomial evaluation, written once for every emitted function (gen/templates/poly_float.h.in).
    Horner's rule, coefficients lowest degree first; the loops have constant
    trip counts and fully unroll, so array loops calling them vectorize. */
-static inline double pf_horner_d(double r, const float *c, int n)
+#if defined(__GNUC__)
+#define PF_UNUSED __attribute__((unused))
+#else
+#define PF_UNUSED
+#endif
+
+static inline PF_UNUSED double pf_horner_d(double r, const float *c, int n)
 {
     double s = c[n - 1];
 #pragma GCC unroll 32
@@ -32,7 +39,7 @@ static inline double pf_horner_d(double r, const float *c, int n)
     return s;
 }
 
-static inline float pf_horner_f(float r, const float *c, int n)
+static inline PF_UNUSED float pf_horner_f(float r, const float *c, int n)
 {
     float s = c[n - 1];
 #pragma GCC unroll 32
@@ -41,8 +48,8 @@ static inline float pf_horner_f(float r, const float *c, int n)
     return s;
 }
 
-static inline uint32_t pf_asuint(float x) { uint32_t u; memcpy(&u, &x, sizeof u); return u; }
-static inline float pf_asfloat(uint32_t u) { float x; memcpy(&x, &u, sizeof x); return x; }
+static inline PF_UNUSED uint32_t pf_asuint(float x) { uint32_t u; memcpy(&u, &x, sizeof u); return u; }
+static inline PF_UNUSED float pf_asfloat(uint32_t u) { float x; memcpy(&x, &u, sizeof x); return x; }
 
 /* asin(t) ~ sum C[k] t^(2k+1), lowest degree first */
 static const float pf_asinf_fast_C[3] = {
