@@ -126,6 +126,32 @@ static void test_json(void **st)
     assert_true(e > 0 && e < 0x1p-24);
 }
 
+/* --target with fixed types: the smallest order whose emitted polynomial is
+ * within half an LSB of the type (absolute), and the order below is not. */
+static void test_target_fixed(void **st)
+{
+    (void)st;
+    const struct {
+        const char *type;
+        double half_lsb;
+    } t[] = {{"'fixed<15,14>'", 0x1p-15}, {"'unsigned fixed<8,8>'", 0x1p-9}, {"'fixed<31,16>'", 0x1p-17}};
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+        char args[256];
+        snprintf(args, sizeof args, "--func log --no-sweep --json --target %s", t[i].type);
+        tu_run("pfmathgen", args, &R);
+        assert_int_equal(R.status, 0);
+        double e = json_num(R.out, "max_abs_error"), below = json_num(R.out, "order_below_error");
+        print_message("--target %s: order %d, max abs error %.3g (half LSB %.3g), order below %.3g\n", t[i].type,
+                      (int)json_num(R.out, "order"), e, t[i].half_lsb, below);
+        assert_true(e <= t[i].half_lsb);
+        assert_true(below > t[i].half_lsb);
+    }
+    expect_usage_error("--func log --target 'fixed<15'");
+    expect_usage_error("--func log --target float --max-rel-err 1e-4");
+    expect_usage_error("--func log --order 3 --target float");
+    expect_usage_error("--func log --max-rel-err 2^-80");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -133,6 +159,7 @@ int main(void)
         cmocka_unit_test(test_help),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_json),
+        cmocka_unit_test(test_target_fixed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
