@@ -1,6 +1,7 @@
 /* pfmathgen for fixed-point types: option parsing, the checks that make a
  * bad type or pair a one-line error (exit 2, nothing written), and output.
  * The pipeline itself is gen/fixed_core.c. */
+#include "cli.h"
 #include "fixedgen.h"
 
 #include "fixed_internal.h"
@@ -63,85 +64,16 @@ static const char usage[] =
     "  -h, --help          this text\n"
     "Exit status: 0 ok, 2 bad usage, bad type or pair, impossible request, 1 internal failure.\n";
 
-static void die2(const char *fmt, const char *a, const char *b)
-{
-    fprintf(stderr, "pfmathgen: ");
-    fprintf(stderr, fmt, a, b);
-    fputc('\n', stderr);
-    exit(2);
-}
-
-static int is_identifier(const char *s)
-{
-    if (!*s || !(isalpha((unsigned char)*s) || *s == '_'))
-        return 0;
-    for (; *s; s++)
-        if (!(isalnum((unsigned char)*s) || *s == '_'))
-            return 0;
-    return 1;
-}
-
 /* the command line as a shell would re-run it (quoted where needed) */
-static char *command_line(int argc, char **argv)
-{
-    size_t cap = 64;
-    for (int i = 1; i < argc; i++)
-        cap += 4 * strlen(argv[i]) + 4;
-    char *s = malloc(cap);
-    if (!s)
-        exit(1);
-    strcpy(s, "pfmathgen");
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int plain = *a != 0;
-        for (const char *p = a; *p; p++)
-            if (!(isalnum((unsigned char)*p) || strchr("-_./=,:+", *p)))
-                plain = 0;
-        strcat(s, " ");
-        if (plain) {
-            strcat(s, a);
-        } else {
-            strcat(s, "'");
-            for (const char *p = a; *p; p++) {
-                if (*p == '\'')
-                    strcat(s, "'\\''");
-                else
-                    strncat(s, p, 1);
-            }
-            strcat(s, "'");
-        }
-    }
-    return s;
-}
-
-static int write_atomically(const char *path, const char *data, size_t n)
-{
-    size_t len = strlen(path) + 32;
-    char *tmp = malloc(len);
-    if (!tmp)
-        return -1;
-    snprintf(tmp, len, "%s.tmp.%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    int ok = f && fwrite(data, 1, n, f) == n;
-    if (f && fclose(f) != 0)
-        ok = 0;
-    if (ok && rename(tmp, path) != 0)
-        ok = 0;
-    if (!ok)
-        unlink(tmp);
-    free(tmp);
-    return ok ? 0 : -1;
-}
-
 static void parse_type(const char *what, const char *s, pf_type *t)
 {
     char e[200];
     if (pf_type_parse(s, t, e, sizeof e) != 0)
-        die2("bad %s: %s", what, e);
+        pf_cli_die2("bad %s: %s", what, e);
     if (!t->is_float && t->storage_bits > 32) {
         char f[64];
         pf_type_format(t, f, sizeof f);
-        die2("unsupported %s %s: fixed-point functions take storage of at most 32 bits", what, f);
+        pf_cli_die2("unsupported %s %s: fixed-point functions take storage of at most 32 bits", what, f);
     }
 }
 
@@ -167,7 +99,7 @@ int pfmathgen_fixed_main(int argc, char **argv)
         case 'f': func = optarg; break;
         case 'v':
             if (strcmp(optarg, "exact") && strcmp(optarg, "fast"))
-                die2("unknown variant '%s' (use exact or fast)%s", optarg, "");
+                pf_cli_die2("unknown variant '%s' (use exact or fast)%s", optarg, "");
             variant = optarg;
             break;
         case 'n': {
@@ -175,7 +107,7 @@ int pfmathgen_fixed_main(int argc, char **argv)
             errno = 0;
             long v = strtol(optarg, &end, 10);
             if (errno || end == optarg || *end || v < 1 || v > 30)
-                die2("bad order '%s': expected an integer 1..30%s", optarg, "");
+                pf_cli_die2("bad order '%s': expected an integer 1..30%s", optarg, "");
             order = (int)v;
             break;
         }
@@ -183,28 +115,28 @@ int pfmathgen_fixed_main(int argc, char **argv)
         case 'O': out_s = optarg; break;
         case 'm':
             if (strcmp(optarg, "lsq") && strcmp(optarg, "minimax"))
-                die2("unknown method '%s' (available: minimax, lsq)%s", optarg, "");
+                pf_cli_die2("unknown method '%s' (available: minimax, lsq)%s", optarg, "");
             method = optarg;
             break;
         case 'N':
-            if (!is_identifier(optarg))
-                die2("bad --name '%s': not a C identifier%s", optarg, "");
+            if (!pf_cli_is_identifier(optarg))
+                pf_cli_die2("bad --name '%s': not a C identifier%s", optarg, "");
             name = optarg;
             break;
         case 'o': out = optarg; break;
         case 'j': json = 1; break;
         case 'S': sweep = 0; break;
-        case 'X': die2("--reduction, --target, --max-rel-err and --max-abs-err are not available with "
+        case 'X': pf_cli_die2("--reduction, --target, --max-rel-err and --max-abs-err are not available with "
                        "fixed-point types%s%s", "", ""); break;
         case 'h': fputs(usage, stdout); return 0;
-        case ':': die2("option '%s' needs an argument%s", argv[optind - 1], ""); break;
-        default: die2("unknown option '%s' (see --help)%s", argv[optind - 1], ""); break;
+        case ':': pf_cli_die2("option '%s' needs an argument%s", argv[optind - 1], ""); break;
+        default: pf_cli_die2("unknown option '%s' (see --help)%s", argv[optind - 1], ""); break;
         }
     }
     if (optind < argc)
-        die2("unexpected argument '%s' (see --help)%s", argv[optind], "");
+        pf_cli_die2("unexpected argument '%s' (see --help)%s", argv[optind], "");
     if (!func)
-        die2("--func is required (see --help)%s%s", "", "");
+        pf_cli_die2("--func is required (see --help)%s%s", "", "");
     pf_type in, ot;
     if (type_s)
         parse_type("--type", type_s, &in);
@@ -218,11 +150,11 @@ int pfmathgen_fixed_main(int argc, char **argv)
         char a[64], b[64];
         pf_type_format(&in, a, sizeof a);
         pf_type_format(&ot, b, sizeof b);
-        die2("bad type pair %s -> %s: float and fixed point do not mix (both float, or both fixed)", a, b);
+        pf_cli_die2("bad type pair %s -> %s: float and fixed point do not mix (both float, or both fixed)", a, b);
     }
     const fx_func *F = fx_func_find(func);
     if (!F)
-        die2("no fixed-point %s (available: %s)", func, fx_func_list());
+        pf_cli_die2("no fixed-point %s (available: %s)", func, fx_func_list());
     fx_gen *G = calloc(1, sizeof *G);
     if (!G)
         return 1;
@@ -240,12 +172,12 @@ int pfmathgen_fixed_main(int argc, char **argv)
         snprintf(G->name, sizeof G->name, "%s", name);
     else
         pf_fixed_default_name(F->name, &in, &ot, !G->exact, G->name, sizeof G->name);
-    char *cmd = command_line(argc, argv);
+    char *cmd = pf_cli_command_line(argc, argv);
     G->command = cmd;
     char err[800];
     int rc = fx_generate(G, sweep, err, sizeof err);
     if (rc == -1)
-        die2("%s%s", err, "");
+        pf_cli_die2("%s%s", err, "");
     if (rc != 0) {
         fprintf(stderr, "pfmathgen: %s\n", err);
         return 1;
@@ -278,7 +210,7 @@ int pfmathgen_fixed_main(int argc, char **argv)
         fx_report_text(stderr, G);
     int ret = 0;
     if (out) {
-        if (write_atomically(out, src, len) != 0) {
+        if (pf_cli_write_atomically(out, src, len) != 0) {
             fprintf(stderr, "pfmathgen: cannot write %s\n", out);
             ret = 1;
         }

@@ -1,4 +1,5 @@
 /* pfmathgen: fit, report and emit C for one function.  See --help. */
+#include "cli.h"
 #include "fixedgen.h"
 #include "fixedtype.h"
 #include "generate.h"
@@ -52,76 +53,7 @@ static const char usage[] =
     "  -h, --help          this text\n"
     "Exit status: 0 ok, 2 bad usage or impossible request, 1 internal failure.\n";
 
-static void die2(const char *fmt, const char *a, const char *b)
-{
-    fprintf(stderr, "pfmathgen: ");
-    fprintf(stderr, fmt, a, b);
-    fputc('\n', stderr);
-    exit(2);
-}
-
-static int is_identifier(const char *s)
-{
-    if (!*s || !(isalpha((unsigned char)*s) || *s == '_'))
-        return 0;
-    for (; *s; s++)
-        if (!(isalnum((unsigned char)*s) || *s == '_'))
-            return 0;
-    return 1;
-}
-
 /* The command line as a shell would re-run it (quoted where needed). */
-static char *command_line(int argc, char **argv)
-{
-    size_t cap = 64;
-    for (int i = 1; i < argc; i++)
-        cap += 4 * strlen(argv[i]) + 4;
-    char *s = malloc(cap);
-    if (!s)
-        exit(1);
-    strcpy(s, "pfmathgen");
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int plain = *a != 0;
-        for (const char *p = a; *p; p++)
-            if (!(isalnum((unsigned char)*p) || strchr("-_./=,:+", *p)))
-                plain = 0;
-        strcat(s, " ");
-        if (plain) {
-            strcat(s, a);
-        } else {
-            strcat(s, "'");
-            for (const char *p = a; *p; p++) {
-                if (*p == '\'')
-                    strcat(s, "'\\''");
-                else
-                    strncat(s, p, 1);
-            }
-            strcat(s, "'");
-        }
-    }
-    return s;
-}
-
-static int write_atomically(const char *path, const char *data, size_t n)
-{
-    size_t len = strlen(path) + 32;
-    char *tmp = malloc(len);
-    if (!tmp)
-        return -1;
-    snprintf(tmp, len, "%s.tmp.%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    int ok = f && fwrite(data, 1, n, f) == n;
-    if (f && fclose(f) != 0)
-        ok = 0;
-    if (ok && rename(tmp, path) != 0)
-        ok = 0;
-    if (!ok)
-        unlink(tmp);
-    free(tmp);
-    return ok ? 0 : -1;
-}
-
 int main(int argc, char **argv)
 {
     static const struct option opts[] = {
@@ -141,8 +73,8 @@ int main(int argc, char **argv)
                 if ((!strcmp(argv[j], "-o") || !strcmp(argv[j], "--output")) && j + 1 < argc)
                     dir = argv[j + 1];
             if (!scene || !dir || argc != 5)
-                die2("usage: pfmathgen --scene FILE -o DIR%s%s", "", "");
-            char *cmd = command_line(argc, argv);
+                pf_cli_die2("usage: pfmathgen --scene FILE -o DIR%s%s", "", "");
+            char *cmd = pf_cli_command_line(argc, argv);
             int rc = pfmathgen_scene_main(scene, dir, cmd);
             free(cmd);
             return rc;
@@ -163,7 +95,7 @@ int main(int argc, char **argv)
         case 'f': rq.func = optarg; break;
         case 'v':
             if (strcmp(optarg, "exact") && strcmp(optarg, "fast") && strcmp(optarg, "both"))
-                die2("unknown variant '%s' (use exact, fast, or both with --plot)%s", optarg, "");
+                pf_cli_die2("unknown variant '%s' (use exact, fast, or both with --plot)%s", optarg, "");
             rq.variant = optarg;
             break;
         case 'n': {
@@ -171,27 +103,27 @@ int main(int argc, char **argv)
             errno = 0;
             long v = strtol(optarg, &end, 10);
             if (errno || end == optarg || *end || v < 1 || v > 30)
-                die2("bad order '%s': expected an integer 1..30%s", optarg, "");
+                pf_cli_die2("bad order '%s': expected an integer 1..30%s", optarg, "");
             rq.order = (int)v;
             break;
         }
         case 'r': rq.reduction = optarg; break;
         case 't':
             if (strcmp(optarg, "float"))
-                die2("unsupported type '%s': only float is available in this build%s", optarg, "");
+                pf_cli_die2("unsupported type '%s': only float is available in this build%s", optarg, "");
             break;
         case 'm':
             if (strcmp(optarg, "lsq") && strcmp(optarg, "minimax"))
-                die2("unknown method '%s' (available: minimax, lsq)%s", optarg, "");
+                pf_cli_die2("unknown method '%s' (available: minimax, lsq)%s", optarg, "");
             rq.method = optarg;
             break;
         case 'T': {
             if (rq.target > 0)
-                die2("only one of --target, --max-rel-err, --max-abs-err%s%s", "", "");
+                pf_cli_die2("only one of --target, --max-rel-err, --max-abs-err%s%s", "", "");
             pf_type t;
             char e[200];
             if (pf_type_parse(optarg, &t, e, sizeof e) != 0)
-                die2("bad --target: %s%s", e, "");
+                pf_cli_die2("bad --target: %s%s", e, "");
             pf_type_format(&t, target_text, sizeof target_text);
             if (t.is_float) {
                 rq.target = 0x1p-24;
@@ -205,7 +137,7 @@ int main(int argc, char **argv)
         case 'R':
         case 'A': {
             if (rq.target > 0)
-                die2("only one of --target, --max-rel-err, --max-abs-err%s%s", "", "");
+                pf_cli_die2("only one of --target, --max-rel-err, --max-abs-err%s%s", "", "");
             char *end;
             double v;
             if (!strncmp(optarg, "2^", 2)) {
@@ -217,15 +149,15 @@ int main(int argc, char **argv)
                 v = strtod(optarg, &end);
             }
             if (*end || !(v > 0 && v < 1))
-                die2("bad error bound '%s': expected a number in (0, 1) such as 1e-4 or 2^-12%s", optarg, "");
+                pf_cli_die2("bad error bound '%s': expected a number in (0, 1) such as 1e-4 or 2^-12%s", optarg, "");
             rq.target = v;
             rq.target_abs = c == 'A';
             snprintf(target_text, sizeof target_text, "%s %s", c == 'A' ? "--max-abs-err" : "--max-rel-err", optarg);
             break;
         }
         case 'N':
-            if (!is_identifier(optarg))
-                die2("bad --name '%s': not a C identifier%s", optarg, "");
+            if (!pf_cli_is_identifier(optarg))
+                pf_cli_die2("bad --name '%s': not a C identifier%s", optarg, "");
             rq.name = optarg;
             break;
         case 'o': out = optarg; break;
@@ -233,31 +165,31 @@ int main(int argc, char **argv)
         case 'j': json = 1; break;
         case 'S': rq.sweep = 0; break;
         case 'h': printf(usage, pf_spec_func_list()); return 0;
-        case ':': die2("option '%s' needs an argument%s", argv[optind - 1], ""); break;
-        default: die2("unknown option '%s' (see --help)%s", argv[optind - 1], ""); break;
+        case ':': pf_cli_die2("option '%s' needs an argument%s", argv[optind - 1], ""); break;
+        default: pf_cli_die2("unknown option '%s' (see --help)%s", argv[optind - 1], ""); break;
         }
     }
     if (optind < argc)
-        die2("unexpected argument '%s' (see --help)%s", argv[optind], "");
+        pf_cli_die2("unexpected argument '%s' (see --help)%s", argv[optind], "");
     if (!rq.func)
-        die2("--func is required (see --help)%s%s", "", "");
+        pf_cli_die2("--func is required (see --help)%s%s", "", "");
     if (rq.reduction && !pf_spec_find(rq.func, rq.variant, rq.reduction) && pf_spec_func_known(rq.func))
-        die2("unknown reduction '%s' for %s", rq.reduction, rq.func);
+        pf_cli_die2("unknown reduction '%s' for %s", rq.reduction, rq.func);
     if (target_text[0])
         rq.target_text = target_text;
-    rq.command = command_line(argc, argv);
+    rq.command = pf_cli_command_line(argc, argv);
     pf_gen_result r;
     char err[512];
     if (!strcmp(rq.variant, "both")) {
         if (!plot || out || json)
-            die2("--variant both is for --plot only (no -o, no --json)%s%s", "", "");
+            pf_cli_die2("--variant both is for --plot only (no -o, no --json)%s%s", "", "");
         pf_gen_result r2;
         rq.variant = "exact";
         if (pf_generate(&rq, &r, err, sizeof err) != 0)
-            die2("%s%s", err, "");
+            pf_cli_die2("%s%s", err, "");
         rq.variant = "fast";
         if (pf_generate(&rq, &r2, err, sizeof err) != 0)
-            die2("%s%s", err, "");
+            pf_cli_die2("%s%s", err, "");
         pf_report_text(stderr, &r);
         pf_report_text(stderr, &r2);
         const pf_gen_result *both[2] = {&r, &r2};
@@ -268,7 +200,7 @@ int main(int argc, char **argv)
         return 0;
     }
     if (pf_generate(&rq, &r, err, sizeof err) != 0)
-        die2("%s%s", err, "");
+        pf_cli_die2("%s%s", err, "");
     if (plot) {
         const pf_gen_result *one[1] = {&r};
         if (pf_plot_error(plot, one, 1, err, sizeof err) != 0) {
@@ -281,7 +213,7 @@ int main(int argc, char **argv)
     else
         pf_report_text(stderr, &r);
     if (out) {
-        if (write_atomically(out, r.csrc, r.clen) != 0) {
+        if (pf_cli_write_atomically(out, r.csrc, r.clen) != 0) {
             fprintf(stderr, "pfmathgen: cannot write %s\n", out);
             return 1;
         }

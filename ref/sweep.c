@@ -52,9 +52,8 @@ void pf_sweep_merge(pf_sweep_stats *a, const pf_sweep_stats *b)
         a->hist[i] += b->hist[i];
 }
 
-void pf_sweep_one(pf_sweep_stats *s, pf_func f, pf_fn1 fn1, pf_fn2 fn2, float x, float x2)
+void pf_sweep_got(pf_sweep_stats *s, pf_func f, float got, float x, float x2)
 {
-    float got = fn2 ? fn2(x, x2) : fn1(x);
     int cr;
     double e = pfref_ulp_err_cr(f, got, x, x2, &cr);
     s->count++;
@@ -68,6 +67,11 @@ void pf_sweep_one(pf_sweep_stats *s, pf_func f, pf_fn1 fn1, pf_fn2 fn2, float x,
         s->worst_x2 = x2;
         s->worst_got = got;
     }
+}
+
+void pf_sweep_one(pf_sweep_stats *s, pf_func f, pf_fn1 fn1, pf_fn2 fn2, float x, float x2)
+{
+    pf_sweep_got(s, f, fn2 ? fn2(x, x2) : fn1(x), x, x2);
 }
 
 static double now(void)

@@ -22,6 +22,8 @@ typedef struct {
 
 void pf_sweep_init(pf_sweep_stats *s);
 void pf_sweep_merge(pf_sweep_stats *into, const pf_sweep_stats *from);
+/* one input whose result is already computed (the bench times its own calls) */
+void pf_sweep_got(pf_sweep_stats *s, pf_func f, float got, float x, float x2);
 /* one input */
 void pf_sweep_one(pf_sweep_stats *s, pf_func f, pf_fn1 fn1, pf_fn2 fn2, float x, float x2);
 /* every float whose bit pattern is in [lo, hi] (OpenMP-parallel when built so) */

@@ -103,33 +103,11 @@ void pfb_sample(const pfb_domain *d, uint64_t seed, float *x, float *x2, size_t 
 
 /* ---- the error statistic ---- */
 
-static int bin_of(double e)
-{
-    static const double edge[PF_HIST_BINS - 1] = {0, 0.5, 1, 2, 4, 16, 256};
-    for (int i = 0; i < PF_HIST_BINS - 1; i++)
-        if (e <= edge[i])
-            return i;
-    return PF_HIST_BINS - 1;
-}
-
-/* pf_sweep_one without the call: same error, same correctly-rounded test,
-   same histogram bins, same worst-input rule (first strict maximum).
+/* pf_sweep_one without the call: the sweep's own recording rule.
    tests/test_bench.c checks that the two agree input by input. */
 void pfb_err_record(pf_sweep_stats *s, pf_func f, float x, float x2, float got)
 {
-    double e = pfref_ulp_err_raw(f, got, x, x2);
-    int cr = e <= 0.5 ? pfref_is_cr(f, got, x, x2) : 0;
-    s->count++;
-    s->cr += cr;
-    if (isfinite(e))
-        s->sum_ulp += e;
-    s->hist[cr && e == 0 ? 0 : bin_of(e == 0 ? 1e-300 : e)]++;
-    if (s->count == 1 || e > s->max_ulp) {
-        s->max_ulp = e;
-        s->worst_x = x;
-        s->worst_x2 = x2;
-        s->worst_got = got;
-    }
+    pf_sweep_got(s, f, got, x, x2);
 }
 
 /* chunk results are merged in input order with the serial rule (a later
