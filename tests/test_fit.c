@@ -314,6 +314,38 @@ static void test_parity_and_measure(void **st)
     assert_true(fabs(taylor.max_err_at - 1) < 1e-9);
 }
 
+/* A sharp peak between grid points: g(t) = 1/(1 + K (t - t0)^2) against
+ * p = 0 (absolute error), max exactly 1 at t0.  With K = 1e7 and t0 half a
+ * grid step from the nearest of fit_measure's 4097 grid points on [0, 1],
+ * the grid alone sees only 1/(1 + K h^2/4) ~ 0.87: only the refinement
+ * around the peak finds the max and where it is. */
+static const double peak_t0 = (1234.0 + 0.5) / 4096;
+
+static void g_peak(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_sub_d(y, t, peak_t0, MPFR_RNDN);
+    mpfr_sqr(y, y, MPFR_RNDN);
+    mpfr_mul_d(y, y, 1e7, MPFR_RNDN);
+    mpfr_add_ui(y, y, 1, MPFR_RNDN);
+    mpfr_ui_div(y, 1, y, MPFR_RNDN);
+}
+
+static void test_measure_sharp_peak(void **st)
+{
+    (void)st;
+    fit_problem pb = {0};
+    pb.g = g_peak;
+    pb.a = 0;
+    pb.b = 1;
+    pb.errkind = FIT_ABS;
+    fit_poly z = {0};
+    fit_measure(&pb, &z);
+    print_message("sharp peak: max %.17g at %.17g (want 1 at %.17g)\n", z.max_err, z.max_err_at, peak_t0);
+    assert_true(fabs(z.max_err - 1) < 1e-12);
+    assert_true(fabs(z.max_err_at - peak_t0) < 1e-6);
+}
+
 static void test_bad_problems(void **st)
 {
     (void)st;
@@ -340,7 +372,7 @@ int main(void)
         cmocka_unit_test(test_reproduces_polynomial), cmocka_unit_test(test_constraints_hold),
         cmocka_unit_test(test_gauss_legendre),        cmocka_unit_test(test_order20_against_mpfr),
         cmocka_unit_test(test_nodes_converged),       cmocka_unit_test(test_pin_and_refit),
-        cmocka_unit_test(test_parity_and_measure),    cmocka_unit_test(test_bad_problems),
+        cmocka_unit_test(test_parity_and_measure),    cmocka_unit_test(test_measure_sharp_peak),    cmocka_unit_test(test_bad_problems),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
