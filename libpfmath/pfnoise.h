@@ -144,6 +144,24 @@ void pf_noise2_q_array(const pf_noise_table *t, int32_t *out, const int32_t *x,
 void pf_noise3_q_array(const pf_noise_table *t, int32_t *out, const int32_t *x,
                        const int32_t *y, const int32_t *z, size_t n, int frac);
 
+/* Fast fixed<15,15> forms (pfnoise_fixed_fast.c): the same noise with Q16
+ * values and Q18 fade weights, so that every product fits 32 bits.
+ * Integer-only and bit-identical on every compiler, flag set and CPU, like
+ * the exact forms, but not equal to them: the result r is within
+ * PF_NOISEn_FAST_ERR LSB of 2^15·n (n the exact noise at the input point,
+ * saturated to [-32768, 32767]) -- proven in pfnoise_fixed_fast.c -- so
+ * within 2 (2D) and 3 (3D) LSB of the correctly rounded value; measured
+ * maxima are lower (docs/noise.md).  Same range and saturation as
+ * pf_noiseN_q15; 0 at lattice points, period 256. */
+#define PF_NOISE2_FAST_ERR 1.74
+#define PF_NOISE3_FAST_ERR 3.21
+int16_t pf_noise2_q15_fast(int32_t x, int32_t y);
+int16_t pf_noise3_q15_fast(int32_t x, int32_t y, int32_t z);
+void pf_noise2_q15_fast_array(const pf_noise_table *t, int16_t *out, const int32_t *x,
+                              const int32_t *y, size_t n);
+void pf_noise3_q15_fast_array(const pf_noise_table *t, int16_t *out, const int32_t *x,
+                              const int32_t *y, const int32_t *z, size_t n);
+
 /* ---- fractal sums -----------------------------------------------------
  * fbm = Σ_k a_k·w_k·n(f_k·p + o_k) / Σ_k |a_k|, a_k = gain^k,
  * f_k = lacunarity^k, o_k = k·(0.7548777, 0.5698403, …) (decorrelates the

@@ -2,14 +2,15 @@
 # the picture demo and the speed bench.
 LIB_SRCS += $(sort $(wildcard libpfmath/pfnoise*.c))
 
-NOISE_TESTS := test_noise test_noise_spectrum test_noise_fixed test_noise_fbm
+NOISE_TESTS := test_noise test_noise_spectrum test_noise_fixed test_noise_fbm test_noise_fixed_fast
 TESTS += $(NOISE_TESTS:%=$(BUILD)/tests/%)
 PROGS += $(BUILD)/pfnoise-demo $(BUILD)/pfnoise-bench
 
 # test_noise and the bench also link the plain port of Perlin's reference;
 # they need nothing but libpfmath.  (test_noise_fixed uses the generic rule:
-# it re-derives the fade's formats with fit/bitwidth.c.)
-$(BUILD)/tests/test_noise: tests/test_noise.c tests/noise_baseline.c tests/noise_baseline.h $(BUILD)/libpfmath.a
+# it re-derives the fade's formats with fit/bitwidth.c.)  test_noise_fixed_fast
+# uses the port as its 3D double reference.
+$(BUILD)/tests/test_noise $(BUILD)/tests/test_noise_fixed_fast: $(BUILD)/tests/%: tests/%.c tests/noise_baseline.c tests/noise_baseline.h $(BUILD)/libpfmath.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< tests/noise_baseline.c -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lcmocka -lm
 
