@@ -127,6 +127,14 @@ void fx_formats_text(const fx_gen *G, char *buf, size_t n);
 /* largest value of the output type, as a double */
 double fx_out_max(const fx_gen *G);
 
+/* the fixed-point front end's --help text (gen/fixedgen.c) */
+const char *fx_usage_text(void);
+
+/* gradient noise (gen/fixed_noise.c): fx_noise_is("noise3") etc.;
+ * fx_noise_main is pfmathgen for --func noise1..noise4 / noise, any types */
+int fx_noise_is(const char *func);
+int fx_noise_main(int argc, char **argv);
+
 /* the whole generation (gen/fixed_core.c) */
 int fx_generate(fx_gen *G, int sweep, char *err, size_t errlen);
 void fx_report_text(FILE *o, const fx_gen *G);

@@ -28,10 +28,29 @@ const fx_func *fx_func_find(const char *name)
     return NULL;
 }
 
-const char *fx_func_list(void) { return "sin, cos, exp, exp2, log, log2, sqrt"; }
+const char *fx_func_list(void)
+{
+    return "sin, cos, exp, exp2, log, log2, sqrt, noise1, noise2, noise3, noise4, noise";
+}
+
+/* the --func argument, or NULL */
+static const char *func_arg(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--func") && i + 1 < argc)
+            return argv[i + 1];
+        if (!strncmp(argv[i], "--func=", 7))
+            return argv[i] + 7;
+    }
+    return NULL;
+}
 
 int pfmathgen_wants_fixed(int argc, char **argv)
 {
+    /* noise is generated for fixed-point types only: this front end also
+       answers a float request for it (with a pointer to libpfmath) */
+    if (fx_noise_is(func_arg(argc, argv)))
+        return 1;
     for (int i = 1; i < argc; i++) {
         const char *v = NULL;
         if ((!strcmp(argv[i], "--type") || !strcmp(argv[i], "--out-type")) && i + 1 < argc)
@@ -49,7 +68,8 @@ int pfmathgen_wants_fixed(int argc, char **argv)
 static const char usage[] =
     "usage: pfmathgen --func NAME --type T [--out-type T2] [options]\n"
     "Fixed-point generation: integer-only C taking and returning the stored integers.\n"
-    "  --func NAME         sin, cos, exp, exp2, log, log2, sqrt\n"
+    "  --func NAME         sin, cos, exp, exp2, log, log2, sqrt, or gradient noise:\n"
+    "                      noise1, noise2, noise3, noise4 (one dimension) or noise (all four)\n"
     "  --type T            input type, e.g. 'fixed<15,12>', 'unsigned fixed<16,8>', 'ufixed<16,8>'\n"
     "                      (storage up to 32 bits)\n"
     "  --out-type T        output type (default: the input type)\n"
@@ -61,8 +81,14 @@ static const char usage[] =
     "  -o, --output FILE   write the C source to FILE (nothing is written on error)\n"
     "  --json              print the report as one JSON object on stdout instead of C\n"
     "  --no-sweep          do not compile and sweep the emitted code\n"
+    "  --seed N            noise only: lattice from pf_noise_table_seed(N) (default: Perlin's\n"
+    "                      permutation, the library's default table); noise takes exact only,\n"
+    "                      no --order/--method, an input exp >= 1; --name S with --func noise\n"
+    "                      names the four functions S1 .. S4\n"
     "  -h, --help          this text\n"
     "Exit status: 0 ok, 2 bad usage, bad type or pair, impossible request, 1 internal failure.\n";
+
+const char *fx_usage_text(void) { return usage; }
 
 /* the command line as a shell would re-run it (quoted where needed) */
 static void parse_type(const char *what, const char *s, pf_type *t)
@@ -91,6 +117,8 @@ int pfmathgen_fixed_main(int argc, char **argv)
     const char *func = NULL, *variant = "exact", *type_s = NULL, *out_s = NULL, *method = NULL, *name = NULL,
                *out = NULL;
     int order = 0, json = 0, sweep = 1;
+    if (fx_noise_is(func_arg(argc, argv)))
+        return fx_noise_main(argc, argv);
     opterr = 0;
     optind = 1;
     int c;

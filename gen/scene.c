@@ -58,6 +58,12 @@ static void type_tag(const pf_type *t, char *buf, size_t n)
              t->exp < 0 ? -t->exp : t->exp);
 }
 
+/* noise1 .. noise4: gradient noise of that dimension (fixed point only) */
+static int is_noise(const char *f)
+{
+    return !strncmp(f, "noise", 5) && f[5] >= '1' && f[5] <= '4' && !f[6];
+}
+
 static int parse(const char *scene, scene_entry *e, int *ne)
 {
     FILE *f = fopen(scene, "r");
@@ -89,12 +95,21 @@ static int parse(const char *scene, scene_entry *e, int *ne)
         const char *q = p;
         while (isspace((unsigned char)*q))
             q++;
+        int noise = is_noise(x->func);
+        if (!strcmp(x->func, "noise")) {
+            fclose(f);
+            return fail(scene, ln, "list noise by dimension: noise1, noise2, noise3 or noise4", NULL);
+        }
         if (!strncmp(q, "exact", 5) || !strncmp(q, "fast", 4)) {
             int l = q[0] == 'e' ? 5 : 4;
             memcpy(x->variant, q, (size_t)l);
             q += l;
-        } else if (!strcmp(x->func, "noise")) {
-            strcpy(x->variant, "exact");
+            if (noise && l == 4) {
+                fclose(f);
+                return fail(scene, ln, "noise has only the exact variant (within 1 LSB)", NULL);
+            }
+        } else if (noise) {
+            strcpy(x->variant, "exact"); /* the variant is optional for noise */
         } else {
             fclose(f);
             return fail(scene, ln, "expected 'function exact|fast input-type output-type'", NULL);
@@ -116,6 +131,11 @@ static int parse(const char *scene, scene_entry *e, int *ne)
         if (x->in.is_float != x->out.is_float) {
             fclose(f);
             return fail(scene, ln, "float and fixed-point types cannot be mixed in one entry", NULL);
+        }
+        if (noise && x->in.is_float) {
+            fclose(f);
+            return fail(scene, ln, "noise is generated for fixed-point types; float noise is pf_noiseNf in libpfmath",
+                        NULL);
         }
         if (x->in.is_float) {
             if (!pf_spec_find(x->func, x->variant, NULL)) {
@@ -276,7 +296,18 @@ int pfmathgen_scene_main(const char *scene, const char *outdir, const char *comm
             for (int i = 0; i < ne; i++) {
                 const scene_entry *x = &e[i];
                 const char *ci = pf_type_ctype(&x->in), *co = pf_type_ctype(&x->out);
-                if (!strcmp(x->func, "atan2"))
+                if (is_noise(x->func)) {
+                    /* noiseN takes N coordinates: name(x, y, …), name_array(x, y, …, out, n) */
+                    static const char *cn[4] = {"x", "y", "z", "w"};
+                    int nd = x->func[5] - '0';
+                    fprintf(h, "%s %s(", co, x->name);
+                    for (int k = 0; k < nd; k++)
+                        fprintf(h, "%s%s %s", k ? ", " : "", ci, cn[k]);
+                    fprintf(h, ");\nvoid %s_array(", x->name);
+                    for (int k = 0; k < nd; k++)
+                        fprintf(h, "const %s *%s, ", ci, cn[k]);
+                    fprintf(h, "%s *out, size_t n);\n", co);
+                } else if (!strcmp(x->func, "atan2"))
                     fprintf(h, "%s %s(%s y, %s x);\nvoid %s_array(const %s *y, const %s *x, %s *out, size_t n);\n",
                             co, x->name, ci, ci, x->name, ci, ci, co);
                 else

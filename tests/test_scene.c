@@ -1,6 +1,8 @@
 /* Scene-driven generation: every examples/NAME.scene generates, its code
  * compiles, every function meets its listed target in a sweep against
- * MPFR, and nothing the scene did not ask for is emitted. */
+ * MPFR, and nothing the scene did not ask for is emitted.  Noise lines
+ * (noise1..noise4, fixed point, variant optional) are sampled against the
+ * exact noise (ref/pfref_noise.c). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -8,6 +10,8 @@
 
 #include "compile.h"
 #include "fixedtype.h"
+#include "pfnoise.h"
+#include "pfref_noise.h"
 #include "sweep.h"
 #include "testutil.h"
 
@@ -54,7 +58,14 @@ static int read_scene(const char *path, entry *e)
             continue;
         int k = sscanf(p, "%31s %15s", e[n].func, e[n].variant);
         assert_int_equal(k, 2);
-        p = strstr(p, e[n].variant) + strlen(e[n].variant);
+        if (!strncmp(e[n].func, "noise", 5) && strcmp(e[n].variant, "exact")) {
+            /* noise lines may leave the variant out (exact is the only one) */
+            assert_string_not_equal(e[n].variant, "fast");
+            strcpy(e[n].variant, "exact");
+            p = strstr(p, e[n].func) + strlen(e[n].func);
+        } else {
+            p = strstr(p, e[n].variant) + strlen(e[n].variant);
+        }
         p = (char *)take_type(p, e[n].tin, sizeof e[n].tin);
         assert_non_null(p);
         assert_non_null(take_type(p, e[n].tout, sizeof e[n].tout));
@@ -147,6 +158,36 @@ static int64_t call_fixed(void *p, const pf_type *in, const pf_type *out, int64_
 #undef CALL
 }
 
+static int64_t call_noise(void *p, int n, const pf_type *in, const pf_type *out, const int64_t *q)
+{
+#define CALLN(TI, TO)                                                                              \
+    switch (n) {                                                                                   \
+    case 1: return (int64_t)((TO(*)(TI))p)((TI)q[0]);                                              \
+    case 2: return (int64_t)((TO(*)(TI, TI))p)((TI)q[0], (TI)q[1]);                                \
+    case 3: return (int64_t)((TO(*)(TI, TI, TI))p)((TI)q[0], (TI)q[1], (TI)q[2]);                  \
+    default: return (int64_t)((TO(*)(TI, TI, TI, TI))p)((TI)q[0], (TI)q[1], (TI)q[2], (TI)q[3]);   \
+    }
+#define OUTSN(TI)                                                                                  \
+    switch (out->storage_bits * 2 + out->is_signed) {                                              \
+    case 17: CALLN(TI, int8_t);                                                                    \
+    case 16: CALLN(TI, uint8_t);                                                                   \
+    case 33: CALLN(TI, int16_t);                                                                   \
+    case 32: CALLN(TI, uint16_t);                                                                  \
+    case 65: CALLN(TI, int32_t);                                                                   \
+    default: CALLN(TI, uint32_t);                                                                  \
+    }
+    switch (in->storage_bits * 2 + in->is_signed) {
+    case 17: OUTSN(int8_t);
+    case 16: OUTSN(uint8_t);
+    case 33: OUTSN(int16_t);
+    case 32: OUTSN(uint16_t);
+    case 65: OUTSN(int32_t);
+    default: OUTSN(uint32_t);
+    }
+#undef OUTSN
+#undef CALLN
+}
+
 /* every input of a <= 16-bit type: exact < 1 LSB, fast <= max(2^-10 rel, 4 LSB),
  * against MPFR with the documented saturation (true result clamped to the range;
  * log of 0 or of a negative gives the most negative value). */
@@ -177,6 +218,45 @@ static void check_fixed(void *h, const char *name, const entry *x, const pf_type
         assert_true(!strcmp(x->variant, "exact") ? e < bound : e <= bound);
     }
     print_message("  %-24s %s: every input, worst error %.3f of its bound\n", name, x->variant, worst);
+}
+
+/* gradient noise (noise1..noise4): sampled against the exact noise
+ * (ref/pfref_noise.c, MPFR, the library's default lattice) within 1 LSB,
+ * 0 at lattice points; scene.h's prototype agrees with the definition */
+static void check_noise(void *h, const char *name, const entry *x, const pf_type *in, const pf_type *out,
+                        const char *dir)
+{
+    int n = x->func[5] - '0';
+    assert_true(n >= 1 && n <= 4);
+    void *p = dlsym(h, name);
+    assert_non_null(p);
+    char cmd[1200];
+    snprintf(cmd, sizeof cmd, "cat %s/scene.h %s/%s.c | cc -x c -std=c17 -Wall -Wextra -Werror -fsyntax-only -",
+             dir, dir, name);
+    assert_int_equal(system(cmd), 0);
+    int64_t lo = pf_type_min_stored(in), hi = pf_type_max_stored(in), olo = pf_type_min_stored(out),
+            ohi = pf_type_max_stored(out);
+    const pf_noise_table *t = pf_noise_default_table();
+    uint64_t s = 99;
+    double worst = 0;
+    for (int i = 0; i < 3000; i++) {
+        int64_t q[4] = {0, 0, 0, 0};
+        for (int k = 0; k < n; k++) {
+            s = s * 6364136223846793005ull + 1442695040888963407ull;
+            q[k] = lo + (int64_t)((s >> 20) % (uint64_t)(hi - lo + 1));
+            if (i % 3 == 0) /* lattice points: the noise is 0 there */
+                q[k] = (int64_t)(((s >> 40) % 16) - 8) * ((int64_t)1 << in->exp);
+            if (q[k] < lo || q[k] > hi)
+                q[k] = 0;
+        }
+        int64_t got = call_noise(p, n, in, out, q);
+        if (i % 3 == 0)
+            assert_true(got == 0);
+        double e = pfref_noise_err_lsb(n, t, q, in->exp, got, out->exp, olo, ohi);
+        worst = fmax(worst, e);
+        assert_true(e < 1);
+    }
+    print_message("  %-24s noise%d: 3000 sampled inputs, max error %.3f LSB\n", name, n, worst);
 }
 
 static void test_example_scenes(void **st)
@@ -239,6 +319,8 @@ static void test_example_scenes(void **st)
             assert_non_null(strstr(syms, want));
             if (in.is_float)
                 check_float(h, name, &e[i]);
+            else if (!strncmp(e[i].func, "noise", 5))
+                check_noise(h, name, &e[i], &in, &ot, out);
             else
                 check_fixed(h, name, &e[i], &in, &ot);
         }
@@ -256,7 +338,8 @@ static void test_bad_scenes(void **st)
     (void)st;
     const char *bad[] = {"sin exact float\n", "frob exact float float\n", "sin exact float fixed<15,14>\n",
                          "sin exact fixed<15 fixed<15,14>\n", "sin exact float float\nsin exact float float\n",
-                         "# nothing\n"};
+                         "# nothing\n", "noise3 fast fixed<15,12> fixed<15,14>\n", "noise3 float float\n",
+                         "noise fixed<15,12> fixed<15,14>\n", "noise2 exact fixed<15,0> fixed<15,14>\n"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         FILE *f = fopen("/tmp/pf-bad.scene", "w");
         fputs(bad[i], f);

@@ -1,0 +1,13 @@
+# Gradient noise for any fixed-point type pair (issue 6's generator half):
+# pfmathgen --func noise1..noise4|noise --type T --out-type U
+# (gen/fixed_noise.c, picked up by fixedgen.mk's gen/fixed_*.c), the exact
+# MPFR reference ref/pfref_noise.c, and tests/test_noisegen.c.  See
+# docs/fixed.md, "Noise for any type pair".
+REF_SRCS += ref/pfref_noise.c
+
+# the generator dumps the lattice tables from libpfmath's pf_noise_table
+# (appended to pfmathgen's link line, after the other libraries)
+$(BUILD)/pfmathgen: $(BUILD)/libpfmath.a
+
+TESTS += $(BUILD)/tests/test_noisegen
+$(BUILD)/tests/test_noisegen: $(BUILD)/pfmathgen
