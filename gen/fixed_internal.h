@@ -114,6 +114,7 @@ extern const fx_func fx_func_sin, fx_func_cos, fx_func_exp, fx_func_exp2, fx_fun
     fx_func_sqrt;
 const fx_func *fx_func_find(const char *name);
 const char *fx_func_list(void);
+void fx_parse_type(const char *what, const char *s, pf_type *t);
 
 /* ---- helpers (gen/fixed_core.c) ---- */
 double fx_lsb(const fx_gen *G);                 /* output lsb 2^-Eo */

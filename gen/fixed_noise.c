@@ -802,13 +802,6 @@ int fx_noise_is(const char *func)
                                                 !func[6])));
 }
 
-static void parse_type(const char *what, const char *s, pf_type *t)
-{
-    char e[200];
-    if (pf_type_parse(s, t, e, sizeof e) != 0)
-        pf_cli_die2("bad %s: %s", what, e);
-}
-
 int fx_noise_main(int argc, char **argv)
 {
     static const struct option opts[] = {
@@ -872,9 +865,9 @@ int fx_noise_main(int argc, char **argv)
     if (!type_s && !out_s)
         pf_cli_die2("%s needs a fixed-point --type (float noise is pf_noise1f … pf_noise4f in libpfmath)%s", func, "");
     if (type_s)
-        parse_type("--type", type_s, &G->in);
+        fx_parse_type("--type", type_s, &G->in);
     if (out_s)
-        parse_type("--out-type", out_s, &G->out);
+        fx_parse_type("--out-type", out_s, &G->out);
     if (!type_s)
         G->in = G->out;
     if (!out_s)
@@ -885,9 +878,7 @@ int fx_noise_main(int argc, char **argv)
                     func, "");
     pf_type_format(&G->in, G->in_text, sizeof G->in_text);
     pf_type_format(&G->out, G->out_text, sizeof G->out_text);
-    if (G->in.storage_bits > 32 || G->out.storage_bits > 32)
-        pf_cli_die2("unsupported type pair %s -> %s: noise takes storage of at most 32 bits", G->in_text,
-                    G->out_text);
+    /* storage over 32 bits was refused by fx_parse_type */
     if (G->in.exp <= 0)
         pf_cli_die2("input %s has no fraction bits (exp <= 0): every input is a lattice point, where the noise "
                     "is identically 0%s",

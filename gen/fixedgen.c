@@ -91,7 +91,9 @@ static const char usage[] =
 const char *fx_usage_text(void) { return usage; }
 
 /* the command line as a shell would re-run it (quoted where needed) */
-static void parse_type(const char *what, const char *s, pf_type *t)
+/* A type option's value, or exit 2: malformed, or fixed with storage over
+ * 32 bits (float passes, for the caller to judge). */
+void fx_parse_type(const char *what, const char *s, pf_type *t)
 {
     char e[200];
     if (pf_type_parse(s, t, e, sizeof e) != 0)
@@ -167,9 +169,9 @@ int pfmathgen_fixed_main(int argc, char **argv)
         pf_cli_die2("--func is required (see --help)%s%s", "", "");
     pf_type in, ot;
     if (type_s)
-        parse_type("--type", type_s, &in);
+        fx_parse_type("--type", type_s, &in);
     if (out_s)
-        parse_type("--out-type", out_s, &ot);
+        fx_parse_type("--out-type", out_s, &ot);
     if (!type_s)
         in = ot;
     if (!out_s)

@@ -10,18 +10,8 @@
  * floorf only vectorises (roundps) when FP traps are not modelled; no FMA
  * contraction, so that every clone (and the scalar form) rounds alike. */
 #pragma GCC optimize("tree-vectorize", "no-trapping-math", "fp-contract=off")
-#define PF_IVDEP _Pragma("GCC ivdep")
-#else
-#define PF_IVDEP
 #endif
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define PF_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define PF_CLONES
-#endif
-#define PF_INLINE static inline __attribute__((always_inline))
-
-extern pf_noise_table pf_noise_default_ __attribute__((visibility("hidden")));
+#include "pfnoise_impl.h"
 
 PF_INLINE float fade(float t)
 {

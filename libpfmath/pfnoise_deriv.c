@@ -7,12 +7,11 @@
  * sums corner by corner from the permutation (not from the evaluators' pair
  * tables' layout tricks), so its value is also an independent check of the
  * fast evaluators (equal up to float rounding). */
-#include "pfnoise.h"
+#include "pfnoise_impl.h"
 
 #include <math.h>
 #include <string.h>
 
-extern pf_noise_table pf_noise_default_ __attribute__((visibility("hidden")));
 
 static float fade(float t)
 {

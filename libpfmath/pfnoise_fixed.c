@@ -27,18 +27,8 @@
 
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC optimize("tree-vectorize")
-#define PF_IVDEP _Pragma("GCC ivdep")
-#else
-#define PF_IVDEP
 #endif
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define PF_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define PF_CLONES
-#endif
-#define PF_INLINE static inline __attribute__((always_inline))
-
-extern pf_noise_table pf_noise_default_ __attribute__((visibility("hidden")));
+#include "pfnoise_impl.h"
 
 /* Horner steps for f(t) = ((((6t − 15)t + 10)t + 0)t + 0)t + 0, formats
  * from pf_bw_horner (see above): c[k] is the coefficient at step k's lsb. */

@@ -71,20 +71,10 @@
 
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC optimize("tree-vectorize")
-#define PF_IVDEP _Pragma("GCC ivdep")
-#else
-#define PF_IVDEP
 #endif
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define PF_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define PF_CLONES
-#endif
-#define PF_INLINE static inline __attribute__((always_inline))
+#include "pfnoise_impl.h"
 
 _Static_assert((-3 >> 1) == -2, "signed right shift must be arithmetic (floor)");
-
-extern pf_noise_table pf_noise_default_ __attribute__((visibility("hidden")));
 
 /* G = f(t) - 1/2 in Q18 for the fraction t (Q16) of x, as s·(1 + r) with
  * r = 7/8 - z + z·q, q = (3/8)z - 1/4, z = 4s²: a = |s|·2^16 <= 2^15,

@@ -57,19 +57,6 @@ static void test_help(void **st)
     assert_non_null(strstr(R.out, "--order"));
 }
 
-static char *slurp(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return NULL;
-    static char buf[2][1 << 16];
-    static int which;
-    char *b = buf[which++ & 1];
-    *n = fread(b, 1, sizeof buf[0], f);
-    fclose(f);
-    return b;
-}
-
 /* Same command, byte-identical file; the file carries its provenance. */
 static void test_deterministic(void **st)
 {
@@ -80,7 +67,7 @@ static void test_deterministic(void **st)
     rename("/tmp/pf-det-a.c", "/tmp/pf-det-b.c");
     tu_run("pfmathgen", "--func log --order 10 -o /tmp/pf-det-a.c", &R);
     assert_int_equal(R.status, 0);
-    char *a = slurp("/tmp/pf-det-a.c", &n1), *b = slurp("/tmp/pf-det-b.c", &n2);
+    char *a = tu_slurp("/tmp/pf-det-a.c", &n1), *b = tu_slurp("/tmp/pf-det-b.c", &n2);
     assert_non_null(a);
     assert_non_null(b);
     assert_int_equal(n1, n2);
@@ -93,6 +80,8 @@ static void test_deterministic(void **st)
     assert_non_null(strstr(a, "0x1p+0f,")); /* c1 = 1 in hex-float */
     unlink("/tmp/pf-det-a.c");
     unlink("/tmp/pf-det-b.c");
+    free(a);
+    free(b);
 }
 
 static double json_num(const char *s, const char *key)

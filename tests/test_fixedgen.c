@@ -18,40 +18,6 @@
 static tu_run_result R;
 static char dir[64];
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = 0;
-    fclose(f);
-    return s;
-}
-
-/* the code without its comments */
-static char *strip_comments(const char *s)
-{
-    char *o = malloc(strlen(s) + 1), *q = o;
-    while (*s) {
-        if (s[0] == '/' && s[1] == '*') {
-            const char *e = strstr(s + 2, "*/");
-            s = e ? e + 2 : s + strlen(s);
-        } else if (s[0] == '/' && s[1] == '/') {
-            while (*s && *s != '\n')
-                s++;
-        } else {
-            *q++ = *s++;
-        }
-    }
-    *q = 0;
-    return o;
-}
-
 static int run_gen(const char *args, const char *out)
 {
     char a[1024];
@@ -84,10 +50,10 @@ static void test_sin_example(void **st)
     snprintf(out, sizeof out, "%s/my_sin.c", dir);
     const char *args = "--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --variant exact --name my_sin";
     assert_int_equal(run_gen(args, out), 0);
-    char *src = slurp(out);
+    char *src = tu_slurp(out, NULL);
     assert_non_null(src);
     /* integer-only C: no floating-point type, no <math.h>, in the code */
-    char *code = strip_comments(src);
+    char *code = tu_strip_comments(src);
     assert_null(strstr(code, "float"));
     assert_null(strstr(code, "double"));
     assert_null(strstr(code, "math.h"));
@@ -160,9 +126,9 @@ static void test_deterministic(void **st)
     snprintf(out, sizeof out, "%s/det.c", dir);
     const char *args = "--func exp --type 'fixed<15,11>' --out-type 'ufixed<16,8>'";
     assert_int_equal(run_gen(args, out), 0);
-    char *a = slurp(out);
+    char *a = tu_slurp(out, NULL);
     assert_int_equal(run_gen(args, out), 0);
-    char *b = slurp(out);
+    char *b = tu_slurp(out, NULL);
     assert_non_null(a);
     assert_non_null(b);
     assert_string_equal(a, b);

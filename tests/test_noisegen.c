@@ -22,37 +22,6 @@
 
 static tu_run_result R;
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = 0;
-    fclose(f);
-    return s;
-}
-
-/* the code without its comments */
-static char *strip_comments(const char *s)
-{
-    char *o = malloc(strlen(s) + 1), *q = o;
-    while (*s) {
-        if (s[0] == '/' && s[1] == '*') {
-            const char *e = strstr(s + 2, "*/");
-            s = e ? e + 2 : s + strlen(s);
-        } else {
-            *q++ = *s++;
-        }
-    }
-    *q = 0;
-    return o;
-}
-
 static uint64_t rng = 0x243f6a8885a308d3u;
 static uint64_t rnd(void)
 {
@@ -219,7 +188,7 @@ static void run_pair(const pair *p, const char *funcs, int seed)
     snprintf(args, sizeof args, "--func %s --type '%s' --out-type '%s' --name nz%s", funcs, p->in, p->out,
              seed ? " --seed 7" : "");
     assert_int_equal(gen(args, c), 0);
-    char *src = slurp(c);
+    char *src = tu_slurp(c, NULL);
     assert_non_null(src);
     /* the provenance: command and a measured error below 1 LSB per function */
     assert_non_null(strstr(src, "Regenerate:  pfmathgen --func"));
@@ -275,7 +244,7 @@ static void test_seed(void **st)
                          "/tmp/pf-nzg-s1.c"),
                      0);
     assert_int_equal(gen("--func noise3 --type 'fixed<15,8>' --out-type 'fixed<15,14>' --no-sweep", "/tmp/pf-nzg-s0.c"), 0);
-    char *a = slurp("/tmp/pf-nzg-s1.c"), *b = slurp("/tmp/pf-nzg-s0.c");
+    char *a = tu_slurp("/tmp/pf-nzg-s1.c", NULL), *b = tu_slurp("/tmp/pf-nzg-s0.c", NULL);
     char *ta = strstr(a, "pf_nz_hash[512]"), *tb = strstr(b, "pf_nz_hash[512]");
     assert_non_null(ta);
     assert_non_null(tb);
@@ -344,14 +313,14 @@ static void test_deterministic(void **st)
     const char *args = "--func noise2 --type 'fixed<15,12>' --out-type 'fixed<15,14>'";
     /* the same command (its -o is in the provenance) */
     assert_int_equal(gen(args, "/tmp/pf-nzg-d1.c"), 0);
-    char *a = slurp("/tmp/pf-nzg-d1.c");
+    char *a = tu_slurp("/tmp/pf-nzg-d1.c", NULL);
     assert_int_equal(gen(args, "/tmp/pf-nzg-d1.c"), 0);
-    char *b = slurp("/tmp/pf-nzg-d1.c");
+    char *b = tu_slurp("/tmp/pf-nzg-d1.c", NULL);
     assert_non_null(a);
     assert_non_null(b);
     assert_string_equal(a, b);
     /* integer only, nothing from libpfmath */
-    char *code = strip_comments(a);
+    char *code = tu_strip_comments(a);
     assert_null(strstr(code, "float"));
     assert_null(strstr(code, "double"));
     assert_null(strstr(code, "math.h"));

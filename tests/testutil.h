@@ -68,4 +68,42 @@ static inline int tu_count_lines(const char *s)
     return n;
 }
 
+/* The whole file, NUL-terminated (malloc'd; *n gets its size if n), or NULL. */
+static inline char *tu_slurp(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    long len = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *s = len >= 0 ? malloc((size_t)len + 1) : NULL;
+    size_t got = s ? fread(s, 1, (size_t)len, f) : 0;
+    fclose(f);
+    if (s)
+        s[got] = 0;
+    if (n)
+        *n = got;
+    return s;
+}
+
+/* C source without its comments (malloc'd), to check what the code uses. */
+static inline char *tu_strip_comments(const char *s)
+{
+    char *o = malloc(strlen(s) + 1), *q = o;
+    while (*s) {
+        if (s[0] == '/' && s[1] == '*') {
+            const char *e = strstr(s + 2, "*/");
+            s = e ? e + 2 : s + strlen(s);
+        } else if (s[0] == '/' && s[1] == '/') {
+            while (*s && *s != '\n')
+                s++;
+        } else {
+            *q++ = *s++;
+        }
+    }
+    *q = 0;
+    return o;
+}
+
 #endif
