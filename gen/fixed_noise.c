@@ -350,28 +350,11 @@ static void table(fx_buf *b, const char *name, const uint32_t *v, int n)
     fx_put(b, "\n};\n\n");
 }
 
-static const char common[] =
-    "#if defined(__GNUC__)\n"
-    "#define PF_NZ_INLINE static inline __attribute__((always_inline, unused))\n"
-    "#else\n"
-    "#define PF_NZ_INLINE static inline\n"
-    "#endif\n"
-    "#if defined(__GNUC__) && !defined(__clang__)\n"
-    "#pragma GCC optimize(\"tree-vectorize\")\n"
-    "#endif\n\n"
-    "PF_NZ_INLINE int64_t pf_nz_i64(uint64_t u)\n"
-    "{\n"
-    "    return u <= (uint64_t)INT64_MAX ? (int64_t)u : -(int64_t)~u - 1;\n"
-    "}\n\n"
-    "/* RNE(p / 2^s) for |p| <= 2^62, 1 <= s <= 62: p biased by 2^63, so the\n"
-    "   shift is of an unsigned value (2^(63-s), the biased quotient's offset,\n"
-    "   is even: the parity test sees the true quotient's lsb) */\n"
-    "PF_NZ_INLINE int64_t pf_nz_rne(int64_t p, int s)\n"
-    "{\n"
-    "    uint64_t u = (uint64_t)p + ((uint64_t)1 << 63);\n"
-    "    u += ((uint64_t)1 << (s - 1)) - 1 + ((u >> s) & 1);\n"
-    "    return pf_nz_i64((u >> s) - ((uint64_t)1 << (63 - s)));\n"
-    "}\n\n";
+/* the shared integer helpers (pf_fx_i64, pf_fx_rne, ...) of every emitted
+   fixed-point function, then what only the noise loops need */
+static const char vectorize[] = "#if defined(__GNUC__) && !defined(__clang__)\n"
+                                "#pragma GCC optimize(\"tree-vectorize\")\n"
+                                "#endif\n\n";
 
 static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
 {
@@ -387,7 +370,7 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
               "/* f(t) = 6t^5 - 15t^4 + 10t^3, t in ufixed<%d,%d>: Horner with the step formats of the\n"
               "   bit-width analysis; f in fixed<%d,%d> (error <= %.3e) */\n",
               d->T, d->T, d->Ef + 1, d->Ef, d->eps_h);
-    fx_printf(b, "PF_NZ_INLINE %s %s_fade(%s t)\n{\n    %s p = %lld;\n", V, N, V, V, (long long)d->C[5]);
+    fx_printf(b, "PF_FX_INLINE %s %s_fade(%s t)\n{\n    %s p = %lld;\n", V, N, V, V, (long long)d->C[5]);
     for (int k = 4; k >= 0; k--) {
         char add[80] = "";
         if (d->C[k]) {
@@ -397,13 +380,13 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
         if (d->st[k].shift == 0)
             fx_printf(b, "    p = p * t%s;\n", add);
         else
-            fx_printf(b, "    p = (%s)pf_nz_rne((int64_t)p * t, %d)%s;\n", V, d->st[k].shift, add);
+            fx_printf(b, "    p = (%s)pf_fx_rne((int64_t)p * t, %d)%s;\n", V, d->st[k].shift, add);
     }
     fx_put(b, "    return p;\n}\n\n");
     /* split */
     fx_printf(b,
               "/* cell floor(x 2^-%d) mod 256; offsets d0 = t, d1 = t - 1 in %d fraction bits; fade f(t) */\n"
-              "PF_NZ_INLINE uint32_t %s_split(%s x, %s *d0, %s *d1, %s *f)\n{\n",
+              "PF_FX_INLINE uint32_t %s_split(%s x, %s *d0, %s *d1, %s *f)\n{\n",
               F, d->Dd, N, IT, V, V, V);
     if (G->in.is_signed)
         fx_printf(b, "    %s u = (%s)(%s)x;\n", UW, UW, SW);
@@ -418,30 +401,30 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
         lit(l, sizeof l, (int64_t)1 << (d->Dd - F), w64);
         fx_printf(b, "    *d0 = (%s)t * %s;\n    *d1 = ((%s)t - %s) * %s;\n", V, l, V, l2, l);
     } else {
-        fx_printf(b, "    *d0 = (%s)pf_nz_rne((int64_t)t, %d);\n", V, F - d->Dd);
-        fx_printf(b, "    *d1 = (%s)pf_nz_rne((int64_t)t - %s, %d);\n", V, l2, F - d->Dd);
+        fx_printf(b, "    *d0 = (%s)pf_fx_rne((int64_t)t, %d);\n", V, F - d->Dd);
+        fx_printf(b, "    *d1 = (%s)pf_fx_rne((int64_t)t - %s, %d);\n", V, l2, F - d->Dd);
     }
     if (d->T == F)
         fx_printf(b, "    *f = %s_fade((%s)t);\n", N, V);
     else
-        fx_printf(b, "    *f = %s_fade((%s)pf_nz_rne((int64_t)t, %d));\n", N, V, F - d->T);
+        fx_printf(b, "    *f = %s_fade((%s)pf_fx_rne((int64_t)t, %d));\n", N, V, F - d->T);
     fx_printf(b, "    return (uint32_t)(u >> %d) & 255u;\n}\n\n", F);
     /* lerp and gradient */
     fx_printf(b,
               "/* a + f (b - a), one rounding: f has %d fraction bits */\n"
-              "PF_NZ_INLINE %s %s_lerp(%s f, %s a, %s b)\n{\n"
-              "    return a + (%s)pf_nz_rne((int64_t)f * (b - a), %d);\n}\n\n",
+              "PF_FX_INLINE %s %s_lerp(%s f, %s a, %s b)\n{\n"
+              "    return a + (%s)pf_fx_rne((int64_t)f * (b - a), %d);\n}\n\n",
               d->Ef, V, N, V, V, V, V, d->Ef);
     if (d->n > 1)
         fx_printf(b,
                   "/* (k - 1) d for the 2-bit gradient field k of code c at bit s */\n"
-                  "PF_NZ_INLINE %s %s_gd(uint32_t c, int s, %s d)\n{\n"
+                  "PF_FX_INLINE %s %s_gd(uint32_t c, int s, %s d)\n{\n"
                   "    return ((%s)((c >> s) & 3u) - 1) * d;\n}\n\n",
                   V, N, V, V);
     /* core */
     char targs[200];
     args_text(G, d->n, targs, sizeof targs, 0);
-    fx_printf(b, "PF_NZ_INLINE %s %s_core(%s)\n{\n", V, N, targs);
+    fx_printf(b, "PF_FX_INLINE %s %s_core(%s)\n{\n", V, N, targs);
     const char *g = d->n == 1 ? "pf_nz_g1" : d->n == 2 ? "pf_nz_g2" : d->n == 3 ? "pf_nz_g3" : "pf_nz_g4";
     switch (d->n) {
     case 1:
@@ -524,7 +507,7 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
         lit(l, sizeof l, d->c23, w64);
         fx_printf(b,
                   "    /* 2/3 as in the float version: %s = RNE(2/3 2^%d) */\n"
-                  "    return (%s)pf_nz_rne((int64_t)%s_lerp(fw, e[0], e[1]) * %s, %d);\n}\n\n",
+                  "    return (%s)pf_fx_rne((int64_t)%s_lerp(fw, e[0], e[1]) * %s, %d);\n}\n\n",
                   l, d->S, V, N, l, d->S);
         break;
     }
@@ -534,7 +517,7 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
         sh = 62; /* |v| < 2^(D+2) <= 2^61: RNE(v 2^-sh) is 0 for every sh >= 62 */
     /* |result| <= 2.01 2^Eo + 1: clamp only where the type is narrower */
     int64_t R = G->Eo >= 0 ? (int64_t)ceil(2.01 * ldexp(1.0, G->Eo)) + 1 : 2;
-    fx_printf(b, "PF_NZ_INLINE %s %s_out(%s v)\n{\n    int64_t r = pf_nz_rne((int64_t)v, %d);\n", G->ot, N, V, sh);
+    fx_printf(b, "PF_FX_INLINE %s %s_out(%s v)\n{\n    int64_t r = pf_fx_rne((int64_t)v, %d);\n", G->ot, N, V, sh);
     if (G->omax < R) {
         lit(l, sizeof l, G->omax, 1);
         fx_printf(b, "    r = r > %s ? %s : r;\n", l, l);
@@ -573,7 +556,8 @@ static char *emit(const nz_gen *G, size_t *len)
 {
     fx_buf b = {0};
     provenance(&b, G);
-    fx_put(&b, common);
+    fx_put(&b, fx_template("fx_common.h"));
+    fx_put(&b, vectorize);
     int need[5] = {0};
     for (int i = 0; i < G->nd; i++)
         need[G->d[i].n] = 1;
