@@ -121,7 +121,11 @@ static void emit(sbuf *b, const pf_gen_result *r, const char *command)
     sb_printf(b, " *\n * Regenerate:  %s\n", command);
     sb_printf(b, " * Reduction:   %s\n", s->reduction_text);
     sb_printf(b, " * Domain:      %s on t in [%s, %s]  (%.9g .. %.9g)\n", s->target_text, ha, hb, s->a, s->b);
-    sb_printf(b, " * Order:       %d (float coefficients, Horner in %s)\n", r->order, s->real);
+    sb_printf(b, " * Order:       %d (float coefficients, Horner in %s)\n", r->order,
+              !strcmp(s->real, "fma") ? "float with fmaf" : s->real);
+    if (r->has_scheme)
+        sb_printf(b, " * Evaluation:  %s\n * Error model: at most %.3f ULP (fit error and every rounding of the scheme)\n",
+                  r->scheme.text, r->scheme.bound_ulp);
     sb_printf(b, " * Method:      %s\n", method_text(r));
     sb_printf(b, " * Constraints: %s\n", con);
     sb_printf(b, " * Max %s error of this polynomial on the domain: %.3e (2^%.2f) at t = %s\n",
@@ -165,10 +169,13 @@ static void emit(sbuf *b, const pf_gen_result *r, const char *command)
         sb_put(b, xb, (size_t)(xn > 0 ? xn : 0));
         free(xb);
     }
-    char ncoef[16];
+    char ncoef[16], ncomp[16];
     snprintf(ncoef, sizeof ncoef, "%d", nco);
-    const char *kv[] = {"NAME", r->name, "REAL", s->real, "HORNER",
-                        !strcmp(s->real, "double") ? "pf_horner_d" : "pf_horner_f", "NCOEF", ncoef,
+    snprintf(ncomp, sizeof ncomp, "%d", r->has_scheme ? r->scheme.ncomp : 0);
+    const char *horner = !strcmp(s->real, "double") ? "pf_horner_d"
+                       : !strcmp(s->real, "fma")    ? "pf_horner_fma" : "pf_horner_f";
+    const char *kv[] = {"NAME", r->name, "REAL", !strcmp(s->real, "fma") ? "float" : s->real,
+                        "HORNER", horner, "NCOEF", ncoef, "NCOMP", ncomp,
                         "KSCALE", s->kscale ? s->kscale : "1", "PSCALE", s->pscale ? s->pscale : "1", NULL};
     char tname[128];
     snprintf(tname, sizeof tname, "%s.c", s->tmpl);
@@ -296,6 +303,13 @@ int pf_generate(const pf_gen_req *rq, pf_gen_result *r, char *err, size_t errlen
             return -1;
     }
     r->order = order;
+    if (s->model) {
+        if (s->model(&r->poly, order, &r->scheme) != 0) {
+            snprintf(err, errlen, "%s", r->scheme.text);
+            return -1;
+        }
+        r->has_scheme = 1;
+    }
     sbuf b = {0};
     emit(&b, r, rq->command);
     if (rq->sweep) {
@@ -358,6 +372,8 @@ void pf_report_text(FILE *o, const pf_gen_result *r)
         pf_sweep_print(o, "  ULP sweep of the emitted function", (pf_func)pfref_lookup(s->func), &r->sweep);
         fprintf(o, "    (%s)\n", r->sweep_desc);
     }
+    if (r->has_scheme)
+        fprintf(o, "  evaluation   %s\n  error model  at most %.3f ULP\n", r->scheme.text, r->scheme.bound_ulp);
 }
 
 void pf_report_json(FILE *o, const pf_gen_result *r)

@@ -38,6 +38,8 @@ typedef struct {
     int swept;
     pf_sweep_stats sweep;
     char sweep_desc[160];
+    int has_scheme;       /* the spec has a model: scheme below is filled */
+    pf_scheme scheme;
 } pf_gen_result;
 
 int pf_generate(const pf_gen_req *rq, pf_gen_result *res, char *err, size_t errlen);

@@ -48,6 +48,39 @@ static inline PF_UNUSED float pf_horner_f(float r, const float *c, int n)
     return s;
 }
 
+/* Float Horner with explicit fmaf: fmaf is correctly rounded on every
+   target, so the AVX-512 and AVX2 clones (one vfmadd a step) and a build
+   without FMA hardware (the C library's fmaf) give the same bits. */
+static inline PF_UNUSED float pf_horner_fma(float r, const float *c, int n)
+{
+    float s = c[n - 1];
+#pragma GCC unroll 32
+    for (int k = n - 2; k >= 0; k--)
+        s = fmaf(s, r, c[k]);
+    return s;
+}
+
+/* Double-float (hi + lo) steps for the few places an error model says float
+   is not enough.  Both parts are exact transformations (Dekker, Knuth):
+   pf_two_prod's lo is the exact rounding error of a*b (one fmaf),
+   pf_fast_two_sum's the exact error of a+b when |a| >= |b| or a = 0. */
+typedef struct { float hi, lo; } pf_ff;
+static inline PF_UNUSED pf_ff pf_two_prod(float a, float b)
+{
+    float p = a * b;
+    return (pf_ff){p, fmaf(a, b, -p)};
+}
+static inline PF_UNUSED pf_ff pf_fast_two_sum(float a, float b)
+{
+    float s = a + b;
+    return (pf_ff){s, b - (s - a)};
+}
+static inline PF_UNUSED pf_ff pf_two_sum(float a, float b)
+{
+    float s = a + b, bb = s - a;
+    return (pf_ff){s, (a - (s - bb)) + (b - bb)};
+}
+
 static inline PF_UNUSED uint32_t pf_asuint(float x) { uint32_t u; memcpy(&u, &x, sizeof u); return u; }
 static inline PF_UNUSED float pf_asfloat(uint32_t u) { float x; memcpy(&x, &u, sizeof x); return x; }
 
@@ -94,6 +127,11 @@ static inline float pf_atanf_inline(float x)
     return pf_asfloat(pf_asuint((float)r) | (ix & 0x80000000u));
 }
 
+/* The scalar form is cloned too, so that fmaf is one instruction where the
+   CPU has FMA (the result is the same on every clone). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#endif
 float pf_atanf(float x)
 {
     return pf_atanf_inline(x);
