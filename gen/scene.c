@@ -154,28 +154,68 @@ static int parse_line(scene *S, char *p, int ln, scene_entry *x)
         snprintf(x->name, sizeof x->name, "%s%s%s_%s_%s", S->prefix, x->func, fast ? "_fast" : "", a, b);
     }
     if (pf_check_name("function name", x->name, err, sizeof err))
-        return fail(S, ln, "%s (choose a shorter --prefix)", err);
+        return fail(S, ln, "%s (choose another --prefix)", err);
     for (int j = 0; j < S->ne; j++)
         if (!strcmp(S->e[j].name, x->name))
             return fail(S, ln, "duplicate entry %s (line %d)", x->name, S->e[j].line);
     return 0;
 }
 
-/* Lines of any length; a NUL byte is refused (a scene is text). */
+/* One line of any length into *line (grown as needed), without its '\n'.
+ * Returns 1 for a line, 0 at the end, -1 for a NUL byte (found as it is
+ * read: /dev/zero fails at once), -2 past MAX_SCENE bytes, -3 read error. */
+#define MAX_SCENE (16u << 20)
+static int read_line(FILE *f, char **line, size_t *cap, size_t *total)
+{
+    size_t n = 0;
+    int c;
+    while ((c = getc(f)) != EOF && c != '\n') {
+        if (c == 0)
+            return -1;
+        if (++*total > MAX_SCENE)
+            return -2;
+        if (n + 2 > *cap) {
+            size_t nc = *cap ? 2 * *cap : 256;
+            char *p = realloc(*line, nc);
+            if (!p)
+                return -2;
+            *line = p;
+            *cap = nc;
+        }
+        (*line)[n++] = (char)c;
+    }
+    if (ferror(f))
+        return -3;
+    if (c == EOF && n == 0)
+        return 0;
+    if (!*line && !(*line = malloc(*cap = 16)))
+        return -2;
+    (*line)[n] = 0;
+    return 1;
+}
+
+/* Every line checked before anything is generated. */
 static int parse(scene *S)
 {
     FILE *f = fopen(S->scene, "r");
     if (!f)
         return fail(S, 0, "cannot read the scene file (%s)", strerror(errno));
     char *line = NULL;
-    size_t cap = 0;
-    ssize_t n;
-    int ln = 0, rc = 0;
+    size_t cap = 0, total = 0;
+    int ln = 0, rc = 0, got;
     S->ne = 0;
-    while (!rc && (n = getline(&line, &cap, f)) >= 0) {
+    while (!rc && (got = read_line(f, &line, &cap, &total)) != 0) {
         ln++;
-        if (memchr(line, 0, (size_t)n)) {
+        if (got == -1) {
             rc = fail(S, ln, "a NUL byte: a scene file is text");
+            break;
+        }
+        if (got == -2) {
+            rc = fail(S, ln, "the scene file is over %u MiB", MAX_SCENE >> 20);
+            break;
+        }
+        if (got == -3) {
+            rc = fail(S, 0, "cannot read the scene file (%s)", strerror(errno));
             break;
         }
         char *h = strchr(line, '#');
@@ -194,8 +234,6 @@ static int parse(scene *S)
         if (!rc)
             S->ne++;
     }
-    if (!rc && ferror(f))
-        rc = fail(S, 0, "cannot read the scene file");
     free(line);
     fclose(f);
     if (!rc && S->ne == 0)
@@ -360,8 +398,8 @@ static void default_prefix(const char *scene, char *out, size_t n)
 {
     const char *b = strrchr(scene, '/') ? strrchr(scene, '/') + 1 : scene;
     size_t k = 0;
-    if (isdigit((unsigned char)*b) || *b == '_' || *b == '.' || !*b)
-        out[k++] = 's'; /* a letter first: never a reserved _X or __ name */
+    if (!(isascii((unsigned char)*b) && isalpha((unsigned char)*b)))
+        out[k++] = 's'; /* a letter first: never a digit, nor a reserved _X or __ name */
     for (; *b && *b != '.' && k + 2 < n && k < 40; b++)
         out[k++] = isascii((unsigned char)*b) && isalnum((unsigned char)*b) ? *b : '_';
     out[k++] = '_';
