@@ -488,12 +488,22 @@ int pf_scene_run(const pf_request *rq)
     for (size_t l = strlen(dir); l > 1 && dir[l - 1] == '/'; l--)
         dir[l - 1] = 0;
     S->dir = dir;
-    if (rq->prefix)
-        snprintf(S->prefix, sizeof S->prefix, "%s", rq->prefix);
-    else
-        default_prefix(rq->scene, S->prefix, sizeof S->prefix);
     int exists = 0, rc = 0;
-    if (!*dir)
+    if (rq->prefix) {
+        /* a name's beginning: identifier characters, not reserved, and not
+           libpfmath's own pf_ alone (the collision scenes avoid) */
+        const char *p = rq->prefix;
+        if (!pf_cli_is_identifier(p) || strlen(p) > 60 || !strcmp(p, "pf_") ||
+            (p[0] == '_' && (p[1] == '_' || isupper((unsigned char)p[1]))))
+            rc = fail(S, 0, "bad --prefix '%.80s': letters, digits and '_' (at most 60, not starting with a digit, "
+                      "__ or _ and a capital), and not pf_ alone",
+                      p);
+        else
+            snprintf(S->prefix, sizeof S->prefix, "%s", p);
+    } else {
+        default_prefix(rq->scene, S->prefix, sizeof S->prefix);
+    }
+    if (!rc && !*dir)
         rc = fail(S, 0, "-o: empty directory name");
     if (!rc)
         rc = parse(S);

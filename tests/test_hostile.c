@@ -348,6 +348,17 @@ static void test_item13_scene_links_with_libpfmath(void **st)
     assert_non_null(strstr(h, "float ripple_sinf_fast(float x);"));
     assert_null(strstr(h, " pf_"));
     free(h);
+    /* --prefix: a chosen prefix; never empty or pf_ alone */
+    puts_file("s.scene", cheap_scene);
+    GEN("--scene", "s.scene", "-o", "p", "--prefix", "my_");
+    assert_int_equal(R.status, 0);
+    assert_true(exists("p/my_sqrt_u8_8_u8_8.c"));
+    const char *badp[] = {"", "pf_", "a b", "9x", "__x", "x'"};
+    for (size_t i = 0; i < sizeof badp / sizeof badp[0]; i++) {
+        GEN("--scene", "s.scene", "-o", "q", "--prefix", badp[i]);
+        expect2();
+        assert_false(exists("q"));
+    }
     puts_file("main.cpp", "#include \"scene.h\"\n#include \"pfmath.h\"\n#include <cstdio>\n"
                           "int main() { std::printf(\"%d\\n\", ripple_sinf_fast(0.5f) == pf_sinf_fast(0.5f)); }\n");
     char lib[PATH_MAX], inc[PATH_MAX + 8], src[PATH_MAX];
