@@ -177,5 +177,10 @@ int main(int argc, char **argv)
     default: rc = run_fixed(&rq); break;
     }
     pf_request_free(&rq);
+    /* C or JSON on a full disk or a closed pipe is a failure, not success */
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        pf_say("cannot write the standard output");
+        rc = rc ? rc : 1;
+    }
     return rc;
 }

@@ -377,7 +377,9 @@ static void test_item13_scene_links_with_libpfmath(void **st)
     const char *c[] = {"cc", "-std=c17", "-O2", "-c", "out/ripple_sinf_fast.c", "-o", "s.o", NULL};
     tu_execvp_in(scratch, c, &R);
     assert_int_equal(R.status, 0);
-    const char *l[] = {"g++", "main.o", "s.o", lib, "-lm", "-o", "prog", NULL};
+    /* the ASan tree's libpfmath.a needs the sanitizers' run time */
+    const char *san = strstr(lib, "/asan/") ? "-fsanitize=address,undefined" : "-lm";
+    const char *l[] = {"g++", "main.o", "s.o", lib, "-lm", san, "-o", "prog", NULL};
     tu_execvp_in(scratch, l, &R);
     print_message("%s", R.err);
     assert_int_equal(R.status, 0);
