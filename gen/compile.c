@@ -1,6 +1,9 @@
 #include "compile.h"
 
+#include "subproc.h"
+
 #include <dlfcn.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,15 +12,24 @@
 
 static void *build_and_load(const char *dir, const char *cpath, char *err, size_t errlen)
 {
-    char so[4200], cmd[9000], log[4200];
+    char so[4200], log[4200];
     snprintf(so, sizeof so, "%s/f.so", dir);
     snprintf(log, sizeof log, "%s/cc.log", dir);
-    const char *cc = getenv("CC");
-    if (!cc || !*cc)
-        cc = "cc";
-    snprintf(cmd, sizeof cmd, "%s -std=c17 -O2 -fPIC -shared -o '%s' '%s' -lm >'%s' 2>&1", cc, so,
-             cpath, log);
-    int rc = system(cmd);
+    /* $CC's words, then the fixed flags and our own file names: no shell */
+    pf_argv a;
+    int rc = 127;
+    int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    if (pf_argv_cc(&a) == 0) {
+        const char *args[] = {"-std=c17", "-O2", "-fPIC", "-shared", "-o", so, cpath, "-lm"};
+        int ok = 1;
+        for (size_t i = 0; i < sizeof args / sizeof args[0]; i++)
+            ok &= pf_argv_push(&a, args[i]) == 0;
+        if (ok && fd >= 0)
+            rc = pf_spawn(a.v, -1, fd, fd);
+    }
+    if (fd >= 0)
+        close(fd);
+    const char *cc = a.v && a.v[0] ? a.v[0] : "cc";
     void *h = NULL;
     if (rc != 0) {
         char first[300] = "";
@@ -28,12 +40,14 @@ static void *build_and_load(const char *dir, const char *cpath, char *err, size_
             fclose(f);
         }
         first[strcspn(first, "\n")] = 0;
-        snprintf(err, errlen, "compiling with '%s' failed: %s", cc, first[0] ? first : "(no output)");
+        snprintf(err, errlen, "compiling with '%s' failed: %s", cc,
+                 first[0] ? first : rc == 127 ? "cannot run it (pfmathgen needs a C compiler; set CC)" : "(no output)");
     } else {
         h = dlopen(so, RTLD_NOW | RTLD_LOCAL);
         if (!h)
             snprintf(err, errlen, "dlopen: %s", dlerror());
     }
+    pf_argv_free(&a);
     unlink(so);
     unlink(log);
     return h;

@@ -114,7 +114,6 @@ extern const fx_func fx_func_sin, fx_func_cos, fx_func_exp, fx_func_exp2, fx_fun
     fx_func_sqrt;
 const fx_func *fx_func_find(const char *name);
 const char *fx_func_list(void);
-void fx_parse_type(const char *what, const char *s, pf_type *t);
 
 /* ---- helpers (gen/fixed_core.c) ---- */
 double fx_lsb(const fx_gen *G);                 /* output lsb 2^-Eo */
@@ -131,10 +130,9 @@ double fx_out_max(const fx_gen *G);
 /* the fixed-point front end's --help text (gen/fixedgen.c) */
 const char *fx_usage_text(void);
 
-/* gradient noise (gen/fixed_noise.c): fx_noise_is("noise3") etc.;
- * fx_noise_main is pfmathgen for --func noise1..noise4 / noise, any types */
+/* gradient noise (gen/fixed_noise.c): fx_noise_is("noise3") etc.; the
+ * generator is pf_run_noise (gen/request.h) */
 int fx_noise_is(const char *func);
-int fx_noise_main(int argc, char **argv);
 
 /* the whole generation (gen/fixed_core.c) */
 int fx_generate(fx_gen *G, int sweep, char *err, size_t errlen);

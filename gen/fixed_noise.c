@@ -43,8 +43,8 @@
  * type's extremes and seeded random points; the scalar and array forms
  * must agree bit for bit and every error must be < 1 LSB (and within the
  * bound), else pfmathgen fails (status 1). */
-#include "cli.h"
 #include "compile.h"
+#include "request.h"
 #include "fixed_internal.h"
 #include "fixedgen.h"
 #include "fixedtype.h"
@@ -54,8 +54,6 @@
 #include "pfref_noise.h"
 
 #include <dlfcn.h>
-#include <errno.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -786,89 +784,23 @@ int fx_noise_is(const char *func)
                                                 !func[6])));
 }
 
-int fx_noise_main(int argc, char **argv)
+/* The noise generator for one request checked by gen/request.c (types,
+ * variant, exp range, name length). */
+int pf_run_noise(const pf_request *rq, FILE *rep, char **src, size_t *len, char *err, size_t errlen)
 {
-    static const struct option opts[] = {
-        {"func", required_argument, 0, 'f'},        {"variant", required_argument, 0, 'v'},
-        {"type", required_argument, 0, 't'},        {"out-type", required_argument, 0, 'O'},
-        {"name", required_argument, 0, 'N'},        {"output", required_argument, 0, 'o'},
-        {"seed", required_argument, 0, 's'},        {"no-sweep", no_argument, 0, 'S'},
-        {"help", no_argument, 0, 'h'},              {"order", required_argument, 0, 'X'},
-        {"method", required_argument, 0, 'X'},      {"reduction", required_argument, 0, 'X'},
-        {"target", required_argument, 0, 'X'},      {"max-rel-err", required_argument, 0, 'X'},
-        {"max-abs-err", required_argument, 0, 'X'}, {"plot", required_argument, 0, 'X'},
-        {"json", no_argument, 0, 'Y'},              {0, 0, 0, 0}};
-    const char *func = NULL, *type_s = NULL, *out_s = NULL, *name = NULL, *out = NULL;
-    int sweep = 1;
+    *src = NULL;
+    /* one generation's state is large: static, and reset for every request
+       (a scene runs several in one process) */
     static nz_gen Gs;
     nz_gen *G = &Gs;
     memset(G, 0, sizeof *G);
-    opterr = 0;
-    optind = 1;
-    int c;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
-        switch (c) {
-        case 'f': func = optarg; break;
-        case 'v':
-            if (strcmp(optarg, "exact"))
-                pf_cli_die2("noise has only the exact variant (within 1 LSB), not '%s'%s", optarg, "");
-            break;
-        case 't': type_s = optarg; break;
-        case 'O': out_s = optarg; break;
-        case 'N':
-            if (!pf_cli_is_identifier(optarg))
-                pf_cli_die2("bad --name '%s': not a C identifier%s", optarg, "");
-            name = optarg;
-            break;
-        case 'o': out = optarg; break;
-        case 's': {
-            char *end;
-            errno = 0;
-            unsigned long long v = strtoull(optarg, &end, 0);
-            if (errno || end == optarg || *end || optarg[0] == '-')
-                pf_cli_die2("bad --seed '%s': expected an unsigned 64-bit integer%s", optarg, "");
-            G->seeded = 1;
-            G->seed = v;
-            break;
-        }
-        case 'S': sweep = 0; break;
-        case 'X':
-            pf_cli_die2("%s does not apply to noise (a fixed method: gradient noise within 1 LSB)%s",
-                        argv[optind - 1][0] == '-' ? argv[optind - 1] : argv[optind - 2], "");
-            break;
-        case 'Y': pf_cli_die2("--json is not available for noise%s%s", "", ""); break;
-        case 'h': fputs(fx_usage_text(), stdout); return 0;
-        case ':': pf_cli_die2("option '%s' needs an argument%s", argv[optind - 1], ""); break;
-        default: pf_cli_die2("unknown option '%s' (see --help)%s", argv[optind - 1], ""); break;
-        }
-    }
-    if (optind < argc)
-        pf_cli_die2("unexpected argument '%s' (see --help)%s", argv[optind], "");
-    if (!fx_noise_is(func))
-        pf_cli_die2("unknown noise function '%s' (noise1, noise2, noise3, noise4 or noise)%s", func ? func : "", "");
-    if (!type_s && !out_s)
-        pf_cli_die2("%s needs a fixed-point --type (float noise is pf_noise1f … pf_noise4f in libpfmath)%s", func, "");
-    if (type_s)
-        fx_parse_type("--type", type_s, &G->in);
-    if (out_s)
-        fx_parse_type("--out-type", out_s, &G->out);
-    if (!type_s)
-        G->in = G->out;
-    if (!out_s)
-        G->out = G->in;
-    if (G->in.is_float || G->out.is_float)
-        pf_cli_die2("%s is generated for fixed-point types only; float noise is pf_noise1f … pf_noise4f in "
-                    "libpfmath (pfnoise.h)%s",
-                    func, "");
+    const char *func = rq->func;
+    G->in = rq->in;
+    G->out = rq->out;
+    G->seeded = rq->seeded;
+    G->seed = rq->seed;
     pf_type_format(&G->in, G->in_text, sizeof G->in_text);
     pf_type_format(&G->out, G->out_text, sizeof G->out_text);
-    /* storage over 32 bits was refused by fx_parse_type */
-    if (G->in.exp <= 0)
-        pf_cli_die2("input %s has no fraction bits (exp <= 0): every input is a lattice point, where the noise "
-                    "is identically 0%s",
-                    G->in_text, "");
-    if (G->in.exp > 62)
-        pf_cli_die2("input %s: exp > 62 is not supported (the fraction must fit a 64-bit word)%s", G->in_text, "");
     G->F = G->in.exp;
     G->Eo = G->out.exp;
     G->omin = pf_type_min_stored(&G->out);
@@ -886,54 +818,35 @@ int fx_noise_main(int argc, char **argv)
         d->n = all ? i + 1 : func[5] - '0';
         char fn[16];
         snprintf(fn, sizeof fn, "noise%d", d->n);
-        if (name && all)
-            snprintf(d->name, sizeof d->name, "%s%d", name, d->n);
-        else if (name)
-            snprintf(d->name, sizeof d->name, "%s", name);
+        if (rq->name && all)
+            snprintf(d->name, sizeof d->name, "%s%d", rq->name, d->n);
+        else if (rq->name)
+            snprintf(d->name, sizeof d->name, "%s", rq->name);
         else
             pf_fixed_default_name(fn, &G->in, &G->out, 0, d->name, sizeof d->name);
         double best;
         if (plan_dim(G, d, &best) != 0) {
-            /* pf_cli_die2's convention (one line, status 2), with numbers */
-            fprintf(stderr,
-                    "pfmathgen: impossible: %s %s -> %s needs an error below 1/2 LSB = 2^-%d before the final "
-                    "rounding; with 64-bit words and products the best bound is %.3g LSB\n",
-                    fn, G->in_text, G->out_text, G->Eo + 1, best);
-            exit(2);
+            snprintf(err, errlen,
+                     "impossible: %s %s -> %s needs an error below 1/2 LSB = 2^-%d before the final rounding; with "
+                     "64-bit words and products the best bound is %.3g LSB",
+                     fn, G->in_text, G->out_text, G->Eo + 1, best);
+            return 2;
         }
     }
-    char *cmd = pf_cli_command_line(argc, argv);
-    G->command = cmd;
-    char err[600];
-    if (sweep && measure(G, err, sizeof err) != 0) {
-        fprintf(stderr, "pfmathgen: %s\n", err);
-        free(cmd);
+    G->command = rq->command;
+    if (rq->sweep && measure(G, err, errlen) != 0)
         return 1;
-    }
     for (int i = 0; i < G->nd && G->swept; i++) {
         const nz_dim *d = &G->d[i];
         if (d->mismatch || d->over) {
-            report(stderr, G);
-            fprintf(stderr, "pfmathgen: internal failure: %s: %s (max %.4f LSB)\n", d->name,
-                    d->mismatch ? "the scalar and array forms differ" : "an error reaches 1 LSB or exceeds the bound",
-                    d->max_err);
-            free(cmd);
+            report(rep, G);
+            snprintf(err, errlen, "internal failure: %s: %s (max %.4f LSB)", d->name,
+                     d->mismatch ? "the scalar and array forms differ" : "an error reaches 1 LSB or exceeds the bound",
+                     d->max_err);
             return 1;
         }
     }
-    size_t len;
-    char *src = emit(G, &len);
-    report(stderr, G);
-    int ret = 0;
-    if (out) {
-        if (pf_cli_write_atomically(out, src, len) != 0) {
-            fprintf(stderr, "pfmathgen: cannot write %s\n", out);
-            ret = 1;
-        }
-    } else {
-        fwrite(src, 1, len, stdout);
-    }
-    free(src);
-    free(cmd);
-    return ret;
+    *src = emit(G, len);
+    report(rep, G);
+    return 0;
 }

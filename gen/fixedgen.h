@@ -1,18 +1,11 @@
 /* Fixed-point generation: pfmathgen with a fixed<size,exp> --type or
- * --out-type hands the whole command line to pfmathgen_fixed_main. */
+ * --out-type runs pf_run_fixed (gen/request.h) on its checked request. */
 #ifndef PF_FIXEDGEN_H
 #define PF_FIXEDGEN_H
 
 #include "fixedtype.h"
 
 #include <stddef.h>
-
-/* Same conventions as pfmathgen: 0 ok, 2 bad usage/impossible request
- * (one line on stderr, nothing written), 1 internal failure. */
-int pfmathgen_fixed_main(int argc, char **argv);
-
-/* 1 when the command line asks for fixed point (a fixed --type/--out-type). */
-int pfmathgen_wants_fixed(int argc, char **argv);
 
 /* Default names: pf_<func>_<in>_<out>[_fast], or pf_<func>_<t>[_fast] when
  * both types are the same, where a type's tag is q<exp> (signed) or

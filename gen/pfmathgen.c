@@ -1,20 +1,14 @@
 /* pfmathgen: fit, report and emit C for one function.  See --help. */
-#include "cli.h"
-#include "fixedgen.h"
-#include "fixedtype.h"
+#include "fixed_internal.h"
 #include "generate.h"
+#include "output.h"
 #include "plot.h"
+#include "request.h"
 #include "scene.h"
 
-#include <math.h>
-
-#include <ctype.h>
-#include <errno.h>
-#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 static const char usage[] =
     "usage: pfmathgen --func NAME [options]\n"
@@ -39,8 +33,10 @@ static const char usage[] =
     "                      (absolute error below half an LSB of the output)\n"
     "  --max-rel-err E     the same with a relative error bound (1e-4, 2^-12)\n"
     "  --max-abs-err E     the same with an absolute error bound\n"
-    "  --name NAME         emitted function name (default pf_<func>f, pf_<func>f_fast)\n"
-    "  -o, --output FILE   write the C source to FILE (nothing is written on error)\n"
+    "  --name NAME         emitted function name (default pf_<func>f, pf_<func>f_fast): a C\n"
+    "                      identifier, not a keyword, at most 100 characters\n"
+    "  -o, --output FILE   write the C source to FILE (nothing is written on error; see\n"
+    "                      \"Output rules\" in the README)\n"
     "  --json              print the report as one JSON object on stdout instead of C\n"
     "  --plot FILE.svg     draw the error of the emitted polynomial over its domain;\n"
     "                      with --variant both, exact and fast side by side (then\n"
@@ -53,178 +49,138 @@ static const char usage[] =
     "                      'function exact|fast in-type out-type' a line, or\n"
     "                      'noiseN in-type out-type'), each at\n"
     "                      the smallest order meeting its output type, plus scene.h\n"
-    "                      and report.txt\n"
+    "                      and report.txt; DIR may exist (files are replaced one by one)\n"
+    "  --prefix P          with --scene: the functions are named P<func>f, P<func>_<types>\n"
+    "                      (default: the scene file's name and '_', e.g. brick_)\n"
     "  -h, --help          this text\n"
-    "Exit status: 0 ok, 2 bad usage or impossible request, 1 internal failure.\n";
+    "Each option at most once.  Exit status: 0 ok, 2 bad usage or impossible request\n"
+    "(one line on stderr, before any fitting where it can be known), 1 internal failure.\n";
 
-/* The command line as a shell would re-run it (quoted where needed). */
+/* Writes the C (and the plot) only when everything succeeded: both are
+ * staged first, then renamed into place (output.h). */
+static int write_outputs(const pf_request *rq, const char *src, size_t len, const char *svg, size_t svglen)
+{
+    char err[600];
+    pf_out_staged c = {0}, p = {0};
+    int rc = 0;
+    if (rq->output && pf_out_stage(rq->output, src, len, &c, err, sizeof err) != 0)
+        rc = 1;
+    if (!rc && svg && pf_out_stage(rq->plot, svg, svglen, &p, err, sizeof err) != 0)
+        rc = 1;
+    if (!rc && rq->output && pf_out_commit(&c, err, sizeof err) != 0)
+        rc = 1;
+    if (!rc && svg && pf_out_commit(&p, err, sizeof err) != 0)
+        rc = 1;
+    pf_out_abort(&c);
+    pf_out_abort(&p);
+    if (rc)
+        pf_say(err);
+    return rc;
+}
+
+static int run_float(pf_request *rq)
+{
+    pf_gen_req g = {0};
+    g.func = rq->func;
+    g.variant = rq->variant;
+    g.reduction = rq->reduction;
+    g.name = rq->name;
+    g.method = rq->method;
+    g.order = rq->order;
+    g.target = rq->target;
+    g.target_abs = rq->target_abs;
+    g.target_text = rq->target_text[0] ? rq->target_text : NULL;
+    g.sweep = rq->sweep;
+    g.command = rq->command;
+    char err[600];
+    int both = !strcmp(rq->variant, "both");
+    pf_gen_result r[2];
+    for (int i = 0; i < 1 + both; i++) {
+        if (both)
+            g.variant = i ? "fast" : "exact";
+        if (pf_generate(&g, &r[i], err, sizeof err) != 0) {
+            pf_say(err);
+            if (i)
+                pf_gen_free(&r[0]);
+            return 2;
+        }
+    }
+    char *svg = NULL;
+    size_t svglen = 0;
+    if (rq->plot) {
+        const pf_gen_result *rs[2] = {&r[0], &r[1]};
+        if (pf_plot_svg(rs, 1 + both, &svg, &svglen, err, sizeof err) != 0) {
+            pf_say(err);
+            for (int i = 0; i < 1 + both; i++)
+                pf_gen_free(&r[i]);
+            return 1;
+        }
+    }
+    if (rq->json)
+        pf_report_json(stdout, &r[0]);
+    else
+        for (int i = 0; i < 1 + both; i++)
+            pf_report_text(stderr, &r[i]);
+    int rc = write_outputs(rq, r[0].csrc, r[0].clen, svg, svglen);
+    if (!rc && !both && !rq->output && !rq->json)
+        fwrite(r[0].csrc, 1, r[0].clen, stdout);
+    free(svg);
+    for (int i = 0; i < 1 + both; i++)
+        pf_gen_free(&r[i]);
+    return rc;
+}
+
+/* fixed point and noise: the generator reports, this writes */
+static int run_fixed(pf_request *rq)
+{
+    char err[800], *src;
+    size_t len = 0;
+    FILE *rep = rq->json ? stdout : stderr;
+    int rc = rq->mode == PF_MODE_NOISE ? pf_run_noise(rq, rep, &src, &len, err, sizeof err)
+                                       : pf_run_fixed(rq, rep, &src, &len, err, sizeof err);
+    if (rc) {
+        pf_say(err);
+        return rc;
+    }
+    rc = write_outputs(rq, src, len, NULL, 0);
+    if (!rc && !rq->output && !rq->json)
+        fwrite(src, 1, len, stdout);
+    free(src);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
-    static const struct option opts[] = {
-        {"func", required_argument, 0, 'f'},    {"variant", required_argument, 0, 'v'},
-        {"order", required_argument, 0, 'n'},   {"reduction", required_argument, 0, 'r'},
-        {"type", required_argument, 0, 't'},    {"method", required_argument, 0, 'm'},
-        {"name", required_argument, 0, 'N'},    {"output", required_argument, 0, 'o'},
-        {"json", no_argument, 0, 'j'},          {"no-sweep", no_argument, 0, 'S'},
-        {"help", no_argument, 0, 'h'},          {"target", required_argument, 0, 'T'},
-        {"max-rel-err", required_argument, 0, 'R'}, {"max-abs-err", required_argument, 0, 'A'},
-        {"plot", required_argument, 0, 'P'},
-        {0, 0, 0, 0}};
-    for (int i = 1; i < argc; i++)
-        if (!strcmp(argv[i], "--scene")) {
-            const char *scene = i + 1 < argc ? argv[i + 1] : NULL, *dir = NULL;
-            for (int j = 1; j < argc; j++)
-                if ((!strcmp(argv[j], "-o") || !strcmp(argv[j], "--output")) && j + 1 < argc)
-                    dir = argv[j + 1];
-            if (!scene || !dir || argc != 5)
-                pf_cli_die2("usage: pfmathgen --scene FILE -o DIR%s%s", "", "");
-            char *cmd = pf_cli_command_line(argc, argv);
-            int rc = pfmathgen_scene_main(scene, dir, cmd);
-            free(cmd);
-            return rc;
-        }
-    if (pfmathgen_wants_fixed(argc, argv))
-        return pfmathgen_fixed_main(argc, argv);
-    pf_gen_req rq = {0};
-    rq.variant = "exact";
-    rq.method = NULL;
-    char target_text[96] = "";
-    rq.sweep = 1;
-    const char *out = NULL, *plot = NULL;
-    int json = 0;
-    opterr = 0;
-    int c;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
-        switch (c) {
-        case 'f': rq.func = optarg; break;
-        case 'v':
-            if (strcmp(optarg, "exact") && strcmp(optarg, "fast") && strcmp(optarg, "both"))
-                pf_cli_die2("unknown variant '%s' (use exact, fast, or both with --plot)%s", optarg, "");
-            rq.variant = optarg;
-            break;
-        case 'n': {
-            char *end;
-            errno = 0;
-            long v = strtol(optarg, &end, 10);
-            if (errno || end == optarg || *end || v < 1 || v > 30)
-                pf_cli_die2("bad order '%s': expected an integer 1..30%s", optarg, "");
-            rq.order = (int)v;
-            break;
-        }
-        case 'r': rq.reduction = optarg; break;
-        case 't':
-            if (strcmp(optarg, "float"))
-                pf_cli_die2("unsupported type '%s': only float is available in this build%s", optarg, "");
-            break;
-        case 'm':
-            if (strcmp(optarg, "lsq") && strcmp(optarg, "minimax"))
-                pf_cli_die2("unknown method '%s' (available: minimax, lsq)%s", optarg, "");
-            rq.method = optarg;
-            break;
-        case 'T': {
-            if (rq.target > 0)
-                pf_cli_die2("only one of --target, --max-rel-err, --max-abs-err%s%s", "", "");
-            pf_type t;
-            char e[200];
-            if (pf_type_parse(optarg, &t, e, sizeof e) != 0)
-                pf_cli_die2("bad --target: %s%s", e, "");
-            pf_type_format(&t, target_text, sizeof target_text);
-            if (t.is_float) {
-                rq.target = 0x1p-24;
-                rq.target_abs = 0;
-            } else {
-                rq.target = 0.5 * pf_type_lsb(&t);
-                rq.target_abs = 1;
-            }
-            break;
-        }
-        case 'R':
-        case 'A': {
-            if (rq.target > 0)
-                pf_cli_die2("only one of --target, --max-rel-err, --max-abs-err%s%s", "", "");
-            char *end;
-            double v;
-            if (!strncmp(optarg, "2^", 2)) {
-                double ex = strtod(optarg + 2, &end);
-                v = end == optarg + 2 ? NAN : ldexp(1.0, (int)ex);
-                if (ex != (int)ex)
-                    v = NAN;
-            } else {
-                v = strtod(optarg, &end);
-            }
-            if (*end || !(v > 0 && v < 1))
-                pf_cli_die2("bad error bound '%s': expected a number in (0, 1) such as 1e-4 or 2^-12%s", optarg, "");
-            rq.target = v;
-            rq.target_abs = c == 'A';
-            snprintf(target_text, sizeof target_text, "%s %s", c == 'A' ? "--max-abs-err" : "--max-rel-err", optarg);
-            break;
-        }
-        case 'N':
-            if (!pf_cli_is_identifier(optarg))
-                pf_cli_die2("bad --name '%s': not a C identifier%s", optarg, "");
-            rq.name = optarg;
-            break;
-        case 'o': out = optarg; break;
-        case 'P': plot = optarg; break;
-        case 'j': json = 1; break;
-        case 'S': rq.sweep = 0; break;
-        case 'h': printf(usage, pf_spec_func_list()); return 0;
-        case ':': pf_cli_die2("option '%s' needs an argument%s", argv[optind - 1], ""); break;
-        default: pf_cli_die2("unknown option '%s' (see --help)%s", argv[optind - 1], ""); break;
-        }
+    pf_request rq;
+    char err[800];
+    if (pf_request_parse(argc, argv, &rq, err, sizeof err) != 0) {
+        pf_say(err);
+        return 2;
     }
-    if (optind < argc)
-        pf_cli_die2("unexpected argument '%s' (see --help)%s", argv[optind], "");
-    if (!rq.func)
-        pf_cli_die2("--func is required (see --help)%s%s", "", "");
-    if (rq.reduction && !pf_spec_find(rq.func, rq.variant, rq.reduction) && pf_spec_func_known(rq.func))
-        pf_cli_die2("unknown reduction '%s' for %s", rq.reduction, rq.func);
-    if (target_text[0])
-        rq.target_text = target_text;
-    rq.command = pf_cli_command_line(argc, argv);
-    pf_gen_result r;
-    char err[512];
-    if (!strcmp(rq.variant, "both")) {
-        if (!plot || out || json)
-            pf_cli_die2("--variant both is for --plot only (no -o, no --json)%s%s", "", "");
-        pf_gen_result r2;
-        rq.variant = "exact";
-        if (pf_generate(&rq, &r, err, sizeof err) != 0)
-            pf_cli_die2("%s%s", err, "");
-        rq.variant = "fast";
-        if (pf_generate(&rq, &r2, err, sizeof err) != 0)
-            pf_cli_die2("%s%s", err, "");
-        pf_report_text(stderr, &r);
-        pf_report_text(stderr, &r2);
-        const pf_gen_result *both[2] = {&r, &r2};
-        if (pf_plot_error(plot, both, 2, err, sizeof err) != 0) {
-            fprintf(stderr, "pfmathgen: %s\n", err);
-            return 1;
-        }
+    if (rq.help) {
+        pf_type t;
+        int fixed = fx_noise_is(rq.func);
+        if (rq.type_s && pf_type_parse(rq.type_s, &t, NULL, 0) == 0 && !t.is_float)
+            fixed = 1;
+        if (rq.out_type_s && pf_type_parse(rq.out_type_s, &t, NULL, 0) == 0 && !t.is_float)
+            fixed = 1;
+        if (fixed)
+            fputs(fx_usage_text(), stdout);
+        else
+            printf(usage, pf_spec_func_list());
         return 0;
     }
-    if (pf_generate(&rq, &r, err, sizeof err) != 0)
-        pf_cli_die2("%s%s", err, "");
-    if (plot) {
-        const pf_gen_result *one[1] = {&r};
-        if (pf_plot_error(plot, one, 1, err, sizeof err) != 0) {
-            fprintf(stderr, "pfmathgen: %s\n", err);
-            return 1;
-        }
+    int rc;
+    switch (rq.mode) {
+    case PF_MODE_SCENE: rc = pf_scene_run(&rq); break;
+    case PF_MODE_FLOAT: rc = run_float(&rq); break;
+    default: rc = run_fixed(&rq); break;
     }
-    if (json)
-        pf_report_json(stdout, &r);
-    else
-        pf_report_text(stderr, &r);
-    if (out) {
-        if (pf_cli_write_atomically(out, r.csrc, r.clen) != 0) {
-            fprintf(stderr, "pfmathgen: cannot write %s\n", out);
-            return 1;
-        }
-    } else if (!json) {
-        fwrite(r.csrc, 1, r.clen, stdout);
+    pf_request_free(&rq);
+    /* C or JSON on a full disk or a closed pipe is a failure, not success */
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        pf_say("cannot write the standard output");
+        rc = rc ? rc : 1;
     }
-    pf_gen_free(&r);
-    free((void *)rq.command);
-    return 0;
+    return rc;
 }

@@ -1,5 +1,5 @@
 # gen/: pfmathgen, its templates (embedded at build time) and emitters.
-GEN_SRCS := gen/funcs.c $(sort $(wildcard gen/funcs_*.c)) gen/generate.c gen/float_model.c gen/compile.c gen/fixedgen.c gen/scene.c gen/plot.c gen/cli.c
+GEN_SRCS := gen/funcs.c $(sort $(wildcard gen/funcs_*.c)) gen/generate.c gen/float_model.c gen/compile.c gen/fixedgen.c gen/scene.c gen/plot.c gen/cli.c gen/output.c gen/subproc.c gen/request.c
 GEN_TEMPLATES := $(sort $(wildcard gen/templates/*.in))
 PROGS += $(BUILD)/pfmathgen
 
@@ -24,3 +24,14 @@ TESTS += $(BUILD)/tests/test_sollya
 $(BUILD)/tests/test_sollya: $(BUILD)/pfmathgen
 TESTS += $(BUILD)/tests/test_scene
 $(BUILD)/tests/test_scene: $(BUILD)/pfmathgen
+# Issue 11: hostile inputs, safe outputs (one test per item), and a fuzz of
+# the front end and the scene parser.
+TESTS += $(BUILD)/tests/test_hostile
+$(BUILD)/tests/test_hostile: $(BUILD)/pfmathgen
+TESTS += $(BUILD)/tests/test_gen_fuzz
+$(BUILD)/tests/test_gen_fuzz: $(BUILD)/pfmathgen
+# Every pfmathgen/pfsweep example in README.md runs as written.
+TESTS += $(BUILD)/tests/check-readme-examples
+$(BUILD)/tests/check-readme-examples: tests/check-readme-examples.sh $(BUILD)/pfmathgen $(BUILD)/pfsweep
+	@mkdir -p $(dir $@)
+	sed -e 's|@BIN@|$(abspath $(BUILD))|' $< > $@ && chmod +x $@

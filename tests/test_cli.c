@@ -6,19 +6,29 @@
 #include <cmocka.h>
 
 #include "testutil.h"
+#include "tu_exec.h"
 
 #include <sys/stat.h>
 
 static tu_run_result R;
 
-static void expect_usage_error(const char *args)
+/* args: NULL-terminated; run without a shell, with -o FILE appended */
+static void expect_usage_error_v(const char *const *args)
 {
-    char a[1024];
     const char *out = "/tmp/pfmathgen-cli-test.c";
     unlink(out);
-    snprintf(a, sizeof a, "%s -o %s", args, out);
-    tu_run("pfmathgen", a, &R);
-    print_message("pfmathgen %s -> %d: %s", args, R.status, R.err);
+    const char *v[40];
+    int n = 0;
+    char shown[1024] = "";
+    for (; args[n] && n < 36; n++) {
+        v[n] = args[n];
+        snprintf(shown + strlen(shown), sizeof shown - strlen(shown), " '%s'", args[n]);
+    }
+    v[n++] = "-o";
+    v[n++] = out;
+    v[n] = NULL;
+    tu_runv("pfmathgen", v, &R);
+    print_message("pfmathgen%s -> %d: %s", shown, R.status, R.err);
     assert_int_equal(R.status, 2);
     assert_int_equal(tu_count_lines(R.err), 1);
     assert_non_null(strstr(R.err, "pfmathgen: "));
@@ -26,32 +36,74 @@ static void expect_usage_error(const char *args)
     assert_int_not_equal(stat(out, &sb), 0); /* nothing written */
     assert_int_equal(R.out[0], 0);
 }
+#define expect_usage_error(...) expect_usage_error_v((const char *const[]){__VA_ARGS__, NULL})
 
 static void test_bad_input(void **st)
 {
     (void)st;
-    expect_usage_error("--func logg --order 10");
-    expect_usage_error("--func log --order 0");
-    expect_usage_error("--func log --order 31");
-    expect_usage_error("--func log --order 10x");
-    expect_usage_error("--func log --order ''");
-    expect_usage_error("--func log --variant quick");
-    expect_usage_error("--func log --reduction nope");
-    expect_usage_error("--func log --frobnicate");
-    expect_usage_error("--func log --name 9lives");
-    expect_usage_error("--func log --type double");
-    expect_usage_error("--func log --method remez");
-    expect_usage_error("--order 10");
-    expect_usage_error("--func log extra");
+    expect_usage_error("--func", "logg", "--order", "10");
+    expect_usage_error("--func", "log", "--order", "0");
+    expect_usage_error("--func", "log", "--order", "31");
+    expect_usage_error("--func", "log", "--order", "10x");
+    expect_usage_error("--func", "log", "--order", "");
+    expect_usage_error("--func", "log", "--variant", "quick");
+    expect_usage_error("--func", "log", "--reduction", "nope");
+    expect_usage_error("--func", "log", "--frobnicate");
+    expect_usage_error("--func", "log", "--name", "9lives");
+    expect_usage_error("--func", "log", "--type", "double");
+    expect_usage_error("--func", "log", "--method", "remez");
+    expect_usage_error("--order", "10");
+    expect_usage_error("--func", "log", "extra");
     expect_usage_error("--func");
     /* too low for the fast variant's six constraints */
-    expect_usage_error("--func log --variant fast --order 3");
+    expect_usage_error("--func", "log", "--variant", "fast", "--order", "3");
+    /* a message quoting a user's newline is still one line */
+    expect_usage_error("--func", "lo\ng");
+}
+
+/* issue 11 item 12: a repeated option is an error, not "the last one wins" */
+static void test_repeated_options(void **st)
+{
+    (void)st;
+    expect_usage_error("--func", "log", "--func", "sin");
+    expect_usage_error("--func", "log", "--order", "5", "--order", "6");
+    expect_usage_error("--func", "log", "--json", "--json");
+    expect_usage_error("--func", "log", "--no-sweep", "--no-sweep");
+    expect_usage_error("--func", "log", "--output", "/tmp/pf-cli-a.c"); /* with the -o appended */
+    expect_usage_error("--func", "sin", "--type", "fixed<15,12>", "--type", "fixed<15,12>");
+    expect_usage_error("--func", "noise2", "--type", "fixed<15,12>", "--seed", "1", "--seed", "2");
+    expect_usage_error("--func", "log", "--max-rel-err", "1e-4", "--max-abs-err", "1e-4");
+    assert_non_null(strstr(R.err, "only one of"));
+}
+
+/* issue 11 item 11: --name is a C identifier, not a keyword, and never cut */
+static void test_names(void **st)
+{
+    (void)st;
+    const char *kw[] = {"int", "while", "_Bool", "restrict", "_Static_assert", "inline", "main", "__x", "_Foo"};
+    for (size_t i = 0; i < sizeof kw / sizeof kw[0]; i++)
+        expect_usage_error("--func", "log", "--name", kw[i]);
+    expect_usage_error("--func", "sin", "--type", "fixed<15,12>", "--name", "float");
+    expect_usage_error("--func", "noise3", "--type", "fixed<15,12>", "--name", "char");
+    expect_usage_error("--func", "log", "--name", "caf\xc3\xa9");
+    char longname[160];
+    memset(longname, 'a', 128);
+    longname[128] = 0;
+    expect_usage_error("--func", "log", "--name", longname);
+    assert_non_null(strstr(R.err, "at most 100"));
+    /* the longest allowed name is used whole */
+    longname[100] = 0;
+    tu_runl(&R, "pfmathgen", "--func", "log", "--variant", "fast", "--no-sweep", "--name", longname, NULL);
+    assert_int_equal(R.status, 0);
+    char decl[200];
+    snprintf(decl, sizeof decl, "float %s(float x)", longname);
+    assert_non_null(strstr(R.out, decl));
 }
 
 static void test_help(void **st)
 {
     (void)st;
-    tu_run("pfmathgen", "--help", &R);
+    tu_runl(&R, "pfmathgen", "--help", NULL);
     assert_int_equal(R.status, 0);
     assert_non_null(strstr(R.out, "usage: pfmathgen"));
     assert_non_null(strstr(R.out, "--order"));
@@ -62,10 +114,10 @@ static void test_deterministic(void **st)
 {
     (void)st;
     size_t n1, n2;
-    tu_run("pfmathgen", "--func log --order 10 -o /tmp/pf-det-a.c", &R);
+    tu_runl(&R, "pfmathgen", "--func", "log", "--order", "10", "-o", "/tmp/pf-det-a.c", NULL);
     assert_int_equal(R.status, 0);
     rename("/tmp/pf-det-a.c", "/tmp/pf-det-b.c");
-    tu_run("pfmathgen", "--func log --order 10 -o /tmp/pf-det-a.c", &R);
+    tu_runl(&R, "pfmathgen", "--func", "log", "--order", "10", "-o", "/tmp/pf-det-a.c", NULL);
     assert_int_equal(R.status, 0);
     char *a = tu_slurp("/tmp/pf-det-a.c", &n1), *b = tu_slurp("/tmp/pf-det-b.c", &n2);
     assert_non_null(a);
@@ -96,7 +148,7 @@ static double json_num(const char *s, const char *key)
 static void test_json(void **st)
 {
     (void)st;
-    tu_run("pfmathgen", "--func log --order 10 --json", &R);
+    tu_runl(&R, "pfmathgen", "--func", "log", "--order", "10", "--json", NULL);
     assert_int_equal(R.status, 0);
     assert_int_equal(tu_count_lines(R.out), 1);
     const char *keys[] = {"\"func\": \"log\"", "\"variant\": \"exact\"", "\"type\": \"float\"",
@@ -109,7 +161,7 @@ static void test_json(void **st)
     double e = json_num(R.out, "max_rel_error");
     assert_true(e > 0 && e < 0x1p-24);
     assert_true(json_num(R.out, "max_ulp") <= 1.0);
-    tu_run("pfmathgen", "--func log --order 10 --reduction seed --json", &R);
+    tu_runl(&R, "pfmathgen", "--func", "log", "--order", "10", "--reduction", "seed", "--json", NULL);
     assert_int_equal(R.status, 0);
     e = json_num(R.out, "max_rel_error");
     assert_true(e > 0 && e < 0x1p-24);
@@ -123,11 +175,9 @@ static void test_target_fixed(void **st)
     const struct {
         const char *type;
         double half_lsb;
-    } t[] = {{"'fixed<15,14>'", 0x1p-15}, {"'unsigned fixed<8,8>'", 0x1p-9}, {"'fixed<31,16>'", 0x1p-17}};
+    } t[] = {{"fixed<15,14>", 0x1p-15}, {"unsigned fixed<8,8>", 0x1p-9}, {"fixed<31,16>", 0x1p-17}};
     for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
-        char args[256];
-        snprintf(args, sizeof args, "--func log --no-sweep --json --target %s", t[i].type);
-        tu_run("pfmathgen", args, &R);
+        tu_runl(&R, "pfmathgen", "--func", "log", "--no-sweep", "--json", "--target", t[i].type, NULL);
         assert_int_equal(R.status, 0);
         double e = json_num(R.out, "max_abs_error"), below = json_num(R.out, "order_below_error");
         print_message("--target %s: order %d, max abs error %.3g (half LSB %.3g), order below %.3g\n", t[i].type,
@@ -135,16 +185,18 @@ static void test_target_fixed(void **st)
         assert_true(e <= t[i].half_lsb);
         assert_true(below > t[i].half_lsb);
     }
-    expect_usage_error("--func log --target 'fixed<15'");
-    expect_usage_error("--func log --target float --max-rel-err 1e-4");
-    expect_usage_error("--func log --order 3 --target float");
-    expect_usage_error("--func log --max-rel-err 2^-80");
+    expect_usage_error("--func", "log", "--target", "fixed<15");
+    expect_usage_error("--func", "log", "--target", "float", "--max-rel-err", "1e-4");
+    expect_usage_error("--func", "log", "--order", "3", "--target", "float");
+    expect_usage_error("--func", "log", "--max-rel-err", "2^-80");
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_repeated_options),
+        cmocka_unit_test(test_names),
         cmocka_unit_test(test_help),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_json),

@@ -1,0 +1,377 @@
+/* The one place where pfmathgen's options are read and judged (request.h). */
+#include "request.h"
+
+#include "cli.h"
+#include "fixed_internal.h"
+#include "funcs.h"
+#include "output.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The best float-coefficient fits here reach about 2^-40 (exp at order 30:
+ * 1.15e-12 = 2^-39.7; log: Sollya's fpminimax at order 30 gives 6.5e-12).
+ * A target below 2^-44, 16 times under that, is refused at once instead of
+ * after thirty orders' fits (minutes); the margin leaves room for better
+ * fitting.  An empirical floor, not a proof: between it and the best fit
+ * the order search still runs and answers. */
+#define FLOAT_TARGET_FLOOR 0x1p-44
+
+void pf_say(const char *msg)
+{
+    fputs("pfmathgen: ", stderr);
+    for (const char *p = msg; *p; p++)
+        fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, stderr);
+    fputc('\n', stderr);
+}
+
+__attribute__((format(printf, 3, 4))) static int bad(char *err, size_t errlen, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+    return 2;
+}
+
+int pf_check_name(const char *what, const char *name, char *err, size_t errlen)
+{
+    /* C17 6.4.1 */
+    static const char *const kw[] = {
+        "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum",
+        "extern", "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return",
+        "short", "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void",
+        "volatile", "while", "_Alignas", "_Alignof", "_Atomic", "_Bool", "_Complex", "_Generic",
+        "_Imaginary", "_Noreturn", "_Static_assert", "_Thread_local", NULL};
+    if (!pf_cli_is_identifier(name)) {
+        snprintf(err, errlen, "bad %s '%.200s': not a C identifier (letters, digits, '_'; not starting with a digit)",
+                 what, name);
+        return -1;
+    }
+    for (int i = 0; kw[i]; i++)
+        if (!strcmp(name, kw[i])) {
+            snprintf(err, errlen, "bad %s '%s': a C keyword", what, name);
+            return -1;
+        }
+    if (name[0] == '_' && (name[1] == '_' || isupper((unsigned char)name[1]))) {
+        snprintf(err, errlen, "bad %s '%.200s': names starting with __ or _ and a capital are reserved (C17 7.1.3)",
+                 what, name);
+        return -1;
+    }
+    if (!strcmp(name, "main")) {
+        snprintf(err, errlen, "bad %s 'main': the program's entry point", what);
+        return -1;
+    }
+    if (strlen(name) > PF_NAME_MAX) {
+        snprintf(err, errlen, "bad %s: %zu characters, at most %d", what, strlen(name), PF_NAME_MAX);
+        return -1;
+    }
+    return 0;
+}
+
+int pf_parse_type(const char *what, const char *s, pf_type *t, char *err, size_t errlen)
+{
+    char e[200];
+    if (pf_type_parse(s, t, e, sizeof e) != 0) {
+        snprintf(err, errlen, "bad %s: %s", what, e);
+        return -1;
+    }
+    if (!t->is_float && t->storage_bits > 32) {
+        char f[64];
+        pf_type_format(t, f, sizeof f);
+        snprintf(err, errlen, "unsupported %s %s: fixed-point functions take storage of at most 32 bits", what, f);
+        return -1;
+    }
+    return 0;
+}
+
+static int parse_bound(const char *s, double *v)
+{
+    char *end;
+    if (!*s || isspace((unsigned char)*s))
+        return -1;
+    if (!strncmp(s, "2^", 2)) {
+        errno = 0;
+        long ex = strtol(s + 2, &end, 10);
+        if (end == s + 2 || *end || errno || ex < -1000 || ex > 0)
+            return -1;
+        *v = ldexp(1.0, (int)ex);
+    } else {
+        *v = strtod(s, &end);
+        if (end == s || *end)
+            return -1;
+    }
+    return *v > 0 && *v < 1 ? 0 : -1;
+}
+
+/* long option name of a short code, for messages */
+static const struct option opts[] = {
+    {"func", required_argument, 0, 'f'},        {"variant", required_argument, 0, 'v'},
+    {"order", required_argument, 0, 'n'},       {"reduction", required_argument, 0, 'r'},
+    {"type", required_argument, 0, 't'},        {"out-type", required_argument, 0, 'O'},
+    {"method", required_argument, 0, 'm'},      {"name", required_argument, 0, 'N'},
+    {"output", required_argument, 0, 'o'},      {"json", no_argument, 0, 'j'},
+    {"no-sweep", no_argument, 0, 'S'},          {"help", no_argument, 0, 'h'},
+    {"target", required_argument, 0, 'T'},      {"max-rel-err", required_argument, 0, 'R'},
+    {"max-abs-err", required_argument, 0, 'A'}, {"plot", required_argument, 0, 'P'},
+    {"seed", required_argument, 0, 's'},        {"scene", required_argument, 0, 'C'},
+    {"prefix", required_argument, 0, 'p'},      {0, 0, 0, 0}};
+
+static const char *long_name(int c)
+{
+    for (int i = 0; opts[i].name; i++)
+        if (opts[i].val == c)
+            return opts[i].name;
+    return "?";
+}
+
+/* options that a mode does not take: the first one given, or 0 */
+static int first_of(const unsigned char *seen, const char *codes)
+{
+    for (const char *c = codes; *c; c++)
+        if (seen[(unsigned char)*c])
+            return *c;
+    return 0;
+}
+
+static int check_float(pf_request *rq, const unsigned char *seen, char *err, size_t errlen)
+{
+    int c = first_of(seen, "sp");
+    if (c)
+        return bad(err, errlen, "--%s does not apply to %s (see --help)", long_name(c),
+                   c == 's' ? "float functions (it is for noise)" : "a single function (it is for --scene)");
+    if (!pf_spec_func_known(rq->func)) {
+        if (fx_func_find(rq->func))
+            return bad(err, errlen, "%s is generated for fixed-point types only: give --type 'fixed<size,exp>'",
+                       rq->func);
+        return bad(err, errlen, "unknown function '%.200s' (known: %s)", rq->func, pf_spec_func_list());
+    }
+    int both = !strcmp(rq->variant, "both");
+    if (strcmp(rq->variant, "exact") && strcmp(rq->variant, "fast") && !both)
+        return bad(err, errlen, "unknown variant '%.200s' (use exact, fast, or both with --plot)", rq->variant);
+    if (both && (!rq->plot || rq->output || rq->json))
+        return bad(err, errlen, "--variant both is for --plot only (no -o, no --json)");
+    if (rq->reduction) {
+        const char *v[2] = {both ? "exact" : rq->variant, both ? "fast" : rq->variant};
+        for (int i = 0; i < 2; i++)
+            if (!pf_spec_find(rq->func, v[i], rq->reduction))
+                return bad(err, errlen, "unknown reduction '%.200s' for %s", rq->reduction, rq->func);
+    }
+    if (rq->target > 0 && rq->target < FLOAT_TARGET_FLOOR)
+        return bad(err, errlen,
+                   "impossible target %s: below 2^-44, and float-coefficient fits reach about 2^-40 at best "
+                   "(exp at order 30: 1.15e-12)",
+                   rq->target_text);
+    return 0;
+}
+
+static int check_fixed(pf_request *rq, const unsigned char *seen, char *err, size_t errlen)
+{
+    int c = first_of(seen, "rTRAPsp");
+    if (c)
+        return bad(err, errlen, "--%s is not available with fixed-point types", long_name(c));
+    if (!fx_func_find(rq->func))
+        return bad(err, errlen, "no fixed-point %.200s (available: %s)", rq->func, fx_func_list());
+    if (strcmp(rq->variant, "exact") && strcmp(rq->variant, "fast"))
+        return bad(err, errlen, "unknown variant '%.200s' (use exact or fast)", rq->variant);
+    if (rq->order > FX_MAX_SEARCH)
+        return bad(err, errlen,
+                   "--order %d: fixed-point orders go up to %d (the highest the order search tries; "
+                   "higher ones only add fitting time)",
+                   rq->order, FX_MAX_SEARCH);
+    return 0;
+}
+
+static int check_noise(pf_request *rq, const unsigned char *seen, char *err, size_t errlen)
+{
+    int c = first_of(seen, "nmrTRAP");
+    if (c)
+        return bad(err, errlen, "--%s does not apply to noise (a fixed method: gradient noise within 1 LSB)",
+                   long_name(c));
+    if (seen['j'])
+        return bad(err, errlen, "--json is not available for noise");
+    if (seen['p'])
+        return bad(err, errlen, "--prefix is for --scene");
+    if (strcmp(rq->variant, "exact"))
+        return bad(err, errlen, "noise has only the exact variant (within 1 LSB), not '%.200s'", rq->variant);
+    if (!rq->type_s && !rq->out_type_s)
+        return bad(err, errlen, "%s needs a fixed-point --type (float noise is pf_noise1f … pf_noise4f in libpfmath)",
+                   rq->func);
+    if (rq->in.is_float || rq->out.is_float)
+        return bad(err, errlen,
+                   "%s is generated for fixed-point types only; float noise is pf_noise1f … pf_noise4f in "
+                   "libpfmath (pfnoise.h)",
+                   rq->func);
+    char t[64];
+    pf_type_format(&rq->in, t, sizeof t);
+    if (rq->in.exp <= 0)
+        return bad(err, errlen,
+                   "input %s has no fraction bits (exp <= 0): every input is a lattice point, where the noise is "
+                   "identically 0",
+                   t);
+    if (rq->in.exp > 62)
+        return bad(err, errlen, "input %s: exp > 62 is not supported (the fraction must fit a 64-bit word)", t);
+    if (rq->name && !strcmp(rq->func, "noise") && strlen(rq->name) + 1 > PF_NAME_MAX)
+        return bad(err, errlen, "bad --name: with --func noise the names are NAME1 .. NAME4, at most %d characters",
+                   PF_NAME_MAX);
+    return 0;
+}
+
+/* -o and --plot: checked before the fit (output.h) */
+static int check_outputs(const pf_request *rq, char *err, size_t errlen)
+{
+    if (rq->output && pf_out_check("-o", rq->output, err, errlen) != 0)
+        return 2;
+    if (rq->plot && pf_out_check("--plot", rq->plot, err, errlen) != 0)
+        return 2;
+    if (rq->output && rq->plot && !strcmp(rq->output, rq->plot))
+        return bad(err, errlen, "-o and --plot name the same file");
+    return 0;
+}
+
+int pf_request_parse(int argc, char **argv, pf_request *rq, char *err, size_t errlen)
+{
+    memset(rq, 0, sizeof *rq);
+    rq->variant = "exact";
+    rq->sweep = 1;
+    unsigned char seen[256] = {0};
+    opterr = 0;
+    optind = 0; /* GNU: a full re-initialisation */
+    int c;
+    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+        if (c == ':')
+            return bad(err, errlen, "option '%.200s' needs an argument", argv[optind - 1]);
+        if (c == '?') {
+            if (optopt && optopt < 256 && isprint(optopt))
+                return bad(err, errlen, "unknown option '-%c' (see --help)", optopt);
+            return bad(err, errlen, "unknown option '%.200s' (see --help)", argv[optind - 1]);
+        }
+        if (seen[c])
+            return bad(err, errlen, "--%s given twice (each option at most once)", long_name(c));
+        seen[c] = 1;
+        if ((c == 'T' || c == 'R' || c == 'A') && seen['T'] + seen['R'] + seen['A'] > 1)
+            return bad(err, errlen, "only one of --target, --max-rel-err, --max-abs-err");
+        switch (c) {
+        case 'f': rq->func = optarg; break;
+        case 'v': rq->variant = optarg; break;
+        case 'r': rq->reduction = optarg; break;
+        case 't': rq->type_s = optarg; break;
+        case 'O': rq->out_type_s = optarg; break;
+        case 'N': rq->name = optarg; break;
+        case 'o': rq->output = optarg; break;
+        case 'P': rq->plot = optarg; break;
+        case 'C': rq->scene = optarg; break;
+        case 'p': rq->prefix = optarg; break;
+        case 'j': rq->json = 1; break;
+        case 'S': rq->sweep = 0; break;
+        case 'h': rq->help = 1; break;
+        case 'n': {
+            char *end;
+            errno = 0;
+            long v = strtol(optarg, &end, 10);
+            if (errno || end == optarg || *end || v < 1 || v > 30)
+                return bad(err, errlen, "bad order '%.200s': expected an integer 1..30", optarg);
+            rq->order = (int)v;
+            break;
+        }
+        case 'm':
+            if (strcmp(optarg, "lsq") && strcmp(optarg, "minimax"))
+                return bad(err, errlen, "unknown method '%.200s' (available: minimax, lsq)", optarg);
+            rq->method = optarg;
+            break;
+        case 's': {
+            char *end;
+            errno = 0;
+            unsigned long long v = strtoull(optarg, &end, 0);
+            if (errno || end == optarg || *end || optarg[strspn(optarg, " \t")] == '-')
+                return bad(err, errlen, "bad --seed '%.200s': expected an unsigned 64-bit integer", optarg);
+            rq->seeded = 1;
+            rq->seed = v;
+            break;
+        }
+        case 'T': {
+            pf_type t;
+            char e[200];
+            if (pf_type_parse(optarg, &t, e, sizeof e) != 0)
+                return bad(err, errlen, "bad --target: %s", e);
+            pf_type_format(&t, rq->target_text, sizeof rq->target_text);
+            rq->target = t.is_float ? 0x1p-24 : 0.5 * pf_type_lsb(&t);
+            rq->target_abs = !t.is_float;
+            break;
+        }
+        case 'R':
+        case 'A':
+            if (parse_bound(optarg, &rq->target) != 0)
+                return bad(err, errlen, "bad error bound '%.200s': expected a number in (0, 1) such as 1e-4 or 2^-12",
+                           optarg);
+            rq->target_abs = c == 'A';
+            snprintf(rq->target_text, sizeof rq->target_text, "%s %.60s",
+                     c == 'A' ? "--max-abs-err" : "--max-rel-err", optarg);
+            break;
+        }
+    }
+    if (optind < argc)
+        return bad(err, errlen, "unexpected argument '%.200s' (see --help)", argv[optind]);
+    if (rq->help)
+        return 0;
+    if (rq->scene) {
+        rq->mode = PF_MODE_SCENE;
+        c = first_of(seen, "fvnrtOmNjSTRAPs");
+        if (c)
+            return bad(err, errlen, "--%s does not apply to --scene (usage: pfmathgen --scene FILE -o DIR "
+                       "[--prefix P])", long_name(c));
+        if (!rq->output)
+            return bad(err, errlen, "usage: pfmathgen --scene FILE -o DIR [--prefix P]");
+        rq->command = pf_cli_command_line(argc, argv);
+        return rq->command ? 0 : bad(err, errlen, "out of memory");
+    }
+    if (rq->prefix)
+        return bad(err, errlen, "--prefix is for --scene");
+    if (!rq->func)
+        return bad(err, errlen, "--func is required (see --help)");
+    if (rq->type_s && pf_parse_type("--type", rq->type_s, &rq->in, err, errlen) != 0)
+        return 2;
+    if (rq->out_type_s && pf_parse_type("--out-type", rq->out_type_s, &rq->out, err, errlen) != 0)
+        return 2;
+    if (!rq->type_s)
+        rq->in = rq->out_type_s ? rq->out : (pf_type){.is_float = 1};
+    if (!rq->out_type_s)
+        rq->out = rq->in;
+    if (rq->name && pf_check_name("--name", rq->name, err, errlen) != 0)
+        return 2;
+    int rc;
+    if (fx_noise_is(rq->func)) {
+        rq->mode = PF_MODE_NOISE;
+        rc = check_noise(rq, seen, err, errlen);
+    } else if (!rq->in.is_float || !rq->out.is_float) {
+        rq->mode = PF_MODE_FIXED;
+        if (rq->in.is_float != rq->out.is_float) {
+            char a[64], b[64];
+            pf_type_format(&rq->in, a, sizeof a);
+            pf_type_format(&rq->out, b, sizeof b);
+            return bad(err, errlen,
+                       "bad type pair %s -> %s: float and fixed point do not mix (both float, or both fixed)", a, b);
+        }
+        rc = check_fixed(rq, seen, err, errlen);
+    } else {
+        rq->mode = PF_MODE_FLOAT;
+        rc = check_float(rq, seen, err, errlen);
+    }
+    if (rc)
+        return rc;
+    if (check_outputs(rq, err, errlen))
+        return 2;
+    rq->command = pf_cli_command_line(argc, argv);
+    return rq->command ? 0 : bad(err, errlen, "out of memory");
+}
+
+void pf_request_free(pf_request *rq)
+{
+    free(rq->command);
+    rq->command = NULL;
+}

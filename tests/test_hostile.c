@@ -1,0 +1,407 @@
+/* Issue 11: pfmathgen under the mistakes and odd names of a new user.  One
+ * test per numbered item (11 and 12 are in test_cli.c); each was reproduced
+ * on the code before the fix and fails there.  Every run happens in its own
+ * scratch directory, without a shell (tests/tu_exec.h). */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "testutil.h"
+#include "tu_exec.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <time.h>
+
+static tu_run_result R;
+static char scratch[64];
+
+static void new_scratch(void)
+{
+    snprintf(scratch, sizeof scratch, "/tmp/pfhostile.XXXXXX");
+    assert_non_null(mkdtemp(scratch));
+}
+
+static void put(const char *rel, const char *data, size_t n)
+{
+    char p[1300];
+    snprintf(p, sizeof p, "%s/%s", scratch, rel);
+    FILE *f = fopen(p, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, n, f), n);
+    fclose(f);
+}
+
+static void puts_file(const char *rel, const char *text) { put(rel, text, strlen(text)); }
+
+static char *get(const char *rel)
+{
+    char p[1300];
+    snprintf(p, sizeof p, "%s/%s", scratch, rel);
+    return tu_slurp(p, NULL);
+}
+
+static int exists(const char *rel)
+{
+    char p[1300];
+    struct stat sb;
+    snprintf(p, sizeof p, "%s/%s", scratch, rel);
+    return lstat(p, &sb) == 0;
+}
+
+static mode_t kind(const char *rel)
+{
+    char p[1300];
+    struct stat sb;
+    snprintf(p, sizeof p, "%s/%s", scratch, rel);
+    return lstat(p, &sb) == 0 ? (sb.st_mode & S_IFMT) : 0;
+}
+
+static int count_c(const char *rel)
+{
+    char p[1300];
+    snprintf(p, sizeof p, "%s/%s", scratch, rel);
+    DIR *d = opendir(p);
+    int n = 0;
+    for (struct dirent *e; d && (e = readdir(d));) {
+        size_t l = strlen(e->d_name);
+        n += l > 2 && !strcmp(e->d_name + l - 2, ".c");
+    }
+    if (d)
+        closedir(d);
+    return n;
+}
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* pfmathgen ARGS... in the scratch directory */
+#define GEN(...) tu_runv_in(scratch, "pfmathgen", (const char *const[]){__VA_ARGS__, NULL}, &R)
+
+static void expect2(void)
+{
+    print_message("  -> %d: %s", R.status, R.err);
+    assert_int_equal(R.status, 2);
+    assert_int_equal(tu_count_lines(R.err), 1);
+    assert_non_null(strstr(R.err, "pfmathgen: "));
+}
+
+/* a cheap scene: an 8-bit sqrt (milliseconds to fit and sweep) */
+static const char *cheap_scene = "sqrt exact ufixed<8,8> ufixed<8,8>\n";
+
+/* item 1: --scene -o DIR never deletes DIR or anything in it; a regular
+ * file named DIR is an error and stays as it was */
+static void test_item1_scene_keeps_dir(void **st)
+{
+    (void)st;
+    new_scratch();
+    puts_file("s.scene", cheap_scene);
+    char p[600];
+    snprintf(p, sizeof p, "%s/out", scratch);
+    assert_int_equal(mkdir(p, 0777), 0);
+    puts_file("out/mine.txt", "the user's file\n");
+    GEN("--scene", "s.scene", "-o", "out");
+    assert_int_equal(R.status, 0);
+    char *m = get("out/mine.txt");
+    assert_non_null(m);
+    assert_string_equal(m, "the user's file\n");
+    free(m);
+    assert_int_equal(count_c("out"), 1);
+    assert_true(exists("out/scene.h") && exists("out/report.txt"));
+    /* a scene that fails after its first entry was generated: DIR unchanged */
+    char *before = get("out/s_sqrt_u8_8_u8_8.c");
+    puts_file("out/s_sqrt_u8_8_u8_8.c", "user edit\n");
+    puts_file("bad.scene", "sqrt exact ufixed<8,8> ufixed<8,8>\nsin exact fixed<15,12> ufixed<16,14>\n");
+    GEN("--scene", "bad.scene", "-o", "out");
+    expect2();
+    char *after = get("out/s_sqrt_u8_8_u8_8.c");
+    assert_string_equal(after, "user edit\n");
+    m = get("out/mine.txt");
+    assert_string_equal(m, "the user's file\n");
+    free(m);
+    free(before);
+    free(after);
+    /* a regular file named DIR */
+    puts_file("plain", "precious\n");
+    GEN("--scene", "s.scene", "-o", "plain");
+    expect2();
+    assert_int_equal(kind("plain"), S_IFREG);
+    m = get("plain");
+    assert_string_equal(m, "precious\n");
+    free(m);
+    tu_rm_tree(scratch);
+}
+
+/* item 2: the README's own "-o out/": a trailing slash is the same dir,
+ * new or existing */
+static void test_item2_trailing_slash(void **st)
+{
+    (void)st;
+    new_scratch();
+    puts_file("s.scene", cheap_scene);
+    GEN("--scene", "s.scene", "-o", "out/");
+    assert_int_equal(R.status, 0);
+    assert_int_equal(count_c("out"), 1);
+    GEN("--scene", "s.scene", "-o", "out//");
+    assert_int_equal(R.status, 0);
+    assert_int_equal(count_c("out"), 1);
+    /* nothing else was created beside it (no out.tmp.PID) */
+    DIR *d = opendir(scratch);
+    int n = 0;
+    for (struct dirent *e; (e = readdir(d));)
+        n += e->d_name[0] != '.';
+    closedir(d);
+    assert_int_equal(n, 2); /* s.scene, out */
+    tu_rm_tree(scratch);
+}
+
+/* item 3: a symlink is written through, a FIFO is written and stays one, a
+ * directory is refused before the fit */
+static void test_item3_links_and_fifos(void **st)
+{
+    (void)st;
+    new_scratch();
+    puts_file("target.c", "old\n");
+    char p[600], q[600];
+    snprintf(p, sizeof p, "%s/link.c", scratch);
+    assert_int_equal(symlink("target.c", p), 0);
+    GEN("--func", "log", "--variant", "fast", "--no-sweep", "-o", "link.c");
+    assert_int_equal(R.status, 0);
+    assert_int_equal(kind("link.c"), S_IFLNK);
+    char *t = get("target.c");
+    assert_non_null(strstr(t, "Generated by pfmathgen"));
+    free(t);
+    /* a dangling link: its target is created */
+    snprintf(p, sizeof p, "%s/dangling.c", scratch);
+    assert_int_equal(symlink("sub/new.c", p), 0);
+    snprintf(q, sizeof q, "%s/sub", scratch);
+    assert_int_equal(mkdir(q, 0777), 0);
+    GEN("--func", "log", "--variant", "fast", "--no-sweep", "-o", "dangling.c");
+    assert_int_equal(R.status, 0);
+    assert_int_equal(kind("dangling.c"), S_IFLNK);
+    assert_int_equal(kind("sub/new.c"), S_IFREG);
+    /* a FIFO: opened and written, never replaced */
+    snprintf(p, sizeof p, "%s/fifo.c", scratch);
+    assert_int_equal(mkfifo(p, 0600), 0);
+    int rd = open(p, O_RDONLY | O_NONBLOCK);
+    assert_true(rd >= 0);
+    GEN("--func", "log", "--variant", "fast", "--no-sweep", "-o", "fifo.c");
+    assert_int_equal(R.status, 0);
+    assert_int_equal(kind("fifo.c"), S_IFIFO);
+    static char buf[1 << 16];
+    ssize_t n = read(rd, buf, sizeof buf - 1);
+    close(rd);
+    assert_true(n > 0);
+    buf[n] = 0;
+    assert_non_null(strstr(buf, "Generated by pfmathgen"));
+    /* a directory */
+    GEN("--func", "log", "-o", "sub");
+    expect2();
+    assert_int_equal(kind("sub"), S_IFDIR);
+    tu_rm_tree(scratch);
+}
+
+static int have_gnuplot(void)
+{
+    const char *v[] = {"gnuplot", "--version", NULL};
+    tu_execvp_in(NULL, v, &R);
+    return R.status == 0;
+}
+
+/* item 4: names with quotes are names, for the shell and for gnuplot */
+static void test_item4_no_injection(void **st)
+{
+    (void)st;
+    new_scratch();
+    puts_file("s.scene", cheap_scene);
+    const char *qdir = "q'; touch X; '";
+    char p[600];
+    snprintf(p, sizeof p, "%s/%s", scratch, qdir);
+    assert_int_equal(mkdir(p, 0777), 0);
+    GEN("--scene", "s.scene", "-o", qdir);
+    assert_int_equal(R.status, 0);
+    assert_false(exists("X"));
+    snprintf(p, sizeof p, "%s/scene.h", qdir);
+    assert_true(exists(p));
+    GEN("--func", "log", "--variant", "fast", "--no-sweep", "-o", "a'; touch Z; 'b.c");
+    assert_int_equal(R.status, 0);
+    assert_false(exists("Z"));
+    assert_true(exists("a'; touch Z; 'b.c"));
+    if (have_gnuplot()) {
+        const char *svg = "x'; system 'touch Y'; print '.svg";
+        GEN("--func", "log", "--variant", "fast", "--no-sweep", "--plot", svg, "-o", "p.c");
+        assert_int_equal(R.status, 0);
+        assert_false(exists("Y"));
+        char *s = get(svg);
+        assert_non_null(s);
+        assert_non_null(strstr(s, "</svg>"));
+        free(s);
+    } else {
+        print_message("  (no gnuplot: the --plot half is skipped)\n");
+    }
+    tu_rm_tree(scratch);
+}
+
+/* item 5: scene lines of any length, true line numbers, no NUL bytes */
+static void test_item5_long_lines(void **st)
+{
+    (void)st;
+    new_scratch();
+    static char line[4096];
+    /* a comment whose tail, past byte 511, reads as an entry */
+    snprintf(line, sizeof line, "#%600s%s\n%s", "", "sqrt fast ufixed<8,8> ufixed<8,8>", cheap_scene);
+    puts_file("a.scene", line);
+    GEN("--scene", "a.scene", "-o", "a");
+    assert_int_equal(R.status, 0);
+    assert_int_equal(count_c("a"), 1);
+    assert_false(exists("a/a_sqrt_fast_u8_8_u8_8.c"));
+    /* one entry spread over a long line */
+    snprintf(line, sizeof line, "sqrt exact%700sufixed<8,8>%700sufixed<8,8>   # %1000s\n", "", "", "");
+    puts_file("b.scene", line);
+    GEN("--scene", "b.scene", "-o", "b");
+    assert_int_equal(R.status, 0);
+    assert_int_equal(count_c("b"), 1);
+    /* the error's line number counts lines, not 511-byte pieces */
+    snprintf(line, sizeof line, "# %2000s\n\nfrob exact float float\n", "");
+    puts_file("c.scene", line);
+    GEN("--scene", "c.scene", "-o", "c");
+    expect2();
+    assert_non_null(strstr(R.err, "c.scene:3:"));
+    assert_false(exists("c"));
+    /* a NUL byte, even in a comment */
+    static const char nul[] = "sqrt exact ufixed<8,8> ufixed<8,8>\n# a\0b\n";
+    put("d.scene", nul, sizeof nul - 1);
+    GEN("--scene", "d.scene", "-o", "d");
+    expect2();
+    assert_non_null(strstr(R.err, "d.scene:2:"));
+    assert_non_null(strstr(R.err, "NUL"));
+    assert_false(exists("d"));
+    tu_rm_tree(scratch);
+}
+
+/* item 9: impossible requests answer at once */
+static void test_item9_fast_refusals(void **st)
+{
+    (void)st;
+    new_scratch();
+    const char *const cases[][8] = {
+        {"--func", "exp", "--max-rel-err", "1e-30", NULL},
+        {"--func", "log", "--max-abs-err", "2^-60", NULL},
+        {"--func", "log", "--target", "fixed<31,60>", NULL},
+        {"--func", "sin", "--type", "fixed<15,12>", "--order", "30", NULL},
+        {"--func", "sin", "--type", "fixed<15,12>", "--order", "25", NULL},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        double t0 = now();
+        tu_runv_in(scratch, "pfmathgen", cases[i], &R);
+        double dt = now() - t0;
+        print_message("  %s %s %s: %.2f s", cases[i][1], cases[i][2], cases[i][3], dt);
+        expect2();
+        assert_true(dt < 3.0);
+    }
+    tu_rm_tree(scratch);
+}
+
+/* item 10: a bad output is found before the fit, with a clear message, and
+ * nothing is left behind */
+static void test_item10_outputs_first(void **st)
+{
+    (void)st;
+    new_scratch();
+    GEN("--func", "log", "-o", "/nonexistent/d/f.c");
+    expect2(); /* one line: no report, so no fit */
+    assert_non_null(strstr(R.err, "does not exist"));
+    GEN("--func", "log", "--plot", "/nonexistent/e.svg");
+    expect2();
+    assert_null(strstr(R.err, "gnuplot"));
+    assert_non_null(strstr(R.err, "/nonexistent"));
+    GEN("--func", "log", "--plot", "e.svg", "-o", "/bad/x.c");
+    expect2();
+    assert_false(exists("e.svg"));
+    char p[600];
+    snprintf(p, sizeof p, "%s/dir", scratch);
+    assert_int_equal(mkdir(p, 0777), 0);
+    GEN("--func", "log", "--plot", "e.svg", "-o", "dir");
+    expect2();
+    assert_false(exists("e.svg"));
+    tu_rm_tree(scratch);
+}
+
+/* item 13: scene.h works from C++ and float scene functions do not take
+ * libpfmath's names: a C++ program links a scene and libpfmath together */
+static void test_item13_scene_links_with_libpfmath(void **st)
+{
+    (void)st;
+    new_scratch();
+    puts_file("ripple.scene", "sin fast float float\n");
+    GEN("--scene", "ripple.scene", "-o", "out");
+    assert_int_equal(R.status, 0);
+    char *h = get("out/scene.h");
+    assert_non_null(strstr(h, "extern \"C\""));
+    assert_non_null(strstr(h, "float ripple_sinf_fast(float x);"));
+    assert_null(strstr(h, " pf_"));
+    free(h);
+    /* --prefix: a chosen prefix; never empty or pf_ alone */
+    puts_file("s.scene", cheap_scene);
+    GEN("--scene", "s.scene", "-o", "p", "--prefix", "my_");
+    assert_int_equal(R.status, 0);
+    assert_true(exists("p/my_sqrt_u8_8_u8_8.c"));
+    const char *badp[] = {"", "pf_", "a b", "9x", "__x", "x'"};
+    for (size_t i = 0; i < sizeof badp / sizeof badp[0]; i++) {
+        GEN("--scene", "s.scene", "-o", "q", "--prefix", badp[i]);
+        expect2();
+        assert_false(exists("q"));
+    }
+    puts_file("main.cpp", "#include \"scene.h\"\n#include \"pfmath.h\"\n#include <cstdio>\n"
+                          "int main() { std::printf(\"%d\\n\", ripple_sinf_fast(0.5f) == pf_sinf_fast(0.5f)); }\n");
+    char lib[PATH_MAX], inc[PATH_MAX + 8], src[PATH_MAX];
+    tu_prog_path("libpfmath.a", lib, sizeof lib);
+    assert_non_null(realpath("libpfmath", src));
+    snprintf(inc, sizeof inc, "-I%s", src);
+    const char *v[] = {"g++", "-Iout", inc, "-c", "main.cpp", "-o", "main.o", NULL};
+    tu_execvp_in(scratch, v, &R);
+    if (R.status == 127) {
+        print_message("  (no g++: skipped)\n");
+        tu_rm_tree(scratch);
+        return;
+    }
+    print_message("%s", R.err);
+    assert_int_equal(R.status, 0);
+    const char *c[] = {"cc", "-std=c17", "-O2", "-c", "out/ripple_sinf_fast.c", "-o", "s.o", NULL};
+    tu_execvp_in(scratch, c, &R);
+    assert_int_equal(R.status, 0);
+    /* the ASan tree's libpfmath.a needs the sanitizers' run time */
+    const char *san = strstr(lib, "/asan/") ? "-fsanitize=address,undefined" : "-lm";
+    const char *l[] = {"g++", "main.o", "s.o", lib, "-lm", san, "-o", "prog", NULL};
+    tu_execvp_in(scratch, l, &R);
+    print_message("%s", R.err);
+    assert_int_equal(R.status, 0);
+    char prog[600];
+    snprintf(prog, sizeof prog, "%s/prog", scratch);
+    const char *r[] = {prog, NULL};
+    tu_execvp_in(scratch, r, &R);
+    assert_int_equal(R.status, 0);
+    tu_rm_tree(scratch);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_item1_scene_keeps_dir),
+        cmocka_unit_test(test_item2_trailing_slash),
+        cmocka_unit_test(test_item3_links_and_fifos),
+        cmocka_unit_test(test_item4_no_injection),
+        cmocka_unit_test(test_item5_long_lines),
+        cmocka_unit_test(test_item9_fast_refusals),
+        cmocka_unit_test(test_item10_outputs_first),
+        cmocka_unit_test(test_item13_scene_links_with_libpfmath),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
