@@ -76,6 +76,33 @@ static inline int pfcli_once(unsigned char seen[256], int c)
     return 0;
 }
 
+/* libpfmath.so for a program that was not told where it is: beside the
+ * program (the build tree), else PREFIX/lib/libpfmath.so.0 for a program in
+ * PREFIX/bin (make install).  0, or -1 when neither exists. */
+static inline int pfcli_default_lib(char *path, size_t n)
+{
+    char self[PATH_MAX];
+    ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (k <= 0)
+        return -1;
+    self[k] = 0;
+    char *slash = strrchr(self, '/');
+    if (!slash)
+        return -1;
+    *slash = 0;
+    snprintf(path, n, "%.*s/libpfmath.so", (int)(n - 16 > 0 ? n - 16 : 0), self);
+    if (access(path, R_OK) == 0)
+        return 0;
+    char *up = strrchr(self, '/');
+    if (up && !strcmp(up, "/bin")) {
+        *up = 0;
+        snprintf(path, n, "%.*s/lib/libpfmath.so.0", (int)(n - 24 > 0 ? n - 24 : 0), self);
+        if (access(path, R_OK) == 0)
+            return 0;
+    }
+    return -1;
+}
+
 typedef struct {
     char final[PATH_MAX];     /* the file to replace (symlinks resolved) */
     char tmp[PATH_MAX + 16];  /* the temporary beside it */

@@ -19,7 +19,8 @@ static const char usage[] =
     "Measures the ULP error of a float function against correctly rounded MPFR\n"
     "references: every float in the function's reduced domain, a seeded\n"
     "full-range sample, and a directed list of special and hard inputs.\n"
-    "  --lib[=PATH]    the function from libpfmath.so (default: next to pfsweep)\n"
+    "  --lib[=PATH]    the function from libpfmath.so (default: next to pfsweep,\n"
+    "                  or PREFIX/lib/libpfmath.so.0 for PREFIX/bin/pfsweep)\n"
     "  --source FILE   compile FILE.c with $CC (default cc) and sweep its function\n"
     "  --name SYMBOL   function symbol (default pf_<func>f or pf_<func>f_fast)\n"
     "  --all           every one of the 2^32 floats instead (OpenMP threads);\n"
@@ -119,12 +120,8 @@ int main(int argc, char **argv)
         if (lib) {
             snprintf(path, sizeof path, "%s", lib);
         } else {
-            ssize_t n = readlink("/proc/self/exe", path, sizeof path - 32);
-            if (n < 0)
+            if (pfcli_default_lib(path, sizeof path) != 0)
                 die2("cannot locate libpfmath.so; pass --lib PATH", NULL);
-            path[n] = 0;
-            char *slash = strrchr(path, '/');
-            strcpy(slash ? slash + 1 : path, "libpfmath.so");
         }
         h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
         if (!h) {

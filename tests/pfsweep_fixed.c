@@ -27,7 +27,8 @@ static const char usage[] =
     "input within 2^16 of 0 and a seeded sample (or all 2^32 with --all).  The\n"
     "reference saturates to the output range; log(x <= 0) is the most negative\n"
     "output and sqrt(x < 0) is 0, as the generated functions define them.\n"
-    "  --lib [PATH]    the function from libpfmath.so (default: next to pfsweep)\n"
+    "  --lib [PATH]    the function from libpfmath.so (default: next to pfsweep,\n"
+    "                  or PREFIX/lib/libpfmath.so.0 for PREFIX/bin/pfsweep)\n"
     "  --source FILE   compile FILE.c with $CC (default cc) and sweep its function\n"
     "  --name SYMBOL   function symbol (default: the library's name, e.g. pf_sin_q12_q14)\n"
     "  --all           every input of a 32-bit type (OpenMP threads; minutes)\n"
@@ -143,12 +144,8 @@ int pfsweep_fixed_main(int argc, char **argv)
         if (lib) {
             snprintf(path, sizeof path, "%s", lib);
         } else {
-            ssize_t n = readlink("/proc/self/exe", path, sizeof path - 32);
-            if (n < 0)
+            if (pfcli_default_lib(path, sizeof path) != 0)
                 die2("cannot locate libpfmath.so; pass --lib PATH", NULL);
-            path[n] = 0;
-            char *slash = strrchr(path, '/');
-            strcpy(slash ? slash + 1 : path, "libpfmath.so");
         }
         h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
         if (!h) {
