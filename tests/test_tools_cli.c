@@ -1,7 +1,7 @@
 /* pfsweep's and pfbench's command lines (issue 11, item 8): a bad number,
  * NaN bound, empty or unknown function or repeated option is exit 2 with one
  * line on stderr, before any work; a refused pfbench leaves bench.md and
- * bench.csv as they were.  The programs run by fork/exec (no shell), each
+ * bench.csv as they were, a complete one replaces them at the end.  The programs run by fork/exec (no shell), each
  * with a time limit: a value that wraps (--samples -1 = 2^64-1) would hang. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -192,6 +192,46 @@ static void test_pfbench(void **st)
     assert_int_equal(n, 1);
 }
 
+/* A complete run replaces the outputs at the end: bench.md, a symlink here,
+ * is written through (the link stays, its target gets the report), and no
+ * temporary is left behind.  The cheapest run: the fixed-point sqrt rows. */
+static void test_pfbench_writes(void **st)
+{
+    (void)st;
+    char dir[PATH_MAX], md[PATH_MAX + 16], real[PATH_MAX + 16], lib[PATH_MAX];
+    snprintf(dir, sizeof dir, "%s/out2", scratch);
+    assert_int_equal(mkdir(dir, 0755), 0);
+    snprintf(md, sizeof md, "%s/bench.md", dir);
+    snprintf(real, sizeof real, "%s/real.md", dir);
+    FILE *f = fopen(real, "w");
+    assert_non_null(f);
+    fputs("an earlier bench\n", f);
+    fclose(f);
+    assert_int_equal(symlink("real.md", md), 0);
+    tu_prog_path("libpfmath.so", lib, sizeof lib);
+    const char *const argv[] = {"pfbench", "--lib", lib, "--out", dir, "--func", "sqrt", "--reps", "11",
+                                "--ms", "0.1", "--samples", "65536", NULL};
+    run_result r;
+    run(argv, &r);
+    print_message("pfbench --func sqrt -> %d: %s", r.status, r.err);
+    assert_int_equal(r.status, 0);
+    struct stat sb;
+    assert_int_equal(lstat(md, &sb), 0);
+    assert_true(S_ISLNK(sb.st_mode));
+    char *s = tu_slurp(real, NULL);
+    assert_non_null(s);
+    assert_non_null(strstr(s, "# pfbench"));
+    assert_non_null(strstr(s, "sqrt"));
+    free(s);
+    int n = 0;
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    for (struct dirent *de; (de = readdir(d));)
+        n += de->d_name[0] != '.';
+    closedir(d);
+    assert_int_equal(n, 3); /* bench.md (link), real.md, bench.csv */
+}
+
 static int setup(void **st)
 {
     (void)st;
@@ -203,12 +243,14 @@ static int teardown(void **st)
     (void)st;
     /* only what this test made: two capture files, out/ and its bench.md */
     char p[PATH_MAX + 32];
-    const char *files[] = {"stdout", "stderr", "out/bench.md", NULL};
+    const char *files[] = {"stdout", "stderr", "out/bench.md", "out2/bench.md", "out2/real.md", "out2/bench.csv", NULL};
     for (int i = 0; files[i]; i++) {
         snprintf(p, sizeof p, "%s/%s", scratch, files[i]);
         unlink(p);
     }
     snprintf(p, sizeof p, "%s/out", scratch);
+    rmdir(p);
+    snprintf(p, sizeof p, "%s/out2", scratch);
     rmdir(p);
     rmdir(scratch);
     return 0;
@@ -220,6 +262,7 @@ int main(void)
         cmocka_unit_test(test_pfsweep_numbers),
         cmocka_unit_test(test_pfsweep_names_and_repeats),
         cmocka_unit_test(test_pfbench),
+        cmocka_unit_test(test_pfbench_writes),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
