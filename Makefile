@@ -82,10 +82,15 @@ test-asan: asan-build
 	bash tests/run-tests.sh $(patsubst $(BUILD)/%,$(BUILD)/asan/%,$(TESTS))
 
 # make install PREFIX=...: headers, static and shared library (soname
-# libpfmath.so.$(PF_SOVERSION)) and pkg-config's pfmath.pc.
+# libpfmath.so.$(PF_SOVERSION)), pkg-config's pfmath.pc, and the programs
+# pfmathgen and pfsweep in PREFIX/bin.  Both are self-contained (the
+# templates are embedded; MPFR, GMP and nlopt are the system's shared
+# libraries); pfmathgen runs $CC (default cc) on the C it emits, and an
+# installed pfsweep finds PREFIX/lib/libpfmath.so.0 by itself.
 PF_HEADERS = $(wildcard libpfmath/pfmath.h libpfmath/pfmath_fixed.h libpfmath/pffixed.h libpfmath/pfnoise.h)
-install: $(BUILD)/libpfmath.a $(BUILD)/libpfmath.so
-	install -d $(DESTDIR)$(PREFIX)/include/pfmath $(DESTDIR)$(PREFIX)/lib/pkgconfig
+install: $(BUILD)/libpfmath.a $(BUILD)/libpfmath.so $(BUILD)/pfmathgen $(BUILD)/pfsweep
+	install -d $(DESTDIR)$(PREFIX)/include/pfmath $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
+	install -m 755 $(BUILD)/pfmathgen $(BUILD)/pfsweep $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 $(PF_HEADERS) $(DESTDIR)$(PREFIX)/include/pfmath/
 	install -m 644 $(BUILD)/libpfmath.a $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(BUILD)/libpfmath.so $(DESTDIR)$(PREFIX)/lib/libpfmath.so.$(PF_SOVERSION)

@@ -65,6 +65,10 @@ typedef struct {
  * err (inconsistent or dependent constraints, order too low for them, ...). */
 int fit_lsq(const fit_problem *pb, fit_poly *out, char *err, size_t errlen);
 
+/* The same, plus the expected cost of rounding each free coefficient c_k by
+ * a relative coef_u later (a ridge term; see fit/lsq.c).  0 = fit_lsq. */
+int fit_lsq_pen(const fit_problem *pb, fit_real coef_u, fit_poly *out, char *err, size_t errlen);
+
 /* Minimax refinement: start from the least-squares fit and minimize the
  * maximum relative (or absolute) error over a dense set of D, keeping the
  * same equality constraints.  Epigraph form, solved with nlopt's SLSQP:
@@ -89,6 +93,12 @@ fit_real fit_round_coef(fit_real v, fit_coeffmt fmt, int *exp);
  * with g from MPFR, refined around the largest peaks by golden-section
  * search; fills out->max_err and out->max_err_at. */
 void fit_measure(const fit_problem *pb, fit_poly *p);
+
+/* Between these two calls (one thread; fit_round brackets its chains with
+ * them) fit_eval_target remembers g at every t it has seen for problems with
+ * pb's target and domain. */
+void fit_target_cache_begin(const fit_problem *pb);
+void fit_target_cache_end(void);
 
 /* g(t) and g'(t) in binary128 (g' by a central difference at 512 bits). */
 fit_real fit_eval_target(const fit_problem *pb, fit_real t);

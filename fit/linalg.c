@@ -172,15 +172,17 @@ int la_lse(const fit_real *A, int m, int n, const fit_real *b,
     /* R^T y1 = d; x0 = Q1 y1. */
     if (p > 0)
         la_forward_subst_t(CT, n, p, d, y1);
-    /* AZ = A Q2, rhs = b - A Q1 y1 */
+    /* AZ = A Q2, rhs = b - A x0 with x0 = Q1 y1 */
+    for (int j = 0; j < n; j++) {
+        fit_real x0j = 0;
+        for (int k = 0; k < p; k++)
+            x0j += Q[(size_t)k * n + j] * y1[k];
+        x[j] = x0j;
+    }
     for (int i = 0; i < m; i++) {
         fit_real s = b[i];
-        for (int j = 0; j < n; j++) {
-            fit_real x0j = 0;
-            for (int k = 0; k < p; k++)
-                x0j += Q[(size_t)k * n + j] * y1[k];
-            s -= A[(size_t)j * m + i] * x0j;
-        }
+        for (int j = 0; j < n; j++)
+            s -= A[(size_t)j * m + i] * x[j];
         rhs[i] = s;
     }
     for (int c = 0; c < r; c++)

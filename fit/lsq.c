@@ -10,6 +10,7 @@
 #include "linalg.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,7 +46,70 @@ fit_real fit_get_mpfr(const mpfr_t v)
     return (fit_real)h + ((fit_real)m + (fit_real)l);
 }
 
+/* While fit_round runs, every refit evaluates g at the same nodes (the
+ * problem only gains coefficient pins): remember g(t) by the bits of t.
+ * Open addressing; when full, values are simply not stored. */
+#define TCACHE_SIZE 16384
+typedef struct {
+    unsigned char used[TCACHE_SIZE];
+    fit_real t[TCACHE_SIZE], g[TCACHE_SIZE];
+} tcache;
+static _Thread_local tcache *tc_cur;
+static _Thread_local const fit_problem *tc_owner;
+
+void fit_target_cache_begin(const fit_problem *pb)
+{
+    if (tc_cur)
+        return;
+    tc_cur = calloc(1, sizeof *tc_cur);
+    tc_owner = pb;
+}
+
+void fit_target_cache_end(void)
+{
+    free(tc_cur);
+    tc_cur = NULL;
+    tc_owner = NULL;
+}
+
+static size_t tc_slot(fit_real t)
+{
+    unsigned char b[sizeof t];
+    memcpy(b, &t, sizeof t);
+    uint64_t h = 1469598103934665603ull;
+    for (size_t i = 0; i < 16 && i < sizeof t; i++)
+        h = (h ^ b[i]) * 1099511628211ull;
+    return (size_t)(h % TCACHE_SIZE);
+}
+
+static int tc_usable(const fit_problem *pb)
+{
+    /* same target and domain as the problem fit_round started with */
+    return tc_cur && pb->g == tc_owner->g && pb->ctx == tc_owner->ctx && pb->a == tc_owner->a &&
+           pb->b == tc_owner->b;
+}
+
+static fit_real eval_target_mpfr(const fit_problem *pb, fit_real t);
+
 fit_real fit_eval_target(const fit_problem *pb, fit_real t)
+{
+    if (!tc_usable(pb))
+        return eval_target_mpfr(pb, t);
+    size_t i = tc_slot(t);
+    for (size_t probe = 0; probe < 64; probe++, i = (i + 1) % TCACHE_SIZE) {
+        if (!tc_cur->used[i]) {
+            tc_cur->t[i] = t;
+            tc_cur->g[i] = eval_target_mpfr(pb, t);
+            tc_cur->used[i] = 1;
+            return tc_cur->g[i];
+        }
+        if (memcmp(&tc_cur->t[i], &t, 16) == 0)
+            return tc_cur->g[i];
+    }
+    return eval_target_mpfr(pb, t);
+}
+
+static fit_real eval_target_mpfr(const fit_problem *pb, fit_real t)
 {
     mpfr_t x, y;
     mpfr_inits2(256, x, y, (mpfr_ptr)0);
@@ -122,6 +186,32 @@ void fit_gauss_legendre(int n, fit_real *x, fit_real *w)
         x[n - 1 - i] = z;
         w[i] = w[n - 1 - i] = 2 / ((1 - z * z) * dp * dp);
     }
+}
+
+/* Newton for every root costs more than the rest of a refit: the last node
+ * set is kept (the same bits as computing it afresh). */
+static void gl_nodes(int n, fit_real *x, fit_real *w)
+{
+    static _Thread_local int last_n;
+    static _Thread_local fit_real *last_x, *last_w;
+    if (n != last_n || !last_x) {
+        free(last_x);
+        free(last_w);
+        last_x = malloc(sizeof(fit_real) * (size_t)n);
+        last_w = malloc(sizeof(fit_real) * (size_t)n);
+        if (!last_x || !last_w) {
+            free(last_x);
+            free(last_w);
+            last_x = last_w = NULL;
+            last_n = 0;
+            fit_gauss_legendre(n, x, w);
+            return;
+        }
+        fit_gauss_legendre(n, last_x, last_w);
+        last_n = n;
+    }
+    memcpy(x, last_x, sizeof(fit_real) * (size_t)n);
+    memcpy(w, last_w, sizeof(fit_real) * (size_t)n);
 }
 
 /* ---- Chebyshev basis on D ---- */
@@ -262,6 +352,18 @@ void fit_normalize_constraints(const fit_problem *pb0, fit_problem *pbs)
 
 int fit_lsq(const fit_problem *pb0, fit_poly *out, char *err, size_t errlen)
 {
+    return fit_lsq_pen(pb0, 0, out, err, errlen);
+}
+
+/* With coef_u > 0, the sum of squares also counts the expected cost of
+ * rounding each free coefficient later: c_k moves by up to coef_u |c_k|
+ * (uniform, variance coef_u^2 c_k^2 / 3), which adds
+ * coef_u^2 / 3 * c_k^2 * int_D (t^k / g)^2 dt  to the objective (ridge rows).
+ * At high order the plain refit buys tiny gains with huge cancelling
+ * coefficients (|c_k| ~ 1e10 for log at order 30) whose rounding then costs
+ * far more; the penalty prices that in. */
+int fit_lsq_pen(const fit_problem *pb0, fit_real coef_u, fit_poly *out, char *err, size_t errlen)
+{
     fit_problem pbs;
     fit_normalize_constraints(pb0, &pbs);
     const fit_problem *pb = &pbs;
@@ -279,11 +381,12 @@ int fit_lsq(const fit_problem *pb0, fit_poly *out, char *err, size_t errlen)
         snprintf(err, errlen, "odd/even fits need a domain [0, b]");
         return -1;
     }
-    int m = fit_default_nodes(pb);
-    fit_real *gx = malloc(sizeof(fit_real) * (size_t)m);
-    fit_real *gw = malloc(sizeof(fit_real) * (size_t)m);
-    fit_real *A = malloc(sizeof(fit_real) * (size_t)m * (size_t)n);
-    fit_real *bv = malloc(sizeof(fit_real) * (size_t)m);
+    int nq = fit_default_nodes(pb), m = nq + (coef_u > 0 ? pb->order + 1 : 0);
+    fit_real *gx = malloc(sizeof(fit_real) * (size_t)nq);
+    fit_real *gw = malloc(sizeof(fit_real) * (size_t)nq);
+    fit_real *A = calloc((size_t)m * (size_t)n, sizeof(fit_real));
+    fit_real *bv = calloc((size_t)m, sizeof(fit_real));
+    fit_real pen[FIT_MAX_ORDER + 1] = {0}; /* int_D (t^k / g)^2 dt by the same quadrature */
     fit_real C[FIT_MAX_CON * (FIT_MAX_ORDER + 1)], d[FIT_MAX_CON], x[FIT_MAX_ORDER + 1];
     fit_real phi[FIT_MAX_ORDER + 1];
     static _Thread_local fit_real M[FIT_MAX_ORDER + 1][FIT_MAX_ORDER + 1];
@@ -293,9 +396,9 @@ int fit_lsq(const fit_problem *pb0, fit_poly *out, char *err, size_t errlen)
         rc = -1;
         goto out;
     }
-    fit_gauss_legendre(m, gx, gw);
+    gl_nodes(nq, gx, gw);
     fit_real half = (pb->b - pb->a) / 2, mid = (pb->a + pb->b) / 2;
-    for (int i = 0; i < m; i++) {
+    for (int i = 0; i < nq; i++) {
         fit_real t = mid + half * gx[i];
         fit_real g = fit_eval_target(pb, t);
         fit_real sw = la_sqrt(gw[i] * half);
@@ -304,8 +407,22 @@ int fit_lsq(const fit_problem *pb0, fit_poly *out, char *err, size_t errlen)
         for (int j = 0; j < n; j++)
             A[(size_t)j * m + i] = phi[j] * wt;
         bv[i] = g * wt;
+        if (coef_u > 0) {
+            fit_real tk = wt;
+            for (int k = 0; k <= pb->order; k++, tk *= t)
+                pen[k] += tk * tk;
+        }
     }
     basis_to_monomial(pb, M);
+    if (coef_u > 0)
+        for (int k = 0; k <= pb->order; k++) {
+            int pinned = 0;
+            for (int c = 0; c < pb->ncon; c++)
+                pinned |= pb->con[c].kind == FIT_CON_COEF && pb->con[c].index == k;
+            fit_real sc = pinned ? 0 : coef_u * la_sqrt(pen[k] / 3);
+            for (int j = 0; j < n; j++)
+                A[(size_t)j * m + nq + k] = sc * M[k][j];
+        }
     constraint_rows(pb, n, M, C);
     for (int c = 0; c < pb->ncon; c++) {
         const fit_constraint *k = &pb->con[c];

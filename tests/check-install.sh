@@ -33,5 +33,20 @@ flags=$(pkg-config --cflags --libs pfmath) || fail "pkg-config does not know pfm
 ${CC:-cc} -std=c11 -Wall -Werror "$tmp/use.c" -o "$tmp/use" $flags -lm || fail "cannot build against the installed copy"
 out=$(LD_LIBRARY_PATH="$tmp/prefix/lib" "$tmp/use") || fail "installed program failed: $out"
 ldd "$tmp/use" | grep -q "$tmp/prefix/lib/libpfmath.so.0" 2>/dev/null || LD_LIBRARY_PATH="$tmp/prefix/lib" ldd "$tmp/use" | grep -q "$tmp/prefix/lib/libpfmath.so.0" || fail "not linked against the installed libpfmath.so.0"
-echo "[       OK ] install, pkg-config ($flags), soname $soname"
+# the programs, run from the installed copy only: a scratch working
+# directory, a PATH without the build tree, and a library path for the
+# installed libpfmath.so.0 only
+bin="$tmp/prefix/bin"
+[ -x "$bin/pfmathgen" ] && [ -x "$bin/pfsweep" ] || fail "pfmathgen or pfsweep not installed in PREFIX/bin"
+mkdir "$tmp/work"
+( cd "$tmp/work" && env PATH="$bin:/usr/bin:/bin" CC="${CC:-cc}" pfmathgen --func exp --variant fast -o e.c ) \
+  >"$tmp/gen.log" 2>&1 || fail "installed pfmathgen failed: $(tail -1 "$tmp/gen.log")"
+grep -q "Sweep:" "$tmp/work/e.c" || fail "installed pfmathgen did not compile and sweep its output"
+# the installed pfsweep on the installed library (found by itself) and on the emitted C
+( cd "$tmp/work" && env PATH="$bin:/usr/bin:/bin" pfsweep --func exp --variant fast --samples 1000 --max-ulp 1000 ) \
+  >"$tmp/sweep.log" 2>&1 || fail "installed pfsweep on the installed library: $(tail -1 "$tmp/sweep.log")"
+grep -q "^TOTAL pf_expf_fast" "$tmp/sweep.log" || fail "installed pfsweep printed no TOTAL line"
+( cd "$tmp/work" && env PATH="$bin:/usr/bin:/bin" CC="${CC:-cc}" pfsweep --func exp --variant fast --source e.c --samples 1000 ) \
+  >"$tmp/sweep2.log" 2>&1 || fail "installed pfsweep --source: $(tail -1 "$tmp/sweep2.log")"
+echo "[       OK ] install, pkg-config ($flags), soname $soname; installed pfmathgen and pfsweep run"
 echo "[  PASSED  ] 1 test(s)."

@@ -3,6 +3,7 @@
  * See --help and docs/bench.md. */
 #include "pfbench.h"
 #include "pfbench_fixed.h"
+#include "pfcli.h"
 
 #include <errno.h>
 #include <getopt.h>
@@ -28,9 +29,12 @@ static const char usage[] =
     "  --func LIST   only these functions (default: all)\n"
     "  --reps N      timed repetitions per candidate, >= 11 (default 15)\n"
     "  --samples N   error sample size, >= 2^16 (default 2^20)\n"
+    "  --seed S      seed of the sample, 0..2^64-1 (default 1)\n"
     "  --ms T        target length of one timed repetition in ms (default 4)\n"
     "  --list        print the domains and the candidates found, then exit\n"
-    "Exit status: 0 ok, 1 load failure, 2 bad usage.\n";
+    "Numbers are decimal or 0x hex; each option may be given once.  bench.md and\n"
+    "bench.csv are replaced only at the end of a complete run.\n"
+    "Exit status: 0 ok, 1 load or write failure, 2 bad usage.\n";
 
 #define NTIME (1u << 16) /* elements per timed pass (issue 7) */
 
@@ -367,37 +371,35 @@ int main(int argc, char **argv)
         {"help", no_argument, 0, 'h'},          {0, 0, 0, 0}};
     const char *lib = NULL, *outdir = NULL, *only = NULL;
     long reps = 15;
-    unsigned long long samples = 1ull << 20, seed = 1;
+    unsigned long long samples = 1ull << 20, seed = 1, ureps;
     double target_ms = 4;
     int list = 0;
+    unsigned char seen[256] = {0};
     opterr = 0;
     int ch;
     while ((ch = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
-        char *e;
+        if (ch != ':' && ch != '?' && pfcli_once(seen, ch))
+            die2("option given twice: --", pfcli_name(opts, ch));
         switch (ch) {
         case 'l': lib = optarg; break;
         case 'o': outdir = optarg; break;
         case 'f': only = optarg; break;
         case 'r':
-            reps = strtol(optarg, &e, 10);
-            if (*e || reps < 11 || reps > 1001)
-                die2("--reps must be 11..1001: ", optarg);
+            if (pfcli_u64(optarg, 11, 1001, &ureps))
+                die2("--reps must be a whole number in 11..1001: ", optarg);
+            reps = (long)ureps;
             break;
         case 'n':
-            errno = 0;
-            samples = strtoull(optarg, &e, 0);
-            if (errno || *e || samples < NTIME || samples > (1ull << 28))
-                die2("--samples must be 2^16..2^28: ", optarg);
+            if (pfcli_u64(optarg, NTIME, 1ull << 28, &samples))
+                die2("--samples must be a whole number in 2^16..2^28: ", optarg);
             break;
         case 'S':
-            seed = strtoull(optarg, &e, 0);
-            if (*e)
-                die2("bad --seed ", optarg);
+            if (pfcli_u64(optarg, 0, ULLONG_MAX, &seed))
+                die2("--seed must be a whole number in 0..2^64-1: ", optarg);
             break;
         case 'm':
-            target_ms = strtod(optarg, &e);
-            if (*e || !(target_ms > 0 && target_ms <= 1000))
-                die2("--ms must be in (0, 1000]: ", optarg);
+            if (pfcli_real(optarg, 0, 1000, &target_ms) || !(target_ms > 0))
+                die2("--ms must be a number in (0, 1000]: ", optarg);
             break;
         case 'L': list = 1; break;
         case 'h': fputs(usage, stdout); return 0;
@@ -410,16 +412,29 @@ int main(int argc, char **argv)
     int nd;
     const pfb_domain *doms = pfb_domains(&nd);
     if (only) {
-        /* every name in the list must be a known function */
-        char tmp[256];
-        if (strlen(only) >= sizeof tmp)
-            die2("--func list too long", NULL);
-        snprintf(tmp, sizeof tmp, "%s", only);
-        for (char *t = strtok(tmp, ","); t; t = strtok(NULL, ",")) {
-            int id = pfref_lookup(t);
-            if (id < 0)
-                die2("unknown function ", t);
-        }
+        /* every name in the list must be a function this bench has rows
+           for: an empty list or name would otherwise bench nothing */
+        int nfr;
+        const pfb_fixed_row *fr = pfb_fixed_rows(&nfr);
+        const char *p = only;
+        do {
+            size_t k = strcspn(p, ",");
+            char name[64];
+            if (k == 0)
+                die2("--func: empty function name in the list: ", only);
+            if (k >= sizeof name)
+                die2("--func: unknown function in the list: ", only);
+            memcpy(name, p, k);
+            name[k] = 0;
+            int id = pfref_lookup(name), known = 0;
+            for (int i = 0; id >= 0 && i < nd && !known; i++)
+                known = (int)doms[i].f == id;
+            for (int i = 0; id >= 0 && i < nfr && !known; i++)
+                known = (int)fr[i].f == id;
+            if (!known)
+                die2("--func: unknown function: ", name);
+            p += k;
+        } while (*p++);
     }
     char self[PATH_MAX], libpath[PATH_MAX + 32], dir[PATH_MAX];
     ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
@@ -435,6 +450,9 @@ int main(int argc, char **argv)
     if (!outdir)
         outdir = dir;
     char err[512];
+    struct stat osb;
+    if (!list && (stat(outdir, &osb) != 0 || !S_ISDIR(osb.st_mode) || access(outdir, W_OK | X_OK) != 0))
+        die2("--out is not a writable directory: ", outdir);
     if (pfb_ours_open(lib, err, sizeof err)) {
         fprintf(stderr, "pfbench: %s\n", err);
         return 1;
@@ -458,11 +476,13 @@ int main(int argc, char **argv)
     char mdpath[PATH_MAX + 16], csvpath[PATH_MAX + 16];
     snprintf(mdpath, sizeof mdpath, "%s/bench.md", outdir);
     snprintf(csvpath, sizeof csvpath, "%s/bench.csv", outdir);
-    FILE *md = fopen(mdpath, "w"), *csv = fopen(csvpath, "w");
-    if (!md || !csv) {
-        fprintf(stderr, "pfbench: cannot write %s, %s\n", mdpath, csvpath);
-        return 1;
+    /* static: the exit handler may still see them after a die2 */
+    static pfcli_out omd, ocsv;
+    if (pfcli_out_open(&omd, mdpath, err, sizeof err) || pfcli_out_open(&ocsv, csvpath, err, sizeof err)) {
+        fprintf(stderr, "pfbench: %s\n", err);
+        return 1; /* exit handler drops a temporary already made */
     }
+    FILE *md = omd.f, *csv = ocsv.f;
     double t_start = wall();
     double target = target_ms * 1e-3;
 
@@ -683,8 +703,15 @@ int main(int argc, char **argv)
     if (g.miss)
         fprintf(md, "\nMissed:\n\n%s", g.misses);
     fprintf(md, "\nTotal bench time %.0f s.\n", wall() - t_start);
-    fclose(md);
-    fclose(csv);
+    if (pfcli_out_commit(&omd, err, sizeof err) != 0) {
+        pfcli_out_abort(&ocsv);
+        fprintf(stderr, "pfbench: %s\n", err);
+        return 1;
+    }
+    if (pfcli_out_commit(&ocsv, err, sizeof err) != 0) {
+        fprintf(stderr, "pfbench: %s\n", err);
+        return 1;
+    }
     fprintf(stderr, "pfbench: wrote %s and %s (%.0f s); %d goals met, %d missed\n", mdpath, csvpath,
             wall() - t_start, g.pass, g.miss);
     free(X);

@@ -1,6 +1,7 @@
 /* pfsweep: ULP error of a float function against the MPFR references.
  * See --help. */
 #include "compile.h"
+#include "pfcli.h"
 #include "sweep.h"
 
 #include <dlfcn.h>
@@ -18,15 +19,18 @@ static const char usage[] =
     "Measures the ULP error of a float function against correctly rounded MPFR\n"
     "references: every float in the function's reduced domain, a seeded\n"
     "full-range sample, and a directed list of special and hard inputs.\n"
-    "  --lib[=PATH]    the function from libpfmath.so (default: next to pfsweep)\n"
+    "  --lib[=PATH]    the function from libpfmath.so (default: next to pfsweep,\n"
+    "                  or PREFIX/lib/libpfmath.so.0 for PREFIX/bin/pfsweep)\n"
     "  --source FILE   compile FILE.c with $CC (default cc) and sweep its function\n"
     "  --name SYMBOL   function symbol (default pf_<func>f or pf_<func>f_fast)\n"
     "  --all           every one of the 2^32 floats instead (OpenMP threads);\n"
     "                  atan2: a dense seeded sample of --pairs pairs and every\n"
     "                  pair of special values (tests/pfsweep_pairs.c)\n"
-    "  --pairs N       atan2 with --all: random pairs (default 2^28)\n"
-    "  --samples N     size of the random sample (default 2^22)\n"
-    "  --max-ulp B     exit with status 1 when the max error exceeds B ULP\n"
+    "  --pairs N       atan2 with --all: random pairs, 1..2^32 (default 2^28)\n"
+    "  --samples N     size of the random sample, 0..2^32 (default 2^22)\n"
+    "  --seed S        seed of the random sample, 0..2^64-1 (default 1)\n"
+    "  --max-ulp B     exit with status 1 when the max error exceeds B ULP (B >= 0)\n"
+    "Numbers are decimal or 0x hex; each option may be given once.\n"
     "Exit status: 0 ok, 1 bound exceeded or load failure, 2 bad usage.\n";
 
 static void die2(const char *msg, const char *arg)
@@ -55,9 +59,12 @@ int main(int argc, char **argv)
     int all = 0, use_lib = 0;
     unsigned long long samples = 1ull << 22, seed = 1, pairs = 1ull << 28;
     double max_ulp = -1;
+    unsigned char seen[256] = {0};
     opterr = 0;
     int c;
     while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+        if (c != ':' && c != '?' && pfcli_once(seen, c))
+            die2("option given twice: --", pfcli_name(opts, c));
         switch (c) {
         case 'f': func = optarg; break;
         case 'v':
@@ -69,30 +76,22 @@ int main(int argc, char **argv)
         case 's': src = optarg; break;
         case 'N': name = optarg; break;
         case 'a': all = 1; break;
-        case 'n': {
-            char *e;
-            errno = 0;
-            samples = strtoull(optarg, &e, 0);
-            if (errno || *e)
-                die2("bad --samples ", optarg);
+        case 'n':
+            if (pfcli_u64(optarg, 0, 1ull << 32, &samples))
+                die2("--samples must be a whole number in 0..2^32: ", optarg);
             break;
-        }
-        case 'S': seed = strtoull(optarg, NULL, 0); break;
-        case 'P': {
-            char *e;
-            errno = 0;
-            pairs = strtoull(optarg, &e, 0);
-            if (errno || *e)
-                die2("bad --pairs ", optarg);
+        case 'S':
+            if (pfcli_u64(optarg, 0, ULLONG_MAX, &seed))
+                die2("--seed must be a whole number in 0..2^64-1: ", optarg);
             break;
-        }
-        case 'm': {
-            char *e;
-            max_ulp = strtod(optarg, &e);
-            if (*e || max_ulp < 0)
-                die2("bad --max-ulp ", optarg);
+        case 'P':
+            if (pfcli_u64(optarg, 1, 1ull << 32, &pairs))
+                die2("--pairs must be a whole number in 1..2^32: ", optarg);
             break;
-        }
+        case 'm':
+            if (pfcli_real(optarg, 0, 1e300, &max_ulp))
+                die2("--max-ulp must be a finite number >= 0: ", optarg);
+            break;
         case 'h': fputs(usage, stdout); return 0;
         case ':': die2("option needs an argument: ", argv[optind - 1]); break;
         default: die2("unknown option (see --help): ", argv[optind - 1]); break;
@@ -121,12 +120,8 @@ int main(int argc, char **argv)
         if (lib) {
             snprintf(path, sizeof path, "%s", lib);
         } else {
-            ssize_t n = readlink("/proc/self/exe", path, sizeof path - 32);
-            if (n < 0)
+            if (pfcli_default_lib(path, sizeof path) != 0)
                 die2("cannot locate libpfmath.so; pass --lib PATH", NULL);
-            path[n] = 0;
-            char *slash = strrchr(path, '/');
-            strcpy(slash ? slash + 1 : path, "libpfmath.so");
         }
         h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
         if (!h) {

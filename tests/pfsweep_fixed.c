@@ -2,6 +2,7 @@
  * output type against ref/ (MPFR), max and mean, worst input, histogram.
  * Exhaustive for inputs of at most 16 bits; --all for 32-bit ones. */
 #include "compile.h"
+#include "pfcli.h"
 #include "fixedgen.h"
 #include "fixedtype.h"
 #include "sweep_fixed.h"
@@ -26,12 +27,15 @@ static const char usage[] =
     "input within 2^16 of 0 and a seeded sample (or all 2^32 with --all).  The\n"
     "reference saturates to the output range; log(x <= 0) is the most negative\n"
     "output and sqrt(x < 0) is 0, as the generated functions define them.\n"
-    "  --lib [PATH]    the function from libpfmath.so (default: next to pfsweep)\n"
+    "  --lib [PATH]    the function from libpfmath.so (default: next to pfsweep,\n"
+    "                  or PREFIX/lib/libpfmath.so.0 for PREFIX/bin/pfsweep)\n"
     "  --source FILE   compile FILE.c with $CC (default cc) and sweep its function\n"
     "  --name SYMBOL   function symbol (default: the library's name, e.g. pf_sin_q12_q14)\n"
     "  --all           every input of a 32-bit type (OpenMP threads; minutes)\n"
-    "  --samples N     size of the random sample (default 2^22)\n"
-    "  --max-lsb B     exit with status 1 unless every error is below B LSB\n"
+    "  --samples N     size of the random sample, 0..2^32 (default 2^22)\n"
+    "  --seed S        seed of the random sample, 0..2^64-1 (default 1)\n"
+    "  --max-lsb B     exit with status 1 unless every error is below B LSB (B > 0)\n"
+    "Numbers are decimal or 0x hex; each option may be given once.\n"
     "Exit status: 0 ok, 1 bound exceeded (--max-lsb; for --variant fast also the\n"
     "fast bound max(2^-10 relative, 4 LSB)), scalar and array forms disagreeing, or\n"
     "load failure, 2 bad usage.\n";
@@ -69,10 +73,13 @@ int pfsweep_fixed_main(int argc, char **argv)
     int all = 0, use_lib = 0;
     unsigned long long samples = 1ull << 22, seed = 1;
     double max_lsb = -1;
+    unsigned char seen[256] = {0};
     opterr = 0;
     optind = 1;
     int c;
     while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+        if (c != ':' && c != '?' && pfcli_once(seen, c))
+            die2("option given twice: --", pfcli_name(opts, c));
         switch (c) {
         case 'f': func = optarg; break;
         case 'v':
@@ -84,22 +91,18 @@ int pfsweep_fixed_main(int argc, char **argv)
         case 's': src = optarg; break;
         case 'N': name = optarg; break;
         case 'a': all = 1; break;
-        case 'n': {
-            char *e;
-            errno = 0;
-            samples = strtoull(optarg, &e, 0);
-            if (errno || *e)
-                die2("bad --samples ", optarg);
+        case 'n':
+            if (pfcli_u64(optarg, 0, 1ull << 32, &samples))
+                die2("--samples must be a whole number in 0..2^32: ", optarg);
             break;
-        }
-        case 'S': seed = strtoull(optarg, NULL, 0); break;
-        case 'm': {
-            char *e;
-            max_lsb = strtod(optarg, &e);
-            if (*e || !(max_lsb > 0))
-                die2("bad --max-lsb ", optarg);
+        case 'S':
+            if (pfcli_u64(optarg, 0, ULLONG_MAX, &seed))
+                die2("--seed must be a whole number in 0..2^64-1: ", optarg);
             break;
-        }
+        case 'm':
+            if (pfcli_real(optarg, 0, 1e300, &max_lsb) || !(max_lsb > 0))
+                die2("--max-lsb must be a finite number > 0: ", optarg);
+            break;
         case 't': ts = optarg; break;
         case 'O': os = optarg; break;
         case 'h': fputs(usage, stdout); return 0;
@@ -141,12 +144,8 @@ int pfsweep_fixed_main(int argc, char **argv)
         if (lib) {
             snprintf(path, sizeof path, "%s", lib);
         } else {
-            ssize_t n = readlink("/proc/self/exe", path, sizeof path - 32);
-            if (n < 0)
+            if (pfcli_default_lib(path, sizeof path) != 0)
                 die2("cannot locate libpfmath.so; pass --lib PATH", NULL);
-            path[n] = 0;
-            char *slash = strrchr(path, '/');
-            strcpy(slash ? slash + 1 : path, "libpfmath.so");
         }
         h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
         if (!h) {

@@ -1,0 +1,220 @@
+/* Strict command-line values and safe output files for pfsweep and pfbench.
+ *
+ * A number option is the whole argument and nothing else: decimal or 0x hex
+ * digits (no sign, no blanks, no octal surprise from a leading 0), within
+ * the option's range; strtoull alone would turn "-1" into 2^64-1 and "abc"
+ * into 0.  A real option is a finite strtod number within its range ("nan"
+ * passes every comparison, so it is refused by name).  Each option may be
+ * given once.
+ *
+ * An output file is written to a temporary file beside its target and
+ * renamed over it only when complete, so a failed or refused run leaves the
+ * old file as it was.  A symlink is written through (its target replaced the
+ * same way); a FIFO or device is opened and written, never replaced. */
+#ifndef PF_CLI_H
+#define PF_CLI_H
+
+#include <errno.h>
+#include <getopt.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* 0 and *v = the value, or -1 */
+static inline int pfcli_u64(const char *s, unsigned long long lo, unsigned long long hi,
+                            unsigned long long *v)
+{
+    int base = 10;
+    if (s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
+        base = 16;
+        s += 2;
+    }
+    const char *hexd = "0123456789abcdefABCDEF";
+    if (!s[0] || !strchr(base == 16 ? hexd : "0123456789", s[0]))
+        return -1; /* empty, sign, blank */
+    char *e;
+    errno = 0;
+    unsigned long long x = strtoull(s, &e, base);
+    if (errno || *e || x < lo || x > hi)
+        return -1;
+    *v = x;
+    return 0;
+}
+
+static inline int pfcli_real(const char *s, double lo, double hi, double *v)
+{
+    if (!s[0] || strchr(" \t\n\v\f\r", s[0]))
+        return -1;
+    char *e;
+    errno = 0;
+    double x = strtod(s, &e);
+    if (e == s || *e || errno == ERANGE || !isfinite(x) || !(x >= lo && x <= hi))
+        return -1;
+    *v = x;
+    return 0;
+}
+
+/* the long name of option value c ("help" for 'h') */
+static inline const char *pfcli_name(const struct option *opts, int c)
+{
+    for (; opts->name; opts++)
+        if (opts->val == c)
+            return opts->name;
+    return "?";
+}
+
+/* 0 the first time option c is seen, -1 after */
+static inline int pfcli_once(unsigned char seen[256], int c)
+{
+    if (seen[(unsigned char)c])
+        return -1;
+    seen[(unsigned char)c] = 1;
+    return 0;
+}
+
+/* libpfmath.so for a program that was not told where it is: beside the
+ * program (the build tree), else PREFIX/lib/libpfmath.so.0 for a program in
+ * PREFIX/bin (make install).  0, or -1 when neither exists. */
+static inline int pfcli_default_lib(char *path, size_t n)
+{
+    char self[PATH_MAX];
+    ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (k <= 0)
+        return -1;
+    self[k] = 0;
+    char *slash = strrchr(self, '/');
+    if (!slash)
+        return -1;
+    *slash = 0;
+    snprintf(path, n, "%.*s/libpfmath.so", (int)(n - 16 > 0 ? n - 16 : 0), self);
+    if (access(path, R_OK) == 0)
+        return 0;
+    char *up = strrchr(self, '/');
+    if (up && !strcmp(up, "/bin")) {
+        *up = 0;
+        snprintf(path, n, "%.*s/lib/libpfmath.so.0", (int)(n - 24 > 0 ? n - 24 : 0), self);
+        if (access(path, R_OK) == 0)
+            return 0;
+    }
+    return -1;
+}
+
+typedef struct {
+    char final[PATH_MAX];     /* the file to replace (symlinks resolved) */
+    char tmp[PATH_MAX + 16];  /* the temporary beside it */
+    FILE *f;                  /* where to write */
+    int direct;               /* a FIFO or device: written in place */
+} pfcli_out;
+
+/* Temporaries not yet committed are removed at exit (a die2 mid-run). */
+static pfcli_out *pfcli_pending[8];
+
+static inline void pfcli_cleanup(void)
+{
+    for (int i = 0; i < 8; i++)
+        if (pfcli_pending[i]) {
+            if (pfcli_pending[i]->f && !pfcli_pending[i]->direct)
+                unlink(pfcli_pending[i]->tmp);
+            pfcli_pending[i] = NULL;
+        }
+}
+
+/* Opens o for path.  0, or -1 with a one-line reason in err. */
+static inline int pfcli_out_open(pfcli_out *o, const char *path, char *err, size_t n)
+{
+    static int registered;
+    struct stat sb;
+    memset(o, 0, sizeof *o);
+    if (strlen(path) >= sizeof o->final) {
+        snprintf(err, n, "output name too long: %.400s", path);
+        return -1;
+    }
+    snprintf(o->final, sizeof o->final, "%s", path);
+    if (lstat(path, &sb) == 0 && S_ISLNK(sb.st_mode)) {
+        char *r = realpath(path, NULL);
+        if (!r || strlen(r) >= sizeof o->final) {
+            snprintf(err, n, "cannot follow the symlink %.400s", path);
+            free(r);
+            return -1;
+        }
+        snprintf(o->final, sizeof o->final, "%s", r);
+        free(r);
+    }
+    if (stat(o->final, &sb) == 0 && !S_ISREG(sb.st_mode)) {
+        if (S_ISDIR(sb.st_mode)) {
+            snprintf(err, n, "%.400s is a directory", o->final);
+            return -1;
+        }
+        o->f = fopen(o->final, "w");
+        if (!o->f) {
+            snprintf(err, n, "cannot write %.300s: %.100s", o->final, strerror(errno));
+            return -1;
+        }
+        o->direct = 1;
+        return 0;
+    }
+    snprintf(o->tmp, sizeof o->tmp, "%s.XXXXXX", o->final);
+    int fd = mkstemp(o->tmp);
+    if (fd < 0) {
+        snprintf(err, n, "cannot write beside %.300s: %.100s", o->final, strerror(errno));
+        return -1;
+    }
+    mode_t um = umask(0);
+    umask(um);
+    if (fchmod(fd, 0666 & ~um) != 0 || !(o->f = fdopen(fd, "w"))) {
+        snprintf(err, n, "cannot write %.300s: %.100s", o->tmp, strerror(errno));
+        close(fd);
+        unlink(o->tmp);
+        return -1;
+    }
+    if (!registered++)
+        atexit(pfcli_cleanup);
+    for (int i = 0; i < 8; i++)
+        if (!pfcli_pending[i]) {
+            pfcli_pending[i] = o;
+            break;
+        }
+    return 0;
+}
+
+static inline void pfcli_forget(pfcli_out *o)
+{
+    for (int i = 0; i < 8; i++)
+        if (pfcli_pending[i] == o)
+            pfcli_pending[i] = NULL;
+}
+
+/* Closes o and puts it in place.  0, or -1 with a reason (the target then
+ * keeps its old content). */
+static inline int pfcli_out_commit(pfcli_out *o, char *err, size_t n)
+{
+    int bad = ferror(o->f);
+    bad |= fclose(o->f) != 0;
+    pfcli_forget(o);
+    if (o->direct) {
+        if (bad)
+            snprintf(err, n, "write error on %.400s", o->final);
+        return bad ? -1 : 0;
+    }
+    if (bad || rename(o->tmp, o->final) != 0) {
+        snprintf(err, n, "cannot write %.300s: %.100s", o->final, bad ? "write error" : strerror(errno));
+        unlink(o->tmp);
+        return -1;
+    }
+    return 0;
+}
+
+/* Closes o and drops what was written (the target keeps its old content). */
+static inline void pfcli_out_abort(pfcli_out *o)
+{
+    fclose(o->f);
+    pfcli_forget(o);
+    if (!o->direct)
+        unlink(o->tmp);
+}
+
+#endif

@@ -1,0 +1,268 @@
+/* pfsweep's and pfbench's command lines (issue 11, item 8): a bad number,
+ * NaN bound, empty or unknown function or repeated option is exit 2 with one
+ * line on stderr, before any work; a refused pfbench leaves bench.md and
+ * bench.csv as they were, a complete one replaces them at the end.  The programs run by fork/exec (no shell), each
+ * with a time limit: a value that wraps (--samples -1 = 2^64-1) would hang. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "testutil.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#define LIMIT_S 30
+
+static char scratch[] = "/tmp/pf-tools-cli.XXXXXX";
+
+typedef struct {
+    int status; /* exit status; -1 killed (time limit) or crashed */
+    char out[4096], err[4096];
+} run_result;
+
+static void slurp_into(const char *path, char *buf, size_t n)
+{
+    FILE *f = fopen(path, "r");
+    size_t k = f ? fread(buf, 1, n - 1, f) : 0;
+    buf[k] = 0;
+    if (f)
+        fclose(f);
+}
+
+/* argv[0] is the program's name under the build directory */
+static void run(const char *const *argv, run_result *r)
+{
+    char path[PATH_MAX], o[PATH_MAX], e[PATH_MAX];
+    tu_prog_path(argv[0], path, sizeof path);
+    snprintf(o, sizeof o, "%s/stdout", scratch);
+    snprintf(e, sizeof e, "%s/stderr", scratch);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        int fo = open(o, O_WRONLY | O_CREAT | O_TRUNC, 0644), fe = open(e, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (fo < 0 || fe < 0 || dup2(fo, 1) < 0 || dup2(fe, 2) < 0)
+            _exit(127);
+        execv(path, (char *const *)argv);
+        _exit(127);
+    }
+    int st = 0;
+    struct timespec t0, t;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (;;) {
+        pid_t w = waitpid(pid, &st, WNOHANG);
+        if (w == pid)
+            break;
+        clock_gettime(CLOCK_MONOTONIC, &t);
+        if (t.tv_sec - t0.tv_sec > LIMIT_S) {
+            kill(pid, SIGKILL);
+            waitpid(pid, &st, 0);
+            st = -1;
+            break;
+        }
+        struct timespec nap = {0, 20 * 1000 * 1000};
+        nanosleep(&nap, NULL);
+    }
+    r->status = st != -1 && WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    slurp_into(o, r->out, sizeof r->out);
+    slurp_into(e, r->err, sizeof r->err);
+}
+
+static void expect_refused(const char *const *argv, const char *prog)
+{
+    run_result r;
+    run(argv, &r);
+    char line[512] = "";
+    for (int i = 0; argv[i]; i++) {
+        size_t l = strlen(line);
+        snprintf(line + l, sizeof line - l, "%s'%s'", i ? " " : "", argv[i]);
+    }
+    print_message("%s -> %d: %s", line, r.status, r.err);
+    assert_int_equal(r.status, 2);
+    assert_int_equal(tu_count_lines(r.err), 1);
+    char pre[32];
+    snprintf(pre, sizeof pre, "%s: ", prog);
+    assert_int_equal(strncmp(r.err, pre, strlen(pre)), 0);
+    assert_string_equal(r.out, "");
+}
+
+#define REFUSE(prog, ...)                                                                          \
+    do {                                                                                           \
+        const char *const a_[] = {prog, __VA_ARGS__, NULL};                                        \
+        expect_refused(a_, prog);                                                                  \
+    } while (0)
+
+static void test_pfsweep_numbers(void **st)
+{
+    (void)st;
+    REFUSE("pfsweep", "--func", "log", "--samples", "-1");
+    REFUSE("pfsweep", "--func", "log", "--samples", "18446744073709551616");
+    REFUSE("pfsweep", "--func", "log", "--samples", "99999999999");
+    REFUSE("pfsweep", "--func", "log", "--samples", "");
+    REFUSE("pfsweep", "--func", "log", "--samples", "12abc");
+    REFUSE("pfsweep", "--func", "log", "--samples", " 12");
+    REFUSE("pfsweep", "--func", "log", "--seed", "abc");
+    REFUSE("pfsweep", "--func", "log", "--seed", "-5");
+    REFUSE("pfsweep", "--func", "log", "--seed", "");
+    REFUSE("pfsweep", "--func", "log", "--seed", "0x");
+    REFUSE("pfsweep", "--func", "atan2", "--all", "--pairs", "-1");
+    REFUSE("pfsweep", "--func", "atan2", "--all", "--pairs", "0");
+    REFUSE("pfsweep", "--func", "log", "--max-ulp", "nan");
+    REFUSE("pfsweep", "--func", "log", "--max-ulp", "-1");
+    REFUSE("pfsweep", "--func", "log", "--max-ulp", "inf");
+    REFUSE("pfsweep", "--func", "log", "--max-ulp", "1e999");
+    REFUSE("pfsweep", "--func", "log", "--max-ulp", "1ulp");
+}
+
+static void test_pfsweep_names_and_repeats(void **st)
+{
+    (void)st;
+    REFUSE("pfsweep", "--func", "");
+    REFUSE("pfsweep", "--func", "logg");
+    REFUSE("pfsweep", "--func", "log", "--func", "sin");
+    REFUSE("pfsweep", "--func", "log", "--samples", "5", "--samples=6");
+    REFUSE("pfsweep", "--func", "log", "--max-ulp", "1", "--max-ulp", "2");
+    REFUSE("pfsweep", "--func", "log", "--variant", "fast", "--variant", "exact");
+    /* the fixed-point front end */
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--samples", "-1");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--seed", "abc");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--max-lsb", "nan");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--max-lsb", "0");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--type", "fixed<15,13>");
+    REFUSE("pfsweep", "--func", "sin", "--func", "cos", "--type", "fixed<15,12>");
+}
+
+/* bench.md and bench.csv as they were before a refused run */
+static void check_outputs_kept(const char *dir)
+{
+    char p[PATH_MAX];
+    snprintf(p, sizeof p, "%s/bench.md", dir);
+    char *s = tu_slurp(p, NULL);
+    assert_non_null(s);
+    assert_string_equal(s, "an earlier bench\n");
+    free(s);
+    snprintf(p, sizeof p, "%s/bench.csv", dir);
+    struct stat sb;
+    assert_int_not_equal(stat(p, &sb), 0);
+}
+
+static void test_pfbench(void **st)
+{
+    (void)st;
+    char dir[PATH_MAX], md[PATH_MAX + 16], lib[PATH_MAX];
+    snprintf(dir, sizeof dir, "%s/out", scratch);
+    assert_int_equal(mkdir(dir, 0755), 0);
+    snprintf(md, sizeof md, "%s/bench.md", dir);
+    FILE *f = fopen(md, "w");
+    assert_non_null(f);
+    fputs("an earlier bench\n", f);
+    fclose(f);
+    tu_prog_path("libpfmath.so", lib, sizeof lib);
+#define BENCH(...) REFUSE("pfbench", "--lib", lib, "--out", dir, __VA_ARGS__)
+    BENCH("--func", "");
+    BENCH("--func", ",");
+    BENCH("--func", "log,,exp");
+    BENCH("--func", "log,");
+    BENCH("--func", "nosuch");
+    BENCH("--func", "log", "--func", "exp");
+    BENCH("--seed", "abc");
+    BENCH("--seed", "-1");
+    BENCH("--samples", "-1");
+    BENCH("--samples", "1000");
+    BENCH("--reps", "1e3");
+    BENCH("--reps", "12x");
+    BENCH("--ms", "nan");
+    BENCH("--ms", "0");
+    BENCH("--list", "--list");
+    check_outputs_kept(dir);
+    REFUSE("pfbench", "--lib", lib, "--out", "/nonexistent/pf-tools-cli", "--func", "log");
+    REFUSE("pfbench", "--lib", lib, "--out", md, "--func", "log");
+    check_outputs_kept(dir);
+    /* nothing else appeared in the output directory (no temporaries) */
+    int n = 0;
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    for (struct dirent *de; (de = readdir(d));)
+        n += de->d_name[0] != '.';
+    closedir(d);
+    assert_int_equal(n, 1);
+}
+
+/* A complete run replaces the outputs at the end: bench.md, a symlink here,
+ * is written through (the link stays, its target gets the report), and no
+ * temporary is left behind.  The cheapest run: the fixed-point sqrt rows. */
+static void test_pfbench_writes(void **st)
+{
+    (void)st;
+    char dir[PATH_MAX], md[PATH_MAX + 16], real[PATH_MAX + 16], lib[PATH_MAX];
+    snprintf(dir, sizeof dir, "%s/out2", scratch);
+    assert_int_equal(mkdir(dir, 0755), 0);
+    snprintf(md, sizeof md, "%s/bench.md", dir);
+    snprintf(real, sizeof real, "%s/real.md", dir);
+    FILE *f = fopen(real, "w");
+    assert_non_null(f);
+    fputs("an earlier bench\n", f);
+    fclose(f);
+    assert_int_equal(symlink("real.md", md), 0);
+    tu_prog_path("libpfmath.so", lib, sizeof lib);
+    const char *const argv[] = {"pfbench", "--lib", lib, "--out", dir, "--func", "sqrt", "--reps", "11",
+                                "--ms", "0.1", "--samples", "65536", NULL};
+    run_result r;
+    run(argv, &r);
+    print_message("pfbench --func sqrt -> %d: %s", r.status, r.err);
+    assert_int_equal(r.status, 0);
+    struct stat sb;
+    assert_int_equal(lstat(md, &sb), 0);
+    assert_true(S_ISLNK(sb.st_mode));
+    char *s = tu_slurp(real, NULL);
+    assert_non_null(s);
+    assert_non_null(strstr(s, "# pfbench"));
+    assert_non_null(strstr(s, "sqrt"));
+    free(s);
+    int n = 0;
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    for (struct dirent *de; (de = readdir(d));)
+        n += de->d_name[0] != '.';
+    closedir(d);
+    assert_int_equal(n, 3); /* bench.md (link), real.md, bench.csv */
+}
+
+static int setup(void **st)
+{
+    (void)st;
+    return mkdtemp(scratch) ? 0 : -1;
+}
+
+static int teardown(void **st)
+{
+    (void)st;
+    /* only what this test made: two capture files, out/ and its bench.md */
+    char p[PATH_MAX + 32];
+    const char *files[] = {"stdout", "stderr", "out/bench.md", "out2/bench.md", "out2/real.md", "out2/bench.csv", NULL};
+    for (int i = 0; files[i]; i++) {
+        snprintf(p, sizeof p, "%s/%s", scratch, files[i]);
+        unlink(p);
+    }
+    snprintf(p, sizeof p, "%s/out", scratch);
+    rmdir(p);
+    snprintf(p, sizeof p, "%s/out2", scratch);
+    rmdir(p);
+    rmdir(scratch);
+    return 0;
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_pfsweep_numbers),
+        cmocka_unit_test(test_pfsweep_names_and_repeats),
+        cmocka_unit_test(test_pfbench),
+        cmocka_unit_test(test_pfbench_writes),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
