@@ -81,14 +81,61 @@ PF_INLINE float core3(const uint32_t *restrict hash, const uint32_t *restrict g,
     return b0 + w * (b1 - b0);
 }
 
+/* One point: the 8 corners in two vectors, x = 0 corners (000 001 010 011)
+ * and x = 1 corners (100 101 110 111); lanes 1 and 3 are the high (z + 1)
+ * halves of the pair codes.  Lane by lane this is core3's LO/HI with the
+ * same operands in the same order, so the result is bit-identical to it. */
+PF_INLINE float point3(const uint32_t *restrict hash, const uint32_t *restrict g, float x,
+                       float y, float z)
+{
+    pf_v4f p = {x, y, z, 0.0f};
+    if (__builtin_expect(!pf_small4(p), 0))
+        return core3(hash, g, x, y, z);
+    pf_v4u L;
+    pf_v4f d0 = pf_cell4(p, &L), d1 = pf_minus1(d0);
+    pf_v4f f = pf_fade4(d0);
+    size_t X = L[0], Y = L[1], Z = L[2];
+
+    uint32_t P = hash[X];
+    size_t A = (P & 0xffffu) + Y, B = (P >> 16) + Y;
+    uint32_t PA = hash[A], PB = hash[B];
+    uint32_t c00 = g[(PA & 0xffffu) + Z], c01 = g[(PA >> 16) + Z];
+    uint32_t c10 = g[(PB & 0xffffu) + Z], c11 = g[(PB >> 16) + Z];
+
+    static const pf_v4f sx = {1.0f, 0x1p-16f, 1.0f, 0x1p-16f},
+                        sy = {0x1p-2f, 0x1p-18f, 0x1p-2f, 0x1p-18f},
+                        sz = {0x1p-4f, 0x1p-20f, 0x1p-4f, 0x1p-20f},
+                        o0 = {0.0f, 1.0f, 1.0f, 2.0f}, o1 = {1.0f, 2.0f, 2.0f, 3.0f};
+    static const pf_v4u mx = {3u, 3u << 16, 3u, 3u << 16}, my = {12u, 3u << 18, 12u, 3u << 18},
+                        mz = {48u, 3u << 20, 48u, 3u << 20};
+    pf_v4f X0 = __builtin_shuffle(d0, (pf_v4i){0, 0, 0, 0}),
+           X1 = __builtin_shuffle(d1, (pf_v4i){0, 0, 0, 0}),
+           Y0 = __builtin_shuffle(d0, (pf_v4i){1, 1, 1, 1}),
+           Z0 = __builtin_shuffle(d0, (pf_v4i){2, 2, 2, 2});
+    pf_v4f xx0 = X0 * sx, xx1 = X1 * sx;
+    pf_v4f yy = __builtin_shuffle(d0, d1, (pf_v4i){1, 1, 5, 5}) * sy;
+    pf_v4f zz = __builtin_shuffle(d0, d1, (pf_v4i){2, 6, 2, 6}) * sz;
+    pf_v4f S = X0 + Y0 + Z0, ss0 = S - o0, ss1 = S - o1;
+    pf_v4u C0 = {c00, c00, c01, c01}, C1 = {c10, c10, c11, c11};
+    pf_v4f n0 = pf_kf4(C0, mx) * xx0 + pf_kf4(C0, my) * yy + pf_kf4(C0, mz) * zz - ss0;
+    pf_v4f n1 = pf_kf4(C1, mx) * xx1 + pf_kf4(C1, my) * yy + pf_kf4(C1, mz) * zz - ss1;
+
+    pf_v4f a = n0 + __builtin_shuffle(f, (pf_v4i){0, 0, 0, 0}) * (n1 - n0); /* a00 a01 a10 a11 */
+    pf_v4f ah = __builtin_shuffle(a, (pf_v4i){2, 3, 2, 3});                 /* a10 a11 */
+    pf_v4f b = a + __builtin_shuffle(f, (pf_v4i){1, 1, 1, 1}) * (ah - a);   /* b0 b1 */
+    return b[0] + f[2] * (b[1] - b[0]);
+}
+
 float pf_noise3f_t(const pf_noise_table *t, float x, float y, float z)
 {
-    return core3(t->hash, t->g3, x, y, z);
+    if (!t)
+        t = &pf_noise_default_;
+    return point3(t->hash, t->g3, x, y, z);
 }
 
 float pf_noise3f(float x, float y, float z)
 {
-    return core3(pf_noise_default_.hash, pf_noise_default_.g3, x, y, z);
+    return point3(pf_noise_default_.hash, pf_noise_default_.g3, x, y, z);
 }
 
 PF_CLONES

@@ -35,6 +35,8 @@ static void gradient(const pf_noise_table *t, int n, uint32_t i, float g[4])
 static float noise_d(const pf_noise_table *t, int n, const float *p, float *grad)
 {
     static const float scale[5] = {0.0f, 0.25f, 1.0f, 1.0f, 2.0f / 3.0f};
+    if (!t) /* NULL = the default table, as everywhere */
+        t = &pf_noise_default_;
     float d0[4], f[4], df[4];
     uint32_t L[4];
     for (int i = 0; i < n; i++) {
