@@ -24,7 +24,7 @@ static const float ABSMEAN[5] = {0.0f, PF_NOISE1_ABSMEAN, PF_NOISE2_ABSMEAN,
 
 /* 1 while f·w <= 1/4, smoothstep down to 0 at f·w = 1/2; w <= 0 or NaN
  * means no filtering. */
-float pf_noise_band_weight(float f, float filter_width)
+static inline __attribute__((always_inline)) float band_weight(float f, float filter_width)
 {
     float r = f * filter_width;
     if (!(r > 0.25f))
@@ -40,7 +40,13 @@ float pf_noise_band_weight(float f, float filter_width)
  * octave as filtered out.  Floats that large are integers, so such an
  * octave could only be sampled at lattice points; its band weight tends to
  * 0 as f grows, and 0 (fbm) or E|n| (turbulence) is that limit. */
-static float octave(int n, const float *p, float f, int k)
+float pf_noise_band_weight(float f, float filter_width)
+{
+    return band_weight(f, filter_width);
+}
+
+static inline __attribute__((always_inline)) float octave(int n, const float *p, float f,
+                                                          int k)
 {
     float q[4];
     for (int i = 0; i < n; i++) {
@@ -63,8 +69,11 @@ static float octave(int n, const float *p, float f, int k)
  * of two whenever |amp| reaches 1, so that amp·gain·n cannot overflow.  Such
  * a rescaling is exact and commutes with every later rounding (short of
  * underflow in terms already negligible), so finite sums are unchanged. */
-static float sum(int n, const float *p, int octaves, float lacunarity, float gain,
-                 float filter_width, int turbulence)
+/* Inlined into each entry point, so that n and turbulence are constants
+ * there and the per-octave switch and loops fold away. */
+static inline __attribute__((always_inline)) float sum(int n, const float *p, int octaves,
+                                                       float lacunarity, float gain,
+                                                       float filter_width, int turbulence)
 {
     for (int i = 0; i < n; i++)
         if (isnan(p[i]))
@@ -78,7 +87,7 @@ static float sum(int n, const float *p, int octaves, float lacunarity, float gai
         /* |n| is creased along the zero set of n, so its spectrum decays only
          * like f^-4: turbulence fades each octave two octaves (a factor 4 in
          * frequency) earlier than fbm. */
-        float a = fabsf(amp), w = pf_noise_band_weight(turbulence ? 4.0f * f : f, filter_width);
+        float a = fabsf(amp), w = band_weight(turbulence ? 4.0f * f : f, filter_width);
         float v = w > 0.0f ? octave(n, p, f, k) : 0.0f;
         if (isnan(v)) /* overflowed: filtered out */
             w = 0.0f, v = 0.0f;
