@@ -96,11 +96,6 @@ PF_INLINE pf_v4f pf_kf4(pf_v4u c, pf_v4u mask)
     return __builtin_convertvector((pf_v4i)(c & mask), pf_v4f);
 }
 
-PF_INLINE pf_v4f pf_splat4(float a)
-{
-    return (pf_v4f){a, a, a, a};
-}
-
 /* Perlin's permutation's tables, const data generated at build time
  * (pfnoise_table.c): valid before any constructor runs. */
 extern const pf_noise_table pf_noise_default_ __attribute__((visibility("hidden")));
