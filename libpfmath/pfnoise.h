@@ -179,7 +179,17 @@ void pf_noise3_q15_fast_array(const pf_noise_table *t, int16_t *out, const int32
  * 1/16 to 1/8): |n| is creased where n = 0, so its spectrum reaches
  * further.  Measured share of energy above Nyquist (tests/
  * test_noise_spectrum.c): < 0.03 % for fbm, < 0.07 % for turbulence.
- * Ranges: |fbm| <= PF_NOISEn_MAX, 0 <= turbulence <= PF_NOISEn_MAX. */
+ * Ranges: |fbm| <= PF_NOISEn_MAX, 0 <= turbulence <= PF_NOISEn_MAX.
+ *
+ * Hostile parameters (issue 11): at most PF_NOISE_MAX_OCTAVES octaves are
+ * summed (more are clamped; octaves <= 0 give 0).  An octave whose scaled
+ * point f_k·p + o_k overflows (is not finite: huge coordinates, a frequency
+ * that overflowed, ±inf coordinates) counts as filtered out -- fbm 0,
+ * turbulence PF_NOISEn_ABSMEAN -- the limit of its band weight as f_k
+ * grows.  So for every non-NaN coordinate and lacunarity, finite gain and
+ * any octaves and filter_width, the result is finite and within the ranges
+ * above; a NaN coordinate or lacunarity or a non-finite gain gives NaN. */
+#define PF_NOISE_MAX_OCTAVES 64
 float pf_fbm1f(float x, int octaves, float lacunarity, float gain, float filter_width);
 float pf_fbm2f(float x, float y, int octaves, float lacunarity, float gain,
                float filter_width);

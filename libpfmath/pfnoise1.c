@@ -49,6 +49,8 @@ PF_INLINE float core1(const uint32_t *restrict g, float x)
 
 float pf_noise1f_t(const pf_noise_table *t, float x)
 {
+    if (!t)
+        t = &pf_noise_default_;
     return core1(t->g1, x);
 }
 

@@ -59,14 +59,48 @@ PF_INLINE float core2(const uint32_t *restrict hash, const uint32_t *restrict g,
     return a0 + v * (a1 - a0);
 }
 
+/* One point: the 4 corners 00 01 10 11 (x, y offsets) in the lanes of one
+ * vector; lanes 1 and 3 are the high (y + 1) halves of the pair codes.
+ * Lane by lane this is core2's arithmetic with the same operands in the
+ * same order, so the result is bit-identical to it. */
+PF_INLINE float point2(const uint32_t *restrict hash, const uint32_t *restrict g, float x,
+                       float y)
+{
+    pf_v4f p = {x, y, 0.0f, 0.0f};
+    if (__builtin_expect(!pf_small4(p), 0))
+        return core2(hash, g, x, y);
+    pf_v4u L;
+    pf_v4f d0 = pf_cell4(p, &L), d1 = pf_minus1(d0);
+    pf_v4f f = pf_fade4(d0);
+    size_t X = L[0], Y = L[1];
+
+    uint32_t P = hash[X];
+    uint32_t cA = g[(P & 0xffffu) + Y], cB = g[(P >> 16) + Y];
+
+    static const pf_v4f sx = {1.0f, 0x1p-16f, 1.0f, 0x1p-16f},
+                        sy = {0x1p-2f, 0x1p-18f, 0x1p-2f, 0x1p-18f}, o = {0.0f, 1.0f, 1.0f, 2.0f};
+    static const pf_v4u mx = {3u, 3u << 16, 3u, 3u << 16}, my = {12u, 3u << 18, 12u, 3u << 18};
+    pf_v4f xx = __builtin_shuffle(d0, d1, (pf_v4i){0, 0, 4, 4}) * sx; /* x0 x0h x1 x1h */
+    pf_v4f yy = __builtin_shuffle(d0, d1, (pf_v4i){1, 5, 1, 5}) * sy; /* y0l y1h y0l y1h */
+    pf_v4f S = __builtin_shuffle(d0, (pf_v4i){0, 0, 0, 0}) + __builtin_shuffle(d0, (pf_v4i){1, 1, 1, 1});
+    pf_v4u C = {cA, cA, cB, cB};
+    pf_v4f n = pf_kf4(C, mx) * xx + pf_kf4(C, my) * yy - (S - o); /* n00 n01 n10 n11 */
+
+    pf_v4f nh = __builtin_shuffle(n, (pf_v4i){2, 3, 2, 3});                /* n10 n11 */
+    pf_v4f a = n + __builtin_shuffle(f, (pf_v4i){0, 0, 0, 0}) * (nh - n); /* a0 a1 */
+    return a[0] + f[1] * (a[1] - a[0]);
+}
+
 float pf_noise2f_t(const pf_noise_table *t, float x, float y)
 {
-    return core2(t->hash, t->g2, x, y);
+    if (!t)
+        t = &pf_noise_default_;
+    return point2(t->hash, t->g2, x, y);
 }
 
 float pf_noise2f(float x, float y)
 {
-    return core2(pf_noise_default_.hash, pf_noise_default_.g2, x, y);
+    return point2(pf_noise_default_.hash, pf_noise_default_.g2, x, y);
 }
 
 PF_CLONES

@@ -88,6 +88,8 @@ PF_INLINE float core4(const uint32_t *restrict hash, const uint32_t *restrict g,
 
 float pf_noise4f_t(const pf_noise_table *t, float x, float y, float z, float w)
 {
+    if (!t)
+        t = &pf_noise_default_;
     return core4(t->hash, t->g4, x, y, z, w);
 }
 

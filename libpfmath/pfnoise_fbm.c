@@ -24,7 +24,7 @@ static const float ABSMEAN[5] = {0.0f, PF_NOISE1_ABSMEAN, PF_NOISE2_ABSMEAN,
 
 /* 1 while f·w <= 1/4, smoothstep down to 0 at f·w = 1/2; w <= 0 or NaN
  * means no filtering. */
-float pf_noise_band_weight(float f, float filter_width)
+static inline __attribute__((always_inline)) float band_weight(float f, float filter_width)
 {
     float r = f * filter_width;
     if (!(r > 0.25f))
@@ -35,11 +35,25 @@ float pf_noise_band_weight(float f, float filter_width)
     return s * s * (3.0f - 2.0f * s);
 }
 
-static float octave(int n, const float *p, float f, int k)
+/* Octave k at frequency f, or NAN when its scaled point f·p + o_k is not
+ * finite (overflow, or an infinite coordinate): the caller then counts the
+ * octave as filtered out.  Floats that large are integers, so such an
+ * octave could only be sampled at lattice points; its band weight tends to
+ * 0 as f grows, and 0 (fbm) or E|n| (turbulence) is that limit. */
+float pf_noise_band_weight(float f, float filter_width)
+{
+    return band_weight(f, filter_width);
+}
+
+static inline __attribute__((always_inline)) float octave(int n, const float *p, float f,
+                                                          int k)
 {
     float q[4];
-    for (int i = 0; i < n; i++)
+    for (int i = 0; i < n; i++) {
         q[i] = p[i] * f + (float)k * OFFSET[i];
+        if (!isfinite(q[i]))
+            return NAN;
+    }
     switch (n) {
     case 1: return pf_noise1f(q[0]);
     case 2: return pf_noise2f(q[0], q[1]);
@@ -48,21 +62,48 @@ static float octave(int n, const float *p, float f, int k)
     }
 }
 
-static float sum(int n, const float *p, int octaves, float lacunarity, float gain,
-                 float filter_width, int turbulence)
+/* The sum, with hostile parameters defined (pfnoise.h): NaN in, NaN out;
+ * octaves clamped to [0, PF_NOISE_MAX_OCTAVES] (bounded time); octaves
+ * that overflow are filtered out (octave() above); and for |gain| > 1 the
+ * amplitude, the sum and the normaliser are rescaled together by a power
+ * of two whenever |amp| reaches 1, so that amp·gain·n cannot overflow.  Such
+ * a rescaling is exact and commutes with every later rounding (short of
+ * underflow in terms already negligible), so finite sums are unchanged. */
+/* Inlined into each entry point, so that n and turbulence are constants
+ * there and the per-octave switch and loops fold away. */
+static inline __attribute__((always_inline)) float sum(int n, const float *p, int octaves,
+                                                       float lacunarity, float gain,
+                                                       float filter_width, int turbulence)
 {
+    for (int i = 0; i < n; i++)
+        if (isnan(p[i]))
+            return NAN;
+    if (isnan(lacunarity) || !isfinite(gain))
+        return NAN;
+    if (octaves > PF_NOISE_MAX_OCTAVES)
+        octaves = PF_NOISE_MAX_OCTAVES;
     float total = 0.0f, norm = 0.0f, amp = 1.0f, f = 1.0f;
     for (int k = 0; k < octaves; k++) {
         /* |n| is creased along the zero set of n, so its spectrum decays only
          * like f^-4: turbulence fades each octave two octaves (a factor 4 in
          * frequency) earlier than fbm. */
-        float a = fabsf(amp), w = pf_noise_band_weight(turbulence ? 4.0f * f : f, filter_width);
+        float a = fabsf(amp), w = band_weight(turbulence ? 4.0f * f : f, filter_width);
+        float v = w > 0.0f ? octave(n, p, f, k) : 0.0f;
+        if (isnan(v)) /* overflowed: filtered out */
+            w = 0.0f, v = 0.0f;
         norm += a;
-        if (turbulence) {
-            float v = w > 0.0f ? fabsf(octave(n, p, f, k)) : 0.0f;
-            total += a * (w * v + (1.0f - w) * ABSMEAN[n]);
-        } else if (w > 0.0f) {
-            total += amp * w * octave(n, p, f, k);
+        if (turbulence)
+            total += a * (w * fabsf(v) + (1.0f - w) * ABSMEAN[n]);
+        else if (w > 0.0f)
+            total += amp * w * v;
+        if (a >= 1.0f && fabsf(gain) > 1.0f) {
+            /* |amp| = m·2^e, m in [1/2, 1): bring it to [2^-9, 2^-8), so
+             * that the next |amp·gain|·PF_NOISEn_MAX stays below FLT_MAX */
+            int e;
+            frexpf(amp, &e);
+            amp = ldexpf(amp, -e - 8);
+            total = ldexpf(total, -e - 8);
+            norm = ldexpf(norm, -e - 8);
         }
         amp *= gain;
         f *= lacunarity;

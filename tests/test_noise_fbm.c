@@ -1,6 +1,7 @@
 /* pfnoise fractal sums: documented ranges, the documented formula, the
  * band-weight rule, what a filtered-out octave fades to, and the
- * PF_NOISEn_ABSMEAN constants.  (The spectral band limit itself is in
+ * PF_NOISEn_ABSMEAN constants, and defined results for hostile parameters
+ * (huge coordinates and octave counts, extreme gains).  (The spectral band limit itself is in
  * test_noise_spectrum.c.) */
 #include <stdarg.h>
 #include <stddef.h>
@@ -8,6 +9,8 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -185,13 +188,97 @@ static void test_absmean(void **state)
     }
 }
 
+/* Hostile parameters (issue 11, item 14; pfnoise.h documents the rules):
+ * the reported cases, then random mixes of huge, infinite and ordinary
+ * coordinates with extreme octave counts, lacunarities, gains and filter
+ * widths -- every result finite and inside the documented range. */
+static void test_hostile(void **state)
+{
+    (void)state;
+    /* the reported cases */
+    float r = pf_fbm2f(0.3f, 0.4f, 129, 2.0f, 0.5f, 0.0f);
+    assert_true(isfinite(r) && fabsf(r) <= PF_NOISE2_MAX);
+    assert_true(r == pf_fbm2f(0.3f, 0.4f, PF_NOISE_MAX_OCTAVES, 2.0f, 0.5f, 0.0f)); /* clamped */
+    r = pf_fbm3f(FLT_MAX, 1.0f, 2.0f, 8, 2.0f, 0.5f, 0.0f);
+    assert_true(isfinite(r) && fabsf(r) <= PF_NOISE3_MAX);
+    /* an overflowing octave counts as filtered out: octave 0 of FLT_MAX is
+     * finite, octave 1 (f = 2) overflows */
+    float n0 = pf_noise1f(FLT_MAX);
+    assert_true(pf_fbm1f(FLT_MAX, 2, 2.0f, 0.5f, 0.0f) == n0 / 1.5f);
+    assert_true(pf_turbulence1f(FLT_MAX, 2, 2.0f, 0.5f, 0.0f) ==
+                (fabsf(n0) + 0.5f * PF_NOISE1_ABSMEAN) / 1.5f);
+    /* NaN in, NaN out */
+    assert_true(isnan(pf_fbm3f(NAN, 1.0f, 2.0f, 4, 2.0f, 0.5f, 0.0f)));
+    assert_true(isnan(pf_fbm2f(1.0f, 2.0f, 4, NAN, 0.5f, 0.0f)));
+    assert_true(isnan(pf_turbulence2f(1.0f, 2.0f, 4, 2.0f, INFINITY, 0.0f)));
+
+    static const float coords[] = {FLT_MAX, -FLT_MAX, INFINITY, -INFINITY, 1e30f, -3e9f, 0.3f, 0.0f};
+    static const int octs[] = {1, 8, 64, 65, 1000, INT_MAX, 0, -5};
+    static const float lacs[] = {2.0f, 10.0f, 1e30f, INFINITY, 0.5f, -2.0f, 1.0f, 0.0f};
+    static const float gains[] = {0.5f, 1.0f, 2.0f, 1e20f, FLT_MAX, -FLT_MAX, 0.0f, -1.5f};
+    static const float fws[] = {0.0f, 0.01f, INFINITY, NAN, -1.0f, 1e-30f, 3.0f, 0.5f};
+    int pts = quick ? 200 : 4000;
+    for (int n = 1; n <= 4; n++)
+        for (int i = 0; i < pts; i++) {
+            float p[4];
+            for (int k = 0; k < 4; k++)
+                p[k] = coords[rnd() % 8];
+            int oct = octs[rnd() % 8];
+            float lac = lacs[rnd() % 8], gain = gains[rnd() % 8], fw = fws[rnd() % 8];
+            float f = fbm(n, 0, p, oct, lac, gain, fw), t = fbm(n, 1, p, oct, lac, gain, fw);
+            if (!(isfinite(f) && fabsf(f) <= maxes[n] && isfinite(t) && t >= 0.0f &&
+                  t <= maxes[n]))
+                fail_msg("%dD (%g %g %g %g) oct %d lac %g gain %g fw %g: fbm %g turb %g", n,
+                         (double)p[0], (double)p[1], (double)p[2], (double)p[3], oct,
+                         (double)lac, (double)gain, (double)fw, (double)f, (double)t);
+        }
+}
+
+/* Gains above 1 (the sums rescale as they go): still the formula, summed
+ * here in double, and finite where the plain float sum would overflow. */
+static void test_large_gain(void **state)
+{
+    (void)state;
+    static const double off[4] = {0.7548777, 0.5698403, 0.4301597, 0.3247179};
+    double worst = 0;
+    for (int n = 1; n <= 4; n++)
+        for (int i = 0; i < 500; i++) {
+            float p[4];
+            for (int k = 0; k < 4; k++)
+                p[k] = (float)urand(-5, 5);
+            int oct = 1 + (int)(rnd() % 12);
+            float lac = (float)urand(1.2, 1.9), gain = (float)urand(1.1, 40);
+            double s = 0, norm = 0, a = 1;
+            float f = 1;
+            for (int k = 0; k < oct; k++) {
+                float q[4];
+                for (int j = 0; j < n; j++)
+                    q[j] = p[j] * f + (float)k * (float)off[j];
+                s += a * noise(n, q);
+                norm += a;
+                a *= gain;
+                f *= lac;
+            }
+            worst = fmax(worst, fabs(s / norm - fbm(n, 0, p, oct, lac, gain, 0.0f)));
+        }
+    printf("# fbm vs formula, gain > 1: %.3g\n", worst);
+    assert_true(worst < 1e-5);
+    /* 1e20^40 overflows float (and double): the sum is the last octave's */
+    float p[4] = {0.3f, 1.7f, 2.2f, 0.9f};
+    for (int n = 1; n <= 4; n++) {
+        float v = fbm(n, 0, p, 40, 1.01f, 1e20f, 0.0f);
+        assert_true(isfinite(v) && fabsf(v) <= maxes[n]);
+    }
+}
+
 int main(void)
 {
     quick = getenv("PF_QUICK") != NULL;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ranges),        cmocka_unit_test(test_formula),
         cmocka_unit_test(test_band_weight),   cmocka_unit_test(test_filter_limits),
-        cmocka_unit_test(test_absmean),
+        cmocka_unit_test(test_absmean),       cmocka_unit_test(test_hostile),
+        cmocka_unit_test(test_large_gain),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
