@@ -31,7 +31,53 @@ static void g_log2_1p(mpfr_t y, const mpfr_t t, const void *ctx)
 
 #define KZ k[0]     /* round(ln2 2^Ez) or 2^Ez */
 #define EMAX k[1]   /* max |e| */
+#define K15 k[2]    /* 16-bit lanes, log: round(ln2 2^15) */
 #define EZ s[0]
+#define A16 s[1]    /* 16-bit lanes: e K and P summed at 2^-a */
+#define DK16 d[0]   /* 16-bit lanes: |error of e K| */
+
+/* 16-bit lanes (see fx_log16.c.in): z = e K + P at 2^-a in an int16_t,
+   then rounded once to the output; a >= Eo, and |z| 2^a must fit */
+static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
+{
+    int Ei = G->in.exp, Eo = G->out.exp;
+    double K = base2 ? 1 : M_LN2, emax = (double)G->EMAX;
+    int a = 15;
+    while (a >= Eo && (emax * K + 1.01) * ldexp(1.0, a) > 32767)
+        a--;
+    if (!base2) /* e 2^a must be an int16_t: |e| 2^a <= 2^15 */
+        while (a >= Eo && emax * ldexp(1.0, a) > 32768)
+            a--;
+    if (a < Eo || Eo < 0 || Ei > 15 + 16 || Ei < -16) {
+        snprintf(err, errlen, "16-bit lanes: e %s + P does not fit an int16_t at the output's lsb", base2 ? "" : "ln2");
+        return -2;
+    }
+    G->A16 = a;
+    G->DK16 = 0;
+    if (!base2) {
+        mpfr_t l;
+        mpfr_init2(l, 256);
+        mpfr_const_log2(l, MPFR_RNDN);
+        mpfr_mul_2si(l, l, 15, MPFR_RNDN);
+        mpfr_rint(l, l, MPFR_RNDN);
+        G->K15 = (int64_t)mpfr_get_si(l, MPFR_RNDN);
+        mpfr_const_log2(l, MPFR_RNDN);
+        mpfr_mul_2si(l, l, 15, MPFR_RNDN);
+        mpfr_sub_si(l, l, (long)G->K15, MPFR_RNDN);
+        double kerr = fabs(mpfr_get_d(l, MPFR_RNDN));
+        mpfr_clear(l);
+        /* round(e 2^a K15 2^-15): half an lsb, and |e| 2^a |K15 - ln2 2^15| 2^-15 */
+        G->DK16 = ldexp(0.5, -a) + emax * kerr * 0x1p-15;
+    }
+    snprintf(G->red_text, sizeof G->red_text,
+             "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (a staged normalization: constant shifts and "
+             "selects), t in [0, 1) the 15 bits below the leading one (exact); %s(x) = e %s + P(t) summed in "
+             "an int16_t at 2^-%d%s, rounded once; x <= 0 -> %lld (most negative)",
+             Ei, base2 ? "log2" : "log", base2 ? "" : "ln2", a,
+             base2 ? "" : " (e ln2 = round(e 2^a K 2^-15), K = round(ln2 2^15) from MPFR, the rounding multiply-high)",
+             (long long)pf_type_min_stored(&G->out));
+    return 0;
+}
 
 static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
 {
@@ -76,6 +122,8 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
     G->fmax = 0;
     snprintf(G->sat_text, sizeof G->sat_text, "%s(x) for x <= 0 (undefined) gives %lld, the most negative output",
              fn, (long long)pf_type_min_stored(&G->out));
+    if (G->W == 16)
+        return prepare16(G, err, errlen, base2);
     G->dred = base2 ? 0 : (double)G->EMAX * ldexp(0.5, -G->EZ);
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (leading-zero count), t in [0, 1) the bits "
@@ -89,15 +137,94 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
 static int prep_log(fx_gen *G, char *err, size_t n) { return prepare(G, err, n, 0); }
 static int prep_log2(fx_gen *G, char *err, size_t n) { return prepare(G, err, n, 1); }
 
+static void budget16(fx_gen *G)
+{
+    /* e K (rounded for log), P rounded to 2^-a when finer, then the final
+       rounding (the 1/2 lsb) */
+    G->R = 0;
+    G->A = G->poly_err + G->arith + G->DK16 + (G->Ep > G->A16 ? ldexp(0.5, -(int)G->A16) : 0);
+    if (G->Ep < G->A16)
+        G->A = INFINITY;
+}
+
 static void budget(fx_gen *G)
 {
+    if (G->W == 16) {
+        budget16(G);
+        return;
+    }
     G->R = 0;
     int d = (int)G->EZ - G->Ep;
     G->A = G->poly_err + G->arith + G->dred + (d < 0 ? ldexp(0.5, -(int)G->EZ) : 0);
 }
 
+static void emit16(fx_gen *G, fx_buf *b, int base2)
+{
+    fx_buf body = {0}, horner = {0};
+    int Ei = G->in.exp, Eo = G->out.exp, a = (int)G->A16, Ep = G->Ep;
+    int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in));
+    int64_t mn = pf_type_min_stored(&G->out);
+    fx_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
+    fx_emit_norm16(&body, nb);
+    fx_put(&body, "\n");
+    char w[64];
+    snprintf(w, sizeof w, "2^%d: e at 2^-%d", a, a);
+    const char *ka = fx_k16(G, (int64_t)1 << a, w);
+    const char *to = fx_opaque16(G, "t");
+    fx_printf(&body, "    int16_t ea = (int16_t)((n - %d) * %s); /* e 2^%d */\n", Ei, ka, a);
+    fx_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", to);
+    fx_put(&body, "    /* P(t) ~ ");
+    fx_put(&body, base2 ? "log2(1 + t)" : "log(1 + t)");
+    fx_put(&body, ": Horner in 16-bit words, one rounding per step */\n");
+    fx_emit_horner(G, &horner, "tq", "    ");
+    fx_put(&body, horner.s);
+    char pa[96];
+    if (Ep > a)
+        snprintf(pa, sizeof pa, "pf_fx_rsh16(p, %d)", Ep - a);
+    else
+        snprintf(pa, sizeof pa, "p");
+    if (base2)
+        fx_printf(&body, "    int16_t z = (int16_t)(ea + %s); /* e + P at 2^-%d */\n", pa, a);
+    else
+        fx_printf(&body, "    int16_t z = (int16_t)(pf_fx_mulhrs(ea, %s) + %s); /* e ln2 + P at 2^-%d */\n",
+                  fx_k16(G, G->K15, "round(ln2 2^15)"), pa, a);
+    if (a > Eo)
+        fx_printf(&body, "    int16_t r = pf_fx_rsh16(z, %d); /* rounded once to the output */\n", a - Eo);
+    else
+        fx_put(&body, "    int16_t r = z;\n");
+    /* x <= 0 through a mask (a select on x makes GCC widen the loop) */
+    fx_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */\n");
+    {
+        int64_t mx = pf_type_max_stored(&G->out);
+        fx_put(&body, "    int16_t rc = (int16_t)");
+        if (mn > -32768)
+            fx_printf(&body, "(r < %lld ? %lld : ", (long long)mn, (long long)mn);
+        if (mx < 32767)
+            fx_printf(&body, "(r > %lld ? %lld : ", (long long)mx, (long long)mx);
+        fx_put(&body, "r");
+        if (mx < 32767)
+            fx_put(&body, ")");
+        if (mn > -32768)
+            fx_put(&body, ")");
+        fx_put(&body, ";\n");
+    }
+    fx_printf(&body, "    return (%s)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)%lld & m));", G->ot, (long long)mn);
+    char minout[32];
+    snprintf(minout, sizeof minout, "%lld", (long long)mn);
+    const char *kv[] = {"FUNC", base2 ? "log2" : "log", "KTEXT", base2 ? "" : "ln2", "PTEXT",
+                        base2 ? "log2(1 + t)" : "log(1 + t)", "MINOUT", minout, "NAME", G->name, "IT", G->it, "OT",
+                        G->ot, "BODY", body.s, NULL};
+    fx_subst(b, fx_template("fx_log16.c"), kv);
+    free(body.s);
+    free(horner.s);
+}
+
 static void emit(fx_gen *G, fx_buf *b, int base2)
 {
+    if (G->W == 16) {
+        emit16(G, b, base2);
+        return;
+    }
     fx_buf norm = {0}, horner = {0}, out = {0};
     int W = G->W, Ei = G->in.exp, Eo = G->out.exp;
     int64_t mx = pf_type_max_stored(&G->out), mn = pf_type_min_stored(&G->out);
