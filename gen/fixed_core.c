@@ -443,11 +443,13 @@ static void provenance(fx_buf *b, const fx_gen *G)
     snprintf(tmp, sizeof tmp, "max %s error %.3e (2^%.2f) at t = %.9g", G->errkind == FIT_REL ? "relative" : "absolute",
              G->poly_err, log2(G->poly_err), G->poly.max_err_at);
     wrap_text(b, "Polynomial:", tmp);
+    char abs_text[96];
+    snprintf(abs_text, sizeof abs_text, " + %.4f LSB (arithmetic and reduction, absolute)", G->A / fx_lsb(G));
     if (G->R > 0)
         snprintf(tmp, sizeof tmp,
                  "|result - f(x)| <= 0.5 LSB (final rounding) + %.3e |f(x)| (polynomial %.3e, arithmetic and "
-                 "reduction %.3e, relative) = %.4f LSB at most (|f| <= %.6g)",
-                 G->R, G->poly_err, G->R - G->poly_err, G->bound_lsb, G->fmax);
+                 "reduction %.3e, relative)%s = %.4f LSB at most (|f| <= %.6g)",
+                 G->R, G->poly_err, G->R - G->poly_err, G->A > 0 && G->W == 16 ? abs_text : "", G->bound_lsb, G->fmax);
     else
         snprintf(tmp, sizeof tmp,
                  "|result - f(x)| <= 0.5 LSB (final rounding) + %.4f LSB (polynomial %.4f, arithmetic and "
@@ -474,8 +476,11 @@ static void provenance(fx_buf *b, const fx_gen *G)
               G->exact ? "exact: below 1 LSB of the output for every input"
                        : "fast: within max(2^-10 |f(x)|, 4 LSB) for every input");
     wrap_text(b, "Arithmetic:",
-              "integers only (no floating point, no <math.h>); every rounding to nearest, ties to even; "
-              "bit-identical under any compiler flags");
+              G->W == 16 ? "integers only (no floating point, no <math.h>); every rounding to nearest, ties up (the "
+                           "rounding multiply-high's rule; the error bound needs only half an lsb per rounding); "
+                           "bit-identical under any compiler flags"
+                         : "integers only (no floating point, no <math.h>); every rounding to nearest, ties to even; "
+                           "bit-identical under any compiler flags");
     fx_put(b, " */\n#include <stddef.h>\n#include <stdint.h>\n\n");
 }
 

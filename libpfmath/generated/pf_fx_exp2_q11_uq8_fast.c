@@ -29,7 +29,8 @@
  *              range give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
  * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              to even; bit-identical under any compiler flags
+ *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
+ *              per rounding); bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>

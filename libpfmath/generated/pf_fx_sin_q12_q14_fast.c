@@ -23,15 +23,16 @@
  *              Horner rounding error <= 6.542e-05
  * Polynomial:  max relative error 2.441e-04 (2^-12.00) at t = 1
  * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.441e-04 |f(x)| (polynomial 
- *              2.441e-04, arithmetic and reduction 0.000e+00, relative) = 6.5970 LSB at most 
- *              (|f| <= 1)
+ *              2.441e-04, arithmetic and reduction 0.000e+00, relative) + 2.0970 LSB 
+ *              (arithmetic and reduction, absolute) = 6.5970 LSB at most (|f| <= 1)
  * Sweep:       max 4.3030 LSB at x = -32145 (-7.84790039), mean 0.7967 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
  * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              to even; bit-identical under any compiler flags
+ *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
+ *              per rounding); bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
