@@ -313,18 +313,23 @@ static int fit_at(fx_gen *G, int order, char *err, size_t errlen)
 }
 
 /* the variant's bound on the error model; fills bound_lsb */
-static int accept(fx_gen *G)
+int fx_within(const fx_gen *G, double R, double A)
 {
     double L = fx_lsb(G);
-    double tot = G->R * G->fmax + G->A;
-    G->bound_lsb = 0.5 + tot / L;
+    double tot = R * G->fmax + A;
     if (!(tot == tot))
         return 0;
     if (G->exact)
         return tot < 0.5 * L * (1 - 1e-9);
     /* fast: R|f| + A + L/2 <= max(2^-10 |f|, 4L) for every |f|: it is
        enough at |f| = 2^12 L (the kink) and at |f| = 0, as R <= 2^-10 */
-    return G->R <= 0x1p-10 && G->R * 4096 * L + G->A + 0.5 * L <= 4 * L * (1 - 1e-9);
+    return R <= 0x1p-10 && R * 4096 * L + A + 0.5 * L <= 4 * L * (1 - 1e-9);
+}
+
+static int accept(fx_gen *G)
+{
+    G->bound_lsb = 0.5 + (G->R * G->fmax + G->A) / fx_lsb(G);
+    return fx_within(G, G->R, G->A);
 }
 
 /* ---- provenance ---- */

@@ -128,6 +128,8 @@ void fx_parse_type(const char *what, const char *s, pf_type *t);
 
 /* ---- helpers (gen/fixed_core.c) ---- */
 double fx_lsb(const fx_gen *G);                 /* output lsb 2^-Eo */
+/* does the error model R |f| + A meet the variant's bound? */
+int fx_within(const fx_gen *G, double R, double A);
 int fx_bitlen(uint64_t v);
 /* "INT64_C(-123)" or "-123" for the kernel's word */
 void fx_lit(char *buf, size_t n, int64_t v, int w64);

@@ -32,8 +32,8 @@ static const fx_case cases[] = {
     {"cos", "fixed<15,12>", "fixed<15,14>", 1, 0},   {"cos", "fixed<15,12>", "fixed<15,14>", 0, 16},
     {"exp", "fixed<15,11>", "ufixed<16,8>", 1, 0},   {"exp", "fixed<15,11>", "ufixed<16,8>", 0, 16},
     {"exp2", "fixed<15,11>", "ufixed<16,8>", 1, 0},  {"exp2", "fixed<15,11>", "ufixed<16,8>", 0, 16},
-    {"log", "ufixed<16,8>", "fixed<15,11>", 1, 0},   {"log", "ufixed<16,8>", "fixed<15,11>", 0, 16},
-    {"log2", "ufixed<16,8>", "fixed<15,11>", 1, 0},  {"log2", "ufixed<16,8>", "fixed<15,11>", 0, 16},
+    {"log", "ufixed<16,8>", "fixed<15,11>", 1, 16},   {"log", "ufixed<16,8>", "fixed<15,11>", 0, 16},
+    {"log2", "ufixed<16,8>", "fixed<15,11>", 1, 16},  {"log2", "ufixed<16,8>", "fixed<15,11>", 0, 16},
     {"sqrt", "ufixed<16,8>", "ufixed<16,12>", 1, 0}, {"sqrt", "ufixed<16,8>", "ufixed<16,12>", 0, 16},
     /* odd ones */
     {"sin", "fixed<7,4>", "fixed<7,6>", 1, 0},       /* 8-bit */

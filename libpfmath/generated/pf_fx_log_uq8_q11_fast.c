@@ -202,27 +202,27 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k)
     n = (int16_t)(u < 0x8000u ? n - 1 : n);
     u = (uint16_t)(u < 0x8000u ? u << 1 : u);
     int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    int16_t ea = (int16_t)((n - 8) * k[0]); /* e 2^12 */
-    int16_t tq = (int16_t)((t) * k[1]); /* t (a product: see the array form) */
+    int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
     /* P(t) ~ log(1 + t): Horner in 16-bit words, one rounding per step */
-    int16_t p = k[2]; /* c3 = 0.114776611328 */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c2 = -0.407409667969, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[4]); /* c1 = 0.986694335938, 2^-15 units */
+    int16_t p = k[1]; /* c3 = 0.114776611328 */
+    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[2]); /* c2 = -0.407409667969, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c1 = 0.986694335938, 2^-15 units */
     p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-15 units */
+    int16_t ea = (int16_t)((n - 8) * k[4]); /* e 2^12 */
     int16_t z = (int16_t)(pf_fx_mulhrs(ea, k[5]) + pf_fx_rsh16(p, 3)); /* e ln2 + P at 2^-12 */
     int16_t r = pf_fx_rsh16(z, 1); /* rounded once to the output */
-    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */
     int16_t rc = (int16_t)r;
+    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */
     return (int16_t)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)-32768 & m));
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
 static const int16_t pf_log_uq8_q11_fast_k[6] = {
-    4096,   /* k[0]: 2^12: e at 2^-12 */
-    1,      /* k[1]: 1 (see the array form) */
-    3761,   /* k[2]: c3 = 0.114776611328 */
-    -13350, /* k[3]: c2 = -0.407409667969 */
-    32332,  /* k[4]: c1 = 0.986694335938 */
+    1,      /* k[0]: 1 (see the array form) */
+    3761,   /* k[1]: c3 = 0.114776611328 */
+    -13350, /* k[2]: c2 = -0.407409667969 */
+    32332,  /* k[3]: c1 = 0.986694335938 */
+    4096,   /* k[4]: 2^12: e at 2^-12 */
     22713,  /* k[5]: round(ln2 2^15) */
 };
 
