@@ -71,6 +71,11 @@ static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
         G->KZ32 = (int64_t)mpfr_get_si(l, MPFR_RNDN);
         mpfr_clear(l);
     }
+    /* log2: e 2^a is exact, so a finer a only adds P's rounding before the
+       final one: a = Eo.  log: at a = Eo + 1 the roundings of e ln2 and of
+       P cost as much as at a = Eo, where P's is the final one: a = Eo */
+    if (a >= Eo && (base2 || a == Eo + 1))
+        a = Eo;
     G->A16 = a < Eo ? -1 : a; /* -1: only the wide sum */
     G->DK16 = 0;
     if (!base2) {
@@ -157,7 +162,9 @@ static void budget16(fx_gen *G)
     G->R = 0;
     double a16 = INFINITY;
     if (G->A16 >= 0 && G->Ep >= G->A16)
-        a16 = G->poly_err + G->arith + G->DK16 + (G->Ep > G->A16 ? ldexp(0.5, -(int)G->A16) : 0);
+        /* P's rounding to 2^-a is the final one when a = Eo (z is the result) */
+        a16 = G->poly_err + G->arith + G->DK16 +
+              (G->Ep > G->A16 && G->A16 > G->out.exp ? ldexp(0.5, -(int)G->A16) : 0);
     int kexact = G->KZ32 == (int64_t)1 << G->EZ32; /* log2 */
     double a32 = G->poly_err + G->arith + (kexact ? 0 : (double)G->EMAX * ldexp(0.5, -(int)G->EZ32));
     if (G->Ep > G->EZ32)

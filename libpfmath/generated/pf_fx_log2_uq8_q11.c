@@ -6,12 +6,11 @@
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
  * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
  *              constant shifts and selects), t in [0, 1) the 15 bits below the leading one 
- *              (exact); log2(x) = e  + P(t) summed in an int32_t at 2^-26 (e exact), rounded 
- *              once; x <= 0 -> -32768 (most negative)
+ *              (exact); log2(x) = e  + P(t) summed in an int16_t at 2^-11, rounded once; x <= 0 
+ *              -> -32768 (most negative)
  * Domain:      log2(1+t) on t in [0, 1]
  * Order:       4 (5 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       the sum e  + P and its rounding are in 32-bit lanes: at the 16-bit sum's lsb 
- *              2^-11, the roundings of e  and of P would leave the exact (1 LSB) bound
+ * Lanes:       every step in 16-bit lanes
  * Method:      minimax absolute error (nlopt SLSQP, epigraph form, from the least-squares fit), 
  *              coefficients rounded to the lsb of their Horner step (bit-width analysis) by 
  *              pin-and-refit
@@ -211,22 +210,23 @@ PF_FX_INLINE int16_t pf_log2_uq8_q11_inline(uint16_t x, const int16_t *k)
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[4]); /* c2 = -0.679992675781, 2^-15 units */
     p = (int16_t)(pf_fx_mulhrs(p, tq1) + k[5]); /* c1 = 1.43902587891, 2^-14 units */
     p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-14 units */
-    /* e  + P at 2^-26 in 32-bit lanes (see Lanes above), rounded once */
-    int32_t z = (int32_t)(n - 8) * 67108864 + (int32_t)p * 4096;
-    int32_t r = pf_fx_rsh32(z, 15);
+    int16_t ea = (int16_t)((n - 8) * k[6]); /* e 2^11 */
+    int16_t z = (int16_t)(ea + pf_fx_rsh16(p, 3)); /* e + P at 2^-11 */
+    int16_t r = z;
+    int16_t rc = (int16_t)r;
     uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */
-    int16_t rc = (int16_t)(r < -32768 ? -32768 : r > 32767 ? 32767 : r);
     return (int16_t)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)-32768 & m));
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_log2_uq8_q11_k[6] = {
+static const int16_t pf_log2_uq8_q11_k[7] = {
     1,      /* k[0]: 1 (see the array form) */
     16384,  /* k[1]: 2^14: tq rounded to 14 fraction bits */
     -2778,  /* k[2]: c4 = -0.0847778320312 */
     10671,  /* k[3]: c3 = 0.325653076172 */
     -22282, /* k[4]: c2 = -0.679992675781 */
     23577,  /* k[5]: c1 = 1.43902587891 */
+    2048,   /* k[6]: 2^11: e at 2^-11 */
 };
 
 int16_t pf_log2_uq8_q11(uint16_t x)

@@ -20,8 +20,8 @@
  *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
  *              Horner rounding error <= 9.423e-05
  * Polynomial:  max absolute error 1.312e-03 (2^-9.57) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 3.3805 LSB (polynomial 2.6875, 
- *              arithmetic and reduction 0.6930) = 3.8805 LSB
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.8805 LSB (polynomial 2.6875, 
+ *              arithmetic and reduction 0.1930) = 3.3805 LSB
  * Sweep:       max 3.1803 LSB at x = 16383 (63.9960938), mean 0.9208 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  log2(x) for x <= 0 (undefined) gives -32768, the most negative output; results 

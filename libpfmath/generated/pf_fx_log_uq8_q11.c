@@ -11,7 +11,7 @@
  * Domain:      log(1+t) on t in [0, 1]
  * Order:       4 (5 fixed-point coefficients; int16_t words: 16-bit lanes)
  * Lanes:       the sum e ln2 + P and its rounding are in 32-bit lanes: at the 16-bit sum's lsb 
- *              2^-12, the roundings of e ln2 and of P would leave the exact (1 LSB) bound
+ *              2^-11, the roundings of e ln2 and of P would leave the exact (1 LSB) bound
  * Method:      minimax absolute error (nlopt SLSQP, epigraph form, from the least-squares fit), 
  *              coefficients rounded to the lsb of their Horner step (bit-width analysis) by 
  *              pin-and-refit

@@ -6,7 +6,7 @@
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
  * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
  *              constant shifts and selects), t in [0, 1) the 15 bits below the leading one 
- *              (exact); log(x) = e ln2 + P(t) summed in an int16_t at 2^-12 (e ln2 = round(e 
+ *              (exact); log(x) = e ln2 + P(t) summed in an int16_t at 2^-11 (e ln2 = round(e 
  *              2^a K 2^-15), K = round(ln2 2^15) from MPFR, the rounding multiply-high), 
  *              rounded once; x <= 0 -> -32768 (most negative)
  * Domain:      log(1+t) on t in [0, 1]
@@ -23,7 +23,7 @@
  * Polynomial:  max absolute error 9.141e-04 (2^-10.10) at t = 1
  * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.4892 LSB (polynomial 1.8721, 
  *              arithmetic and reduction 0.6172) = 2.9892 LSB
- * Sweep:       max 2.7348 LSB at x = 16359 (63.9023438), mean 0.6665 LSB; exhaustive: all 65536 
+ * Sweep:       max 2.4833 LSB at x = 16369 (63.9414062), mean 0.6806 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  log(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
@@ -208,9 +208,9 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k)
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[2]); /* c2 = -0.407409667969, 2^-15 units */
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c1 = 0.986694335938, 2^-15 units */
     p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-15 units */
-    int16_t ea = (int16_t)((n - 8) * k[4]); /* e 2^12 */
-    int16_t z = (int16_t)(pf_fx_mulhrs(ea, k[5]) + pf_fx_rsh16(p, 3)); /* e ln2 + P at 2^-12 */
-    int16_t r = pf_fx_rsh16(z, 1); /* rounded once to the output */
+    int16_t ea = (int16_t)((n - 8) * k[4]); /* e 2^11 */
+    int16_t z = (int16_t)(pf_fx_mulhrs(ea, k[5]) + pf_fx_rsh16(p, 4)); /* e ln2 + P at 2^-11 */
+    int16_t r = z;
     int16_t rc = (int16_t)r;
     uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */
     return (int16_t)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)-32768 & m));
@@ -222,7 +222,7 @@ static const int16_t pf_log_uq8_q11_fast_k[6] = {
     3761,   /* k[1]: c3 = 0.114776611328 */
     -13350, /* k[2]: c2 = -0.407409667969 */
     32332,  /* k[3]: c1 = 0.986694335938 */
-    4096,   /* k[4]: 2^12: e at 2^-12 */
+    2048,   /* k[4]: 2^11: e at 2^-11 */
     22713,  /* k[5]: round(ln2 2^15) */
 };
 
