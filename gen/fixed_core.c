@@ -727,8 +727,10 @@ static void coef_lit(const fx_gen *G, char *buf, size_t n, int64_t v, int add)
 
 const char *fx_k16(fx_gen *G, int64_t v, const char *what)
 {
-    static char names[48][16];
-    int i = G->nk < 47 ? G->nk++ : 47;
+    static char names[64][16];
+    if (G->nk >= 64) /* cannot happen: see nk in fixed_internal.h */
+        abort();
+    int i = G->nk++;
     G->kval[i] = v;
     snprintf(G->kwhat[i], sizeof G->kwhat[i], "%s", what);
     snprintf(names[i], sizeof names[i], "k[%d]", i);

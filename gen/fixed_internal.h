@@ -108,9 +108,9 @@ struct fx_gen {
        only recognizes the rounding multiply-high for a non-constant
        operand, see fx_tail16.c.in) */
     pf_bw_wstep ws[FX_MAXC];
-    int nk;
-    int64_t kval[48];
-    char kwhat[48][64];
+    int nk;                    /* <= FX_MAXC coefficients + 15 roundings of x + 6 others */
+    int64_t kval[64];
+    char kwhat[64][64];
     char wide_text[400];       /* steps in wider lanes, and why (provenance) */
 
     /* sweep of the compiled code */

@@ -212,17 +212,17 @@ static void emit16(fx_gen *G, fx_buf *b, int base2)
     char rc[200];
     if (G->WIDE) {
         int ez = (int)G->EZ32;
-        fx_printf(&body, "    /* e %s + P at 2^-%d in 32-bit lanes (see Lanes above), rounded once */\n",
-                  base2 ? "" : "ln2", ez);
+        fx_printf(&body, "    /* e%s + P at 2^-%d in 32-bit lanes (see Lanes above), rounded once */\n",
+                  base2 ? "" : " ln2", ez);
         fx_printf(&body, "    int32_t z = (int32_t)(n - %d) * %lld + (int32_t)p * %lld;\n", Ei, (long long)G->KZ32,
                   (long long)1 << (ez - Ep));
         fx_printf(&body, "    int32_t r = pf_fx_rsh32(z, %d);\n", ez - Eo);
         snprintf(rc, sizeof rc, "(int16_t)(r < %lld ? %lld : r > %lld ? %lld : r)", (long long)mn, (long long)mn,
                  (long long)mx, (long long)mx);
         snprintf(G->wide_text, sizeof G->wide_text,
-                 "the sum e %s + P and its rounding are in 32-bit lanes: at the 16-bit sum's lsb 2^-%d, the "
-                 "roundings of e %s and of P would leave the %s bound",
-                 base2 ? "" : "ln2", a < 0 ? Eo : a, base2 ? "" : "ln2", G->exact ? "exact (1 LSB)" : "fast");
+                 "the sum e%s + P and its rounding are in 32-bit lanes: at the 16-bit sum's lsb 2^-%d, the "
+                 "roundings of e%s and of P would leave the %s bound",
+                 base2 ? "" : " ln2", a < 0 ? Eo : a, base2 ? "" : " ln2", G->exact ? "exact (1 LSB)" : "fast");
     } else {
         char pa[96];
         if (Ep > a)
@@ -259,9 +259,9 @@ static void emit16(fx_gen *G, fx_buf *b, int base2)
     fx_printf(&body, "    return (%s)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)%lld & m));", G->ot, (long long)mn);
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (a staged normalization: constant shifts and "
-             "selects), t in [0, 1) the 15 bits below the leading one (exact); %s(x) = e %s + P(t) summed %s, "
+             "selects), t in [0, 1) the 15 bits below the leading one (exact); %s(x) = e%s + P(t) summed %s, "
              "rounded once; x <= 0 -> %lld (most negative)",
-             Ei, base2 ? "log2" : "log", base2 ? "" : "ln2", sumtxt, (long long)mn);
+             Ei, base2 ? "log2" : "log", base2 ? "" : " ln2", sumtxt, (long long)mn);
     char minout[32];
     snprintf(minout, sizeof minout, "%lld", (long long)mn);
     const char *kv[] = {"FUNC", base2 ? "log2" : "log", "KTEXT", base2 ? "" : "ln2", "PTEXT",

@@ -6,7 +6,7 @@
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
  * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
  *              constant shifts and selects), t in [0, 1) the 15 bits below the leading one 
- *              (exact); log2(x) = e  + P(t) summed in an int16_t at 2^-11, rounded once; x <= 0 
+ *              (exact); log2(x) = e + P(t) summed in an int16_t at 2^-11, rounded once; x <= 0 
  *              -> -32768 (most negative)
  * Domain:      log2(1+t) on t in [0, 1]
  * Order:       4 (5 fixed-point coefficients; int16_t words: 16-bit lanes)
