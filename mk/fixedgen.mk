@@ -89,3 +89,11 @@ PROGS += $(BUILD)/bench_fixed
 $(BUILD)/bench_fixed: tests/bench_fixed.c $(BUILD)/libpfmath.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -O3 -fno-math-errno -MMD -MP $< -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lm
+
+# make bench: the fixed-point table above (issue 14's ratios in its last two
+# columns) in $(BUILD)/bench-fixed.md, after the other benches (two timing
+# at once on two cores would disturb each other)
+.PHONY: bench-fixed
+bench: bench-fixed
+bench-fixed: $(BUILD)/bench_fixed | bench-float bench-noise
+	$(BUILD)/bench_fixed 40 | tee $(BUILD)/bench-fixed.md
