@@ -1,6 +1,7 @@
 /* Two-pass bit-width analysis (see bitwidth.h for the rules and why). */
 #include "bitwidth.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 static pf_bw_node *node(pf_bw_op op, pf_bw_node *a, pf_bw_node *b)
@@ -150,5 +151,47 @@ int pf_bw_horner(const pf_type *coef, int n, pf_type x, pf_type out, pf_bw_step 
     }
     pf_bw_free(p[0]);
     free(p);
+    return 0;
+}
+
+/* finest exponent e <= cap with v 2^e <= 2^(W-1) - 1, or cap - 400 if none */
+static int fit_exp(double v, int W, int cap)
+{
+    double lim = ldexp(1.0, W - 1) - 1;
+    for (int e = cap; e > cap - 400; e--)
+        if (v * ldexp(1.0, e) <= lim)
+            return e;
+    return cap - 400;
+}
+
+int pf_bw_horner_word(const double *pmax, int n, int W, int emax, pf_bw_wstep *st, double *err)
+{
+    if (n < 0 || W < 8 || W > 32)
+        return -1;
+    double q = ldexp(1.0, -(W - 1));
+    st[n].exp = fit_exp(pmax[n], W, emax);
+    st[n].xdrop = 0;
+    st[n].kind = PF_BW_MULHRS;
+    st[n].err = 0;
+    if (st[n].exp < -W)
+        return -1;
+    for (int k = n - 1; k >= 0; k--) {
+        int prev = st[k + 1].exp, e = prev;
+        double ek;
+        /* coarsen until p_k and its error fit; the error grows as e drops */
+        for (;; e--) {
+            int d = prev - e;
+            if (d > W - 2 || e < -W)
+                return -1;
+            ek = st[k + 1].err + (d ? pmax[k + 1] * ldexp(q, d - 1) : 0) + ldexp(0.5, -e);
+            if ((pmax[k] + ek) * ldexp(1.0, e) <= ldexp(1.0, W - 1) - 1)
+                break;
+        }
+        st[k].exp = e;
+        st[k].xdrop = prev - e;
+        st[k].kind = PF_BW_MULHRS;
+        st[k].err = ek;
+    }
+    *err = st[0].err;
     return 0;
 }

@@ -86,4 +86,45 @@ typedef struct {
 
 int pf_bw_horner(const pf_type *coef, int n, pf_type x, pf_type out, pf_bw_step *steps);
 
+/* Horner under a word-size constraint (issue 14: fixed point in W-bit
+ * lanes, W = 16).  The bottom-up rule above grows one integer bit per
+ * addition, which a 16-bit word cannot afford; here each step's format comes
+ * from a proven bound on the value itself, pmax[k] >= |p_k(x)| for x in
+ * [0, 1] (the caller's proof, e.g. a sampled maximum plus a Lipschitz
+ * margin), with the rounding errors of the earlier steps added.
+ *
+ * Every value is a signed W-bit word; x is in [0, 1) with W-1 fraction bits
+ * (never 1, never negative).  Step k computes
+ *     p_k = MULHRS(p_{k+1}, x_d) + c_k,   MULHRS(a, b) = round(a b / 2^(W-1))
+ * (the rounding multiply-high, pmulhrsw for W = 16): the product's lsb is
+ * p_{k+1}'s coarsened by d_k, so p_k.exp = p_{k+1}.exp - d_k, and c_k is
+ * rounded to it.  The exponents are therefore non-increasing from the
+ * leading coefficient to p_0; d_k > 0 only where p_k needs more integer
+ * bits than p_{k+1} (the seed's top-down rule for x: an operand needs no lsb
+ * finer than its parent's divided by the other operand's range).  x_d is
+ * x rounded to W-1-d fraction bits, x_d = MULHRS(x, 2^(W-1-d)) (a multiply
+ * rather than a shift: GCC then keeps the product in 16-bit lanes), which
+ * costs |p_{k+1}| 2^(d-1) 2^-(W-1); x_d <= 1.
+ * Error of the computed p_0 (rounded coefficients, exact x):
+ *     e_n = 0,  e_k = e_{k+1} + pmax[k+1] 2^(d_k-1) 2^-(W-1) [d_k > 0] + 2^-(exp_k + 1)
+ * (|x| <= 1 carries e_{k+1} over; half an lsb per rounding, ties up or to
+ * even alike).  Each exp_k is the finest <= emax and <= exp_{k+1} with
+ * (pmax[k] + e_k) 2^exp_k <= 2^(W-1) - 1, so no step overflows and
+ * -2^(W-1) (whose square MULHRS cannot hold) never occurs.
+ * kind is PF_BW_MULHRS for every step here; PF_BW_MULFULL names the full
+ * W x W -> 2W product that reconstruction steps use where a kernel's error
+ * model needs it (reported, not chosen, by this function).
+ * Returns 0, or -1 (n < 0, W not in 8..32, or a value that cannot fit even
+ * at exp -W). */
+typedef enum { PF_BW_MULHRS = 1, PF_BW_MULH, PF_BW_MULFULL } pf_bw_mulkind;
+
+typedef struct {
+    int exp;       /* lsb exponent of p_k (value = stored 2^-exp) */
+    int xdrop;     /* d_k: multiply by x rounded to W-1-d_k fraction bits (unused for k = n) */
+    pf_bw_mulkind kind;
+    double err;    /* e_k */
+} pf_bw_wstep;
+
+int pf_bw_horner_word(const double *pmax, int n, int W, int emax, pf_bw_wstep *steps, double *err);
+
 #endif

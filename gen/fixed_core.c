@@ -141,6 +141,84 @@ static int formats(fx_gen *G, int Ep, const pf_type *ct, int *E, pf_bw_step *st)
     return 0;
 }
 
+void fx_partial_max(const double *a, int m, double *pmax)
+{
+    /* P_k(x) = sum_{j >= k} a_j x^(j-k): the largest |P_k| on a grid of
+       N + 1 points, plus L h / 2 with L = sum (j-k) |a_j| >= |P_k'| and h
+       the spacing, plus a relative 2^-40 for the double arithmetic */
+    enum { N = 4096 };
+    for (int k = 0; k <= m; k++) {
+        double L = 0, best = 0;
+        for (int j = k + 1; j <= m; j++)
+            L += (j - k) * fabs(a[j]);
+        for (int i = 0; i <= N; i++) {
+            double x = (double)i / N, p = a[m];
+            for (int j = m - 1; j >= k; j--)
+                p = p * x + a[j];
+            if (fabs(p) > best)
+                best = fabs(p);
+        }
+        pmax[k] = (best + L * 0.5 / N) * (1 + 0x1p-40);
+    }
+}
+
+/* 16-bit lanes: formats from pf_bw_horner_word on the polynomial's partial
+   sums; every coefficient rounded to its step's lsb (pin-and-refit), the
+   bounds taken again on the rounded coefficients, which must give the same
+   formats */
+static int fit_at16(fx_gen *G, char *err, size_t errlen)
+{
+    fit_problem *pb = &G->pb;
+    int m = G->m;
+    G->xt = pf_type_fixed(0, 15, 15);
+    for (int emax = 15; emax >= 2; emax--) {
+        double a[FX_MAXC], pm[FX_MAXC], e;
+        pf_bw_wstep ws[FX_MAXC], ws2[FX_MAXC];
+        for (int j = 0; j <= m; j++)
+            a[j] = (double)G->real.c[G->deg[j]];
+        fx_partial_max(a, m, pm);
+        if (pf_bw_horner_word(pm, m, 16, emax, ws, &e) != 0)
+            continue;
+        int exps[FIT_MAX_ORDER + 1] = {0};
+        for (int j = 0; j <= m; j++)
+            exps[G->deg[j]] = ws[j].exp;
+        G->poly = G->real;
+        int64_t stored[FIT_MAX_ORDER + 1];
+        if (fit_round_fixed(pb, exps, refit_of(G), &G->poly, stored, err, errlen) != 0)
+            return -1;
+        int ok = 1;
+        for (int j = 0; j <= m; j++) {
+            G->C[j] = stored[G->deg[j]];
+            a[j] = ldexp((double)G->C[j], -ws[j].exp);
+            ok = ok && G->C[j] >= -32767 && G->C[j] <= 32767;
+        }
+        if (!ok)
+            continue;
+        fx_partial_max(a, m, pm);
+        if (pf_bw_horner_word(pm, m, 16, emax, ws2, &e) != 0)
+            continue;
+        for (int j = 0; j <= m; j++)
+            ok = ok && ws2[j].exp == ws[j].exp;
+        if (!ok)
+            continue;
+        memcpy(G->ws, ws2, sizeof ws2);
+        for (int j = 0; j <= m; j++)
+            G->E[j] = ws2[j].exp;
+        G->Ep = ws2[0].exp;
+        G->pt = pf_type_fixed(1, 15, G->Ep);
+        G->root_sat = 0;
+        G->arith = e;
+        G->dP = 0;
+        for (int j = 1; j <= m; j++)
+            G->dP += j * fabs(a[j]);
+        fit_measure(pb, &G->poly);
+        G->poly_err = G->poly.max_err;
+        return 0;
+    }
+    snprintf(err, errlen, "order %d: no Horner formats fit 16-bit words", G->order);
+    return -1;
+}
+
 static int fit_at(fx_gen *G, int order, char *err, size_t errlen)
 {
     const fx_func *F = G->fn;
@@ -169,6 +247,8 @@ static int fit_at(fx_gen *G, int order, char *err, size_t errlen)
     }
     G->m = m;
     G->order = order;
+    if (G->W == 16)
+        return fit_at16(G, err, errlen);
     G->xt = pf_type_fixed(0, G->W - 1, G->W - 1);
     for (int Ep = G->W - 2; Ep >= 8; Ep--) {
         pf_type ct[FX_MAXC];
@@ -233,18 +313,23 @@ static int fit_at(fx_gen *G, int order, char *err, size_t errlen)
 }
 
 /* the variant's bound on the error model; fills bound_lsb */
-static int accept(fx_gen *G)
+int fx_within(const fx_gen *G, double R, double A)
 {
     double L = fx_lsb(G);
-    double tot = G->R * G->fmax + G->A;
-    G->bound_lsb = 0.5 + tot / L;
+    double tot = R * G->fmax + A;
     if (!(tot == tot))
         return 0;
     if (G->exact)
         return tot < 0.5 * L * (1 - 1e-9);
     /* fast: R|f| + A + L/2 <= max(2^-10 |f|, 4L) for every |f|: it is
        enough at |f| = 2^12 L (the kink) and at |f| = 0, as R <= 2^-10 */
-    return G->R <= 0x1p-10 && G->R * 4096 * L + G->A + 0.5 * L <= 4 * L * (1 - 1e-9);
+    return R <= 0x1p-10 && R * 4096 * L + A + 0.5 * L <= 4 * L * (1 - 1e-9);
+}
+
+static int accept(fx_gen *G)
+{
+    G->bound_lsb = 0.5 + (G->R * G->fmax + G->A) / fx_lsb(G);
+    return fx_within(G, G->R, G->A);
 }
 
 /* ---- provenance ---- */
@@ -254,6 +339,25 @@ void fx_formats_text(const fx_gen *G, char *buf, size_t n)
     char t[64];
     size_t o = 0;
     buf[0] = 0;
+    if (G->W == 16) {
+        /* 16-bit lanes: every step a signed 16-bit word */
+        o += (size_t)snprintf(buf + o, n - o, "x unsigned fixed<15,15> in int16_t; ");
+        for (int j = G->m; j >= 0 && o < n; j--) {
+            pf_type p = pf_type_fixed(1, 15, G->E[j]);
+            type_text(&p, t, sizeof t);
+            o += (size_t)snprintf(buf + o, n - o, "p%d %s", j, t);
+            if (j < G->m && G->ws[j].xdrop && o < n)
+                o += (size_t)snprintf(buf + o, n - o, " (x rounded to 2^-%d)", 15 - G->ws[j].xdrop);
+            if (j && o < n)
+                o += (size_t)snprintf(buf + o, n - o, ", ");
+        }
+        if (G->m > 0 && o < n)
+            snprintf(buf + o, n - o, "; steps p = pf_fx_mulhrs(p, x) + c, the rounding multiply-high round(p x 2^-15) "
+                                     "(pmulhrsw), formats from pf_bw_horner_word (bound on each |p_k| plus the "
+                                     "rounding errors before it); Horner rounding error <= %.3e",
+                     G->arith);
+        return;
+    }
     type_text(&G->xt, t, sizeof t);
     o += (size_t)snprintf(buf + o, n - o, "x %s; ", t);
     for (int j = G->m; j >= 0 && o < n; j--) {
@@ -328,9 +432,15 @@ static void provenance(fx_buf *b, const fx_gen *G)
     snprintf(tmp, sizeof tmp, "%s on t in [%g, %g]%s", F->target_text, F->a, F->b,
              F->parity == FIT_PARITY_ODD ? " (odd polynomial t P(t^2))" : "");
     wrap_text(b, "Domain:", tmp);
-    snprintf(tmp, sizeof tmp, "%d (%d fixed-point coefficients; %s words, %d-bit products)", G->order, G->m + 1,
-             G->wt, 2 * G->W);
+    if (G->W == 16)
+        snprintf(tmp, sizeof tmp, "%d (%d fixed-point coefficients; int16_t words: 16-bit lanes)", G->order,
+                 G->m + 1);
+    else
+        snprintf(tmp, sizeof tmp, "%d (%d fixed-point coefficients; %s words, %d-bit products)", G->order, G->m + 1,
+                 G->wt, 2 * G->W);
     wrap_text(b, "Order:", tmp);
+    if (G->W == 16)
+        wrap_text(b, "Lanes:", G->wide_text[0] ? G->wide_text : "every step in 16-bit lanes");
     wrap_text(b, "Method:", method_text(G));
     wrap_text(b, "Constraints:", F->con_zero ? F->con_text : "none");
     fx_formats_text(G, tmp, sizeof tmp);
@@ -338,11 +448,13 @@ static void provenance(fx_buf *b, const fx_gen *G)
     snprintf(tmp, sizeof tmp, "max %s error %.3e (2^%.2f) at t = %.9g", G->errkind == FIT_REL ? "relative" : "absolute",
              G->poly_err, log2(G->poly_err), G->poly.max_err_at);
     wrap_text(b, "Polynomial:", tmp);
+    char abs_text[96];
+    snprintf(abs_text, sizeof abs_text, " + %.4f LSB (arithmetic and reduction, absolute)", G->A / fx_lsb(G));
     if (G->R > 0)
         snprintf(tmp, sizeof tmp,
                  "|result - f(x)| <= 0.5 LSB (final rounding) + %.3e |f(x)| (polynomial %.3e, arithmetic and "
-                 "reduction %.3e, relative) = %.4f LSB at most (|f| <= %.6g)",
-                 G->R, G->poly_err, G->R - G->poly_err, G->bound_lsb, G->fmax);
+                 "reduction %.3e, relative)%s = %.4f LSB at most (|f| <= %.6g)",
+                 G->R, G->poly_err, G->R - G->poly_err, G->A > 0 && G->W == 16 ? abs_text : "", G->bound_lsb, G->fmax);
     else
         snprintf(tmp, sizeof tmp,
                  "|result - f(x)| <= 0.5 LSB (final rounding) + %.4f LSB (polynomial %.4f, arithmetic and "
@@ -369,19 +481,40 @@ static void provenance(fx_buf *b, const fx_gen *G)
               G->exact ? "exact: below 1 LSB of the output for every input"
                        : "fast: within max(2^-10 |f(x)|, 4 LSB) for every input");
     wrap_text(b, "Arithmetic:",
-              "integers only (no floating point, no <math.h>); every rounding to nearest, ties to even; "
-              "bit-identical under any compiler flags");
+              G->W == 16 ? "integers only (no floating point, no <math.h>); every rounding to nearest, ties up (the "
+                           "rounding multiply-high's rule; the error bound needs only half an lsb per rounding); "
+                           "bit-identical under any compiler flags"
+                         : "integers only (no floating point, no <math.h>); every rounding to nearest, ties to even; "
+                           "bit-identical under any compiler flags");
     fx_put(b, " */\n#include <stddef.h>\n#include <stdint.h>\n\n");
 }
 
 char *fx_emit(const fx_gen *G, size_t *len)
 {
     fx_buf b = {0};
+    fx_gen *g = (fx_gen *)G; /* emit() fills the 16-bit constant table */
+    g->nk = 0;
+    fx_buf body = {0};
+    G->fn->emit(g, &body); /* first: it may note wider steps for the provenance */
     provenance(&b, G);
     fx_put(&b, fx_template("fx_common.h"));
-    G->fn->emit((fx_gen *)G, &b);
-    const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, NULL};
-    fx_subst(&b, fx_template("fx_tail.c"), kv);
+    if (G->W == 16)
+        fx_put(&b, fx_template("fx_common16.h"));
+    fx_put(&b, body.s);
+    free(body.s);
+    if (G->W == 16) {
+        fx_buf kl = {0};
+        for (int i = 0; i < G->nk; i++)
+            fx_printf(&kl, "\n    %lld,%*s/* k[%d]: %s */", (long long)G->kval[i], 7 - (int)snprintf(NULL, 0, "%lld", (long long)G->kval[i]), "", i, G->kwhat[i]);
+        char nk[16];
+        snprintf(nk, sizeof nk, "%d", G->nk);
+        const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "NK", nk, "KLIST", kl.s ? kl.s : "", NULL};
+        fx_subst(&b, fx_template("fx_tail16.c"), kv);
+        free(kl.s);
+    } else {
+        const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, NULL};
+        fx_subst(&b, fx_template("fx_tail.c"), kv);
+    }
     *len = b.n;
     return b.s;
 }
@@ -434,10 +567,14 @@ int fx_generate(fx_gen *G, int sweep, char *err, size_t errlen)
     G->minimax = G->minimax < 0 ? G->exact : G->minimax;
     G->errkind = G->exact ? F->errkind : F->errkind_fast;
     int found = 0;
-    for (int W = 32; W <= 64 && !found; W += 32) {
+    /* 16-bit lanes first when input and output are stored in at most 16
+       bits: they hold twice the lanes of 32-bit ones */
+    int W0 = G->in.storage_bits <= 16 && G->out.storage_bits <= 16 ? 16 : 32;
+    for (int W = W0; W <= 64 && !found; W = W == 16 ? 32 : W + 32) {
         G->W = W;
-        G->wt = W == 32 ? "int32_t" : "int64_t";
-        G->mul = W == 32 ? "pf_fx_mul32" : "pf_fx_mul64";
+        G->wt = W == 16 ? "int16_t" : W == 32 ? "int32_t" : "int64_t";
+        G->mul = W == 16 ? "pf_fx_mulhrs" : W == 32 ? "pf_fx_mul32" : "pf_fx_mul64";
+        G->wide_text[0] = 0;
         char e2[600] = "";
         int rc = F->prepare(G, e2, sizeof e2);
         if (rc == -1) {
@@ -588,8 +725,110 @@ static void coef_lit(const fx_gen *G, char *buf, size_t n, int64_t v, int add)
         snprintf(buf, n, "%s", l);
 }
 
-void fx_emit_horner(const fx_gen *G, fx_buf *b, const char *x, const char *ind)
+const char *fx_k16(fx_gen *G, int64_t v, const char *what)
 {
+    static char names[64][16];
+    if (G->nk >= 64) /* cannot happen: see nk in fixed_internal.h */
+        abort();
+    int i = G->nk++;
+    G->kval[i] = v;
+    snprintf(G->kwhat[i], sizeof G->kwhat[i], "%s", what);
+    snprintf(names[i], sizeof names[i], "k[%d]", i);
+    return names[i];
+}
+
+/* 16-bit Horner: p = mulhrs(p, x >> d) + c, formats from pf_bw_horner_word */
+static void emit_horner16(fx_gen *G, fx_buf *b, const char *x, const char *ind)
+{
+    int m = G->m, done[16] = {0};
+    for (int j = m - 1; j >= 0; j--) {
+        int d = G->ws[j].xdrop;
+        if (d && !done[d]) {
+            char what[64];
+            snprintf(what, sizeof what, "2^%d: %s rounded to %d fraction bits", 15 - d, x, 15 - d);
+            fx_printf(b, "%sint16_t %s%d = pf_fx_mulhrs(%s, %s); /* %s rounded to 2^-%d */\n", ind, x, d, x,
+                      fx_k16(G, (int64_t)1 << (15 - d), what), x, 15 - d);
+            done[d] = 1;
+        }
+    }
+    char what[64];
+    snprintf(what, sizeof what, "c%d = %.12g", G->deg[m], ldexp((double)G->C[m], -G->E[m]));
+    fx_printf(b, "%sint16_t p = %s; /* %s */\n", ind, fx_k16(G, G->C[m], what), what);
+    for (int j = m - 1; j >= 0; j--) {
+        char xv[32];
+        if (G->ws[j].xdrop)
+            snprintf(xv, sizeof xv, "%s%d", x, G->ws[j].xdrop);
+        else
+            snprintf(xv, sizeof xv, "%s", x);
+        snprintf(what, sizeof what, "c%d = %.12g", G->deg[j], ldexp((double)G->C[j], -G->E[j]));
+        if (G->C[j])
+            fx_printf(b, "%sp = (int16_t)(pf_fx_mulhrs(p, %s) + %s); /* %s, 2^-%d units */\n", ind, xv,
+                      fx_k16(G, G->C[j], what), what, G->E[j]);
+        else
+            fx_printf(b, "%sp = pf_fx_mulhrs(p, %s); /* %s, 2^-%d units */\n", ind, xv, what, G->E[j]);
+    }
+}
+
+const char *fx_opaque16(fx_gen *G, const char *expr)
+{
+    static char buf[4][160];
+    static int i;
+    i = (i + 1) % 4;
+    snprintf(buf[i], sizeof buf[i], "(int16_t)((%s) * %s)", expr, fx_k16(G, 1, "1 (see the array form)"));
+    return buf[i];
+}
+
+void fx_emit_return16(const fx_gen *G, fx_buf *b, const char *r, int64_t lo, int64_t hi)
+{
+    /* r holds values in [lo, hi]: clamp only where the output is narrower
+       (no comparison that is always false: -Wtype-limits) */
+    int64_t mx = pf_type_max_stored(&G->out), mn = pf_type_min_stored(&G->out);
+    fx_printf(b, "    return (%s)", G->ot);
+    if (lo < mn)
+        fx_printf(b, "(%s < %lld ? %lld : ", r, (long long)mn, (long long)mn);
+    if (hi > mx)
+        fx_printf(b, "(%s > %lld ? %lld : ", r, (long long)mx, (long long)mx);
+    fx_put(b, r);
+    if (hi > mx)
+        fx_put(b, ")");
+    if (lo < mn)
+        fx_put(b, ")");
+    fx_put(b, ";");
+}
+
+void fx_emit_norm16(fx_buf *b, int nb)
+{
+    /* u = ux 2^(16 - nb), then four (or fewer) stages shift the leading
+       one up to bit 15: constant shifts and selects, 16-bit lanes */
+    fx_printf(b, "    uint16_t u = (uint16_t)(ux << %d);\n    int16_t n = %d; /* bitlen(ux) - 1 */\n", 16 - nb, nb - 1);
+    for (int sh = 8; sh >= 1; sh /= 2)
+        if (sh < nb)
+            fx_printf(b, "    n = (int16_t)(u < 0x%xu ? n - %d : n);\n    u = (uint16_t)(u < 0x%xu ? u << %d : u);\n",
+                      1u << (16 - sh), sh, 1u << (16 - sh), sh);
+    fx_put(b, "    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */");
+}
+
+void fx_emit_vshift16(fx_buf *b, const char *a, const char *sexpr, int smin, int smax)
+{
+    /* h = floor(a 2^(1 + L - s')) with s' = s + L >= 0 (L lifts negative
+       shifts), then r = (h + 1) >> 1 as (h >> 1) + (h & 1): round(a 2^-s),
+       ties up.  In 32-bit lanes: AVX2 has no per-lane 16-bit shift, and
+       a 2^(1 + L) < 2^32 */
+    int L = smin < 0 ? -smin : 0;
+    int hi = smax + L;
+    fx_printf(b, "    uint32_t sv = (uint32_t)(%s + %d);\n", sexpr, L);
+    if (hi > 31)
+        fx_put(b, "    sv = sv < 31u ? sv : 31u;\n");
+    fx_printf(b, "    uint32_t h = ((uint32_t)%s << %d) >> sv;\n", a, 1 + L);
+    fx_put(b, "    uint32_t r = (h >> 1) + (h & 1u);\n");
+}
+
+void fx_emit_horner(fx_gen *G, fx_buf *b, const char *x, const char *ind)
+{
+    if (G->W == 16) {
+        emit_horner16(G, b, x, ind);
+        return;
+    }
     char l[80];
     int m = G->m;
     /* x >= 0: with every coefficient >= 0 so is every p, and the 64-bit

@@ -31,6 +31,8 @@ static void g_exp2(mpfr_t y, const mpfr_t t, const void *ctx)
 #define FT s[0]
 #define LOCLAMP s[1]
 #define SAT s[2]
+#define B16 k[7]    /* 16-bit lanes, exp: round((log2(e) - 1) 2^15) */
+#define DT16 d[0]   /* 16-bit lanes: |error of t| */
 
 /* ceil / floor of v 2^e for an MPFR value v, as int64 (clamped to +-2^62) */
 static int64_t scaled_int(const mpfr_t v, int e, mpfr_rnd_t rnd)
@@ -46,6 +48,69 @@ static int64_t scaled_int(const mpfr_t v, int e, mpfr_rnd_t rnd)
     if (d < -0x1p62)
         return -((int64_t)1 << 62);
     return (int64_t)d;
+}
+
+/* 16-bit lanes: T = t 2^Ei as computed, for a stored (clamped) input */
+static int64_t t16(const fx_gen *G, int64_t xc, int base2)
+{
+    if (base2)
+        return xc;
+    int64_t pr = xc * G->B16; /* round(pr 2^-15), ties up: floor((pr + 2^14) / 2^15) */
+    int64_t q = pr + 16384;
+    q = q >= 0 ? q / 32768 : -((-q + 32767) / 32768);
+    return xc + q;
+}
+
+/* 16-bit lanes (see fx_exp16.c.in): int16_t inputs with 1..15 fraction
+   bits, and (t + K0) 2^Ei inside a uint16_t */
+static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
+{
+    int Ei = G->in.exp;
+    if (Ei < 1 || Ei > 15 || pf_type_max_stored(&G->in) > 32767) {
+        snprintf(err, errlen, "16-bit lanes: input not an int16_t with 1..15 fraction bits");
+        return -2;
+    }
+    double dt = 0;
+    if (!base2) {
+        mpfr_t l;
+        mpfr_init2(l, 256);
+        mpfr_set_ui(l, 1, MPFR_RNDN);
+        mpfr_exp(l, l, MPFR_RNDN);
+        mpfr_log2(l, l, MPFR_RNDN);
+        mpfr_sub_ui(l, l, 1, MPFR_RNDN);
+        G->B16 = scaled_int(l, 15, MPFR_RNDN);
+        mpfr_mul_2si(l, l, 15, MPFR_RNDN);
+        mpfr_sub_si(l, l, (long)G->B16, MPFR_RNDN);
+        double cerr = fabs(mpfr_get_d(l, MPFR_RNDN)); /* |B - (log2 e - 1) 2^15| */
+        mpfr_clear(l);
+        double xm = fmax(fabs((double)G->XLO), fabs((double)G->XHI));
+        dt = ldexp(0.5 + xm * cerr * 0x1p-15, -Ei);
+    }
+    G->DT16 = dt;
+    int64_t tlo = t16(G, G->XLO, base2), thi = t16(G, G->XHI, base2);
+    int64_t one = (int64_t)1 << Ei;
+    G->KLO = tlo >= 0 ? tlo / one : -((-tlo + one - 1) / one);
+    G->KHI = thi >= 0 ? thi / one : -((-thi + one - 1) / one);
+    G->K0 = G->KLO < 0 ? -G->KLO : 0;
+    if (thi + G->K0 * one > 65535) {
+        snprintf(err, errlen, "16-bit lanes: t does not fit a uint16_t");
+        return -2;
+    }
+    G->FT = Ei;
+    G->dred = dt;
+    if (base2)
+        snprintf(G->red_text, sizeof G->red_text,
+                 "t = x; k = floor(t), f = t - k (exact, the low bits of the stored integer, in a uint16_t biased "
+                 "by %lld); inputs clamped to [%lld, %lld] (stored)%s",
+                 (long long)G->K0, (long long)G->XLO, (long long)G->XHI, G->SAT ? ", saturating from there" : "");
+    else
+        snprintf(G->red_text, sizeof G->red_text,
+                 "t = x log2(e) = x + round(x B 2^-15), B = round((log2(e) - 1) 2^15) = %lld (MPFR), at the "
+                 "input's lsb 2^-%d in a uint16_t biased by %lld; k = floor(t), f = t - k; inputs clamped to "
+                 "[%lld, %lld] (stored)%s; error of t <= %.3e",
+                 (long long)G->B16, Ei, (long long)G->K0, (long long)G->XLO, (long long)G->XHI,
+                 G->SAT ? ", saturating from there" : "", dt);
+    return 0;
 }
 
 static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
@@ -102,6 +167,8 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
                  (long long)G->XSAT, ldexp((double)G->XSAT, -Ei), (long long)omax);
     else
         snprintf(G->sat_text, sizeof G->sat_text, "no input overflows");
+    if (G->W == 16)
+        return prepare16(G, err, errlen, base2);
     if (base2) {
         G->FT = Ei > 0 ? Ei : 0;
         G->dred = 0;
@@ -141,8 +208,23 @@ static int prep_exp2(fx_gen *G, char *err, size_t n) { return prepare(G, err, n,
 /* rounding of f to the Horner variable's 2^-(W-1) (and its saturation) */
 static double df_of(const fx_gen *G) { return G->FT > G->W - 1 ? 1.5 * ldexp(1.0, -(G->W - 1)) : 0; }
 
+static void budget16(fx_gen *G)
+{
+    /* P >= 1: its absolute Horner error is a relative one; t's error
+       moves 2^t by ln2 dt relatively; the final rounding is the 1/2 lsb */
+    G->A = 0;
+    G->R = G->poly_err + G->arith + M_LN2 * G->DT16 * (1 + 1e-6);
+    int smin = G->Ep - G->out.exp - (int)G->KHI;
+    if (smin < -14)
+        G->R = INFINITY;
+}
+
 static void budget(fx_gen *G)
 {
+    if (G->W == 16) {
+        budget16(G);
+        return;
+    }
     G->A = 0;
     G->R = G->poly_err + G->arith + M_LN2 * (G->dred + df_of(G)) * (1 + 1e-6);
     int shmax = G->Ep - G->out.exp - (int)G->KLO, shmin = G->Ep - G->out.exp - (int)G->KHI;
@@ -151,8 +233,74 @@ static void budget(fx_gen *G)
         G->R = INFINITY;
 }
 
+static void emit16(fx_gen *G, fx_buf *b, int base2)
+{
+    fx_buf body = {0}, horner = {0};
+    int Ei = G->in.exp, Ep = G->Ep;
+    int64_t omax = pf_type_max_stored(&G->out);
+    int full = G->in.storage_bits == 16 && G->in.is_signed;
+    fx_put(&body, "    int16_t xc = (int16_t)x;");
+    if (G->LOCLAMP)
+        fx_printf(&body, "\n    xc = (int16_t)(xc < %lld ? %lld : xc);", (long long)G->XLO, (long long)G->XLO);
+    if (G->SAT)
+        fx_printf(&body, "\n    xc = (int16_t)(xc > %lld ? %lld : xc);", (long long)G->XHI, (long long)G->XHI);
+    fx_put(&body, "\n");
+    long long bias = (long long)(G->K0 << Ei);
+    if (base2) {
+        fx_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + %lldu); /* (t + %lld) 2^%d */\n", bias,
+                  (long long)G->K0, Ei);
+    } else {
+        const char *kb = fx_k16(G, G->B16, "B = round((log2(e) - 1) 2^15)");
+        const char *xo = G->LOCLAMP || G->SAT || !full ? fx_opaque16(G, "xc") : "xc";
+        fx_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + (uint16_t)pf_fx_mulhrs(%s, %s) + %lldu); /* (t + %lld) 2^%d, t = x log2(e) */\n",
+                  xo, kb, bias, (long long)G->K0, Ei);
+    }
+    fx_printf(&body, "    uint16_t kb = (uint16_t)(tb >> %d); /* k + %lld */\n", Ei, (long long)G->K0);
+    {
+        char e[64], w[64];
+        snprintf(e, sizeof e, "tb & 0x%x", (1u << Ei) - 1);
+        snprintf(w, sizeof w, "2^%d: f to 2^-15 units", 15 - Ei);
+        const char *k2 = fx_k16(G, (int64_t)1 << (15 - Ei), w);
+        fx_printf(&body, "    int16_t f = (int16_t)((%s) * %s); /* f in [0, 1), 2^-15 units (a product: see the array form) */\n",
+                  e, k2);
+    }
+    fx_put(&body, "    /* P(f) ~ 2^f: Horner in 16-bit words, one rounding per step */\n");
+    fx_emit_horner(G, &horner, "f", "    ");
+    fx_put(&body, horner.s);
+    /* P 2^k in output units: r = round(P 2^-s), s = Ep - Eo - k */
+    int smin = Ep - G->out.exp - (int)G->KHI, smax = Ep - G->out.exp - (int)G->KLO;
+    char sexpr[64];
+    snprintf(sexpr, sizeof sexpr, "%lld - (int32_t)kb", (long long)(Ep - G->out.exp + G->K0));
+    fx_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
+    fx_emit_vshift16(&body, "(uint16_t)p", sexpr, smin, smax);
+    snprintf(G->wide_text, sizeof G->wide_text,
+             "the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit per-element "
+             "shift; the error model does not need them)");
+    /* overflow saturates through a mask: GCC 12 widens the whole loop to
+       32-bit lanes for a select between a 16-bit comparison and r */
+    fx_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
+              (unsigned long long)omax);
+    if (G->SAT)
+        fx_printf(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x >= %lld)); /* all ones from the first overflowing input */\n"
+                         "    return (%s)((r16 & ~m) | (%lluu & m));", (long long)G->XSAT, G->ot, (unsigned long long)omax);
+    else
+        fx_printf(&body, "    return (%s)r16;", G->ot);
+    char xsat[32], xlo[32];
+    snprintf(xsat, sizeof xsat, "%lld", (long long)G->XSAT);
+    snprintf(xlo, sizeof xlo, "%lld", (long long)G->XLO);
+    const char *kv[] = {"FUNC", base2 ? "exp2" : "exp", "TDEF", base2 ? "x" : "x log2(e)", "XSAT", xsat, "XLO", xlo,
+                        "NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};
+    fx_subst(b, fx_template("fx_exp16.c"), kv);
+    free(body.s);
+    free(horner.s);
+}
+
 static void emit(fx_gen *G, fx_buf *b, int base2)
 {
+    if (G->W == 16) {
+        emit16(G, b, base2);
+        return;
+    }
     fx_buf clamp = {0}, split = {0}, horner = {0}, out = {0};
     int W = G->W, Ei = G->in.exp, Ft = (int)G->FT;
     /* clamp */

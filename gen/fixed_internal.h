@@ -103,6 +103,16 @@ struct fx_gen {
     char sat_text[300];        /* the defined saturations, for the provenance */
     char bound_note[160];      /* appended to the error bound's line */
 
+    /* 16-bit lanes (W = 16, issue 14): the Horner steps' formats from
+       pf_bw_horner_word; the constants the body reads through k[] (GCC
+       only recognizes the rounding multiply-high for a non-constant
+       operand, see fx_tail16.c.in) */
+    pf_bw_wstep ws[FX_MAXC];
+    int nk;                    /* <= FX_MAXC coefficients + 15 roundings of x + 6 others */
+    int64_t kval[64];
+    char kwhat[64][64];
+    char wide_text[400];       /* steps in wider lanes, and why (provenance) */
+
     /* sweep of the compiled code */
     int swept, exhaustive;
     pf_fx_stats sw;
@@ -117,11 +127,29 @@ const char *fx_func_list(void);
 
 /* ---- helpers (gen/fixed_core.c) ---- */
 double fx_lsb(const fx_gen *G);                 /* output lsb 2^-Eo */
+/* does the error model R |f| + A meet the variant's bound? */
+int fx_within(const fx_gen *G, double R, double A);
 int fx_bitlen(uint64_t v);
 /* "INT64_C(-123)" or "-123" for the kernel's word */
 void fx_lit(char *buf, size_t n, int64_t v, int w64);
 /* the Horner block: "p = C_m; p = mul(p, x, sh) + C_j; ..." on variable x */
-void fx_emit_horner(const fx_gen *G, fx_buf *b, const char *x, const char *indent);
+void fx_emit_horner(fx_gen *G, fx_buf *b, const char *x, const char *indent);
+/* 16-bit lanes: "k[i]" for the constant v (appended to G's table) */
+const char *fx_k16(fx_gen *G, int64_t v, const char *what);
+/* bound on max |P_k(x)| over [0, 1] for the partial Horner sums of the
+   coefficients a[0..m] (a sampled maximum plus a Lipschitz margin) */
+void fx_partial_max(const double *a, int m, double *pmax);
+/* 16-bit lanes: "(int16_t)((expr) * k[i])" with k[i] = 1, which hides
+   expr's range from GCC (see fx_tail16.c.in) */
+const char *fx_opaque16(fx_gen *G, const char *expr);
+/* 16-bit lanes: "return (OT)r" with r in [lo, hi] clamped to the output */
+void fx_emit_return16(const fx_gen *G, fx_buf *b, const char *r, int64_t lo, int64_t hi);
+/* 16-bit lanes: a staged normalization of ux (unsigned, nb significant
+   bits at most) to u with bit 15 set and n = bitlen - 1, for log/sqrt */
+void fx_emit_norm16(fx_buf *b, int nb);
+/* 16-bit lanes: r = round(a 2^-s) (ties up) in 32-bit lanes for the
+   variable shift s = sexpr in [smin, smax] (smin may be negative) */
+void fx_emit_vshift16(fx_buf *b, const char *a, const char *sexpr, int smin, int smax);
 /* description of the formats, for the provenance */
 void fx_formats_text(const fx_gen *G, char *buf, size_t n);
 /* largest value of the output type, as a double */

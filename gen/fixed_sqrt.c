@@ -34,6 +34,8 @@ static void g_sqrt1p(mpfr_t y, const mpfr_t t, const void *ctx)
 #define EQ s[0]
 #define CORR s[1]   /* exact: emit the correction */
 #define GSH s[2]    /* G = 2 Eo - Ei + 2 */
+#define QS15 k[4]   /* 16-bit lanes: round(2^15 / sqrt2) */
+#define DQ16 d[0]   /* 16-bit lanes: relative error of P / sqrt2 */
 
 static int prepare(fx_gen *G, char *err, size_t errlen)
 {
@@ -48,7 +50,15 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
     G->JLO = elo >= 0 ? elo / 2 : -((-elo + 1) / 2);
     G->JHI = ehi >= 0 ? ehi / 2 : -((-ehi + 1) / 2);
     G->J0 = G->JLO < 0 ? -G->JLO : 0;
-    G->EQ = W - 2;
+    if (W == 16) {
+        /* 16-bit lanes: the fast variant only (the exact one's correction
+           to the correctly rounded result needs exact 32-bit squares) */
+        if (G->exact || Ei > 31 || Ei < -16) {
+            snprintf(err, errlen, "16-bit lanes: exact sqrt is corrected in 32-bit words");
+            return -2;
+        }
+    }
+    G->EQ = W == 16 ? 15 : W - 2;
     mpfr_t a;
     mpz_t z;
     mpfr_init2(a, 256);
@@ -63,6 +73,21 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
     double inmax = ldexp((double)imax, -Ei);
     G->fmax = fmin(fx_out_max(G), sqrt(inmax) * (1 + 1e-9));
     G->dred = 0;
+    if (W == 16) {
+        /* P / sqrt2 = round(P QS 2^-15): half P's lsb over P/sqrt2 >= 1/sqrt2, and QS's own error */
+        mpfr_init2(a, 256);
+        mpfr_set_ui(a, 2, MPFR_RNDN);
+        mpfr_sqrt(a, a, MPFR_RNDN);
+        mpfr_ui_div(a, 1, a, MPFR_RNDN);
+        mpfr_mul_2si(a, a, 15, MPFR_RNDN);
+        mpfr_t r;
+        mpfr_init2(r, 256);
+        mpfr_rint(r, a, MPFR_RNDN);
+        G->QS15 = (int64_t)mpfr_get_si(r, MPFR_RNDN);
+        mpfr_sub(r, r, a, MPFR_RNDN);
+        G->DQ16 = fabs(mpfr_get_d(r, MPFR_RNDN)) / mpfr_get_d(a, MPFR_RNDN);
+        mpfr_clears(a, r, (mpfr_ptr)0);
+    }
     snprintf(G->sat_text, sizeof G->sat_text, "sqrt(x) for x < 0 (undefined) gives 0");
     G->bound_note[0] = 0;
     /* the correction needs exact squares in 64 bits */
@@ -72,6 +97,15 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
     if (G->CORR)
         snprintf(G->bound_note, sizeof G->bound_note,
                  "the +-1 correction then makes the result correctly rounded (at most 0.5 LSB)");
+    if (W == 16) {
+        snprintf(G->red_text, sizeof G->red_text,
+                 "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (a staged normalization: constant shifts and "
+                 "selects), t in [0, 1) the 15 bits below the leading one (exact); sqrt(x) = 2^ceil(e/2) P(t) "
+                 "(/ sqrt2 if e is odd: P round(2^15/sqrt2) 2^-15 = P %lld 2^-15 by the rounding multiply-high, "
+                 "MPFR); x <= 0 -> 0",
+                 Ei, (long long)G->QS15);
+        return 0;
+    }
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (leading-zero count), t in [0, 1) exact; "
              "sqrt(x) = 2^floor(e/2) (sqrt2 if e is odd) P(t), sqrt2 = %lld 2^-%d (MPFR)%s; x <= 0 -> 0",
@@ -80,8 +114,23 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
     return 0;
 }
 
+static void budget16(fx_gen *G)
+{
+    /* P >= 1: its absolute Horner error is relative; for odd e, P/sqrt2
+       is rounded to P's lsb (relative 2^-(Ep+1) sqrt2) with QS's error */
+    G->A = 0;
+    G->R = G->poly_err + G->arith + ldexp(0.5, -G->Ep) * M_SQRT2 + G->DQ16;
+    int smin = G->Ep - G->out.exp - (int)((G->JHI * 2 + 2) / 2);
+    if (smin < -14)
+        G->R = INFINITY;
+}
+
 static void budget(fx_gen *G)
 {
+    if (G->W == 16) {
+        budget16(G);
+        return;
+    }
     G->A = 0;
     G->R = G->poly_err + G->arith + ldexp(0.5, -(int)G->EQ) / M_SQRT2 + ldexp(0.5, -G->Ep);
     int base = G->Ep - G->out.exp;
@@ -89,8 +138,54 @@ static void budget(fx_gen *G)
         G->R = INFINITY;
 }
 
+/* ceil(e / 2) for e = 2 j0 + ..., as in prepare (floor for negative) */
+static int ceil_half(int e) { return e >= 0 ? (e + 1) / 2 : -((-e) / 2); }
+
+static void emit16(fx_gen *G, fx_buf *b)
+{
+    fx_buf body = {0}, horner = {0};
+    int Ei = G->in.exp, Eo = G->out.exp, Ep = G->Ep;
+    int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in));
+    int64_t omax = pf_type_max_stored(&G->out);
+    int elo = -Ei, ehi = nb - 1 - Ei;
+    int jlo = ceil_half(elo), jhi = ceil_half(ehi);
+    int j0 = elo < 0 ? (-elo + 1) / 2 : 0; /* e + 2 j0 >= 0 */
+    fx_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
+    fx_emit_norm16(&body, nb);
+    fx_put(&body, "\n");
+    fx_printf(&body, "    uint16_t eb = (uint16_t)(n + %d); /* e + 2 j0 >= 0, e = n - %d, j0 = %d */\n", 2 * j0 - Ei, Ei, j0);
+    fx_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", fx_opaque16(G, "t"));
+    fx_put(&body, "    /* P(t) ~ sqrt(1 + t): Horner in 16-bit words, one rounding per step */\n");
+    fx_emit_horner(G, &horner, "tq", "    ");
+    fx_put(&body, horner.s);
+    fx_printf(&body, "    int16_t pq = pf_fx_mulhrs(p, %s); /* P / sqrt2 (computed for every element: branch-free) */\n",
+              fx_k16(G, G->QS15, "round(2^15 / sqrt2)"));
+    fx_put(&body, "    int16_t y = (eb & 1) ? pq : p; /* P, or P / sqrt2 for odd e: sqrt(x) = 2^ceil(e/2) y */\n");
+    int smin = Ep - Eo - jhi, smax = Ep - Eo - jlo;
+    char sexpr[64];
+    snprintf(sexpr, sizeof sexpr, "%d - (int32_t)((eb + 1) >> 1)", Ep - Eo + j0);
+    fx_printf(&body, "    /* y 2^ceil(e/2) rounded once to the output, s = %d - ceil(e/2) in [%d, %d] */\n", Ep - Eo, smin,
+              smax);
+    fx_emit_vshift16(&body, "(uint16_t)y", sexpr, smin, smax);
+    snprintf(G->wide_text, sizeof G->wide_text,
+             "the scaling by 2^ceil(e/2) is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit "
+             "per-element shift; the error model does not need them)");
+    fx_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
+              (unsigned long long)omax);
+    fx_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x > 0)); /* x <= 0 gives 0, through a mask */\n");
+    fx_printf(&body, "    return (%s)(r16 & m);", G->ot);
+    const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};
+    fx_subst(b, fx_template("fx_sqrt16.c"), kv);
+    free(body.s);
+    free(horner.s);
+}
+
 static void emit(fx_gen *G, fx_buf *b)
 {
+    if (G->W == 16) {
+        emit16(G, b);
+        return;
+    }
     fx_buf norm = {0}, horner = {0}, out = {0};
     int W = G->W, Ei = G->in.exp;
     int64_t omax = pf_type_max_stored(&G->out);

@@ -73,6 +73,41 @@ static double two_over_pi_err31(void)
 
 #define K_C64 k[0]
 #define K_SH s[0]
+#define K_A16 k[1]  /* 16-bit lanes: w = x A + mulhrs(x, B) */
+#define K_B16 k[2]
+
+/* 16-bit lanes: w = round(x 2^(15-Ei) / pi), quarter turns in 2^-14 units,
+ * modulo 4 (a uint16_t).  T = round(2^(30-Ei) / pi) from MPFR is split as
+ * A 2^15 + B with |B| <= 2^14: w = x A mod 2^16 (exact, pmullw) +
+ * round(x B 2^-15) (pmulhrsw), so |error of w| <= 1/2 + |x| |T - 2^(30-Ei)/pi| 2^-15.
+ * Returns that bound, in units of w. */
+static double phase16(int Ei, double Xmax, int64_t *A, int64_t *B)
+{
+    mpfr_t a, c;
+    mpz_t z, q;
+    mpfr_inits2(1024, a, c, (mpfr_ptr)0);
+    mpz_inits(z, q, (mpz_ptr)0);
+    mpfr_const_pi(a, MPFR_RNDN);
+    mpfr_ui_div(a, 1, a, MPFR_RNDN);
+    mpfr_mul_2si(a, a, 30 - Ei, MPFR_RNDN); /* 2^(30-Ei) / pi */
+    mpfr_get_z(z, a, MPFR_RNDN);            /* T */
+    mpfr_set_z(c, z, MPFR_RNDN);
+    mpfr_sub(c, c, a, MPFR_RNDN);
+    double terr = fabs(mpfr_get_d(c, MPFR_RNDN)); /* |T - 2^(30-Ei)/pi| */
+    /* A = round(T / 2^15) mod 2^16, B = T - round(T / 2^15) 2^15 */
+    mpz_set(q, z);
+    mpz_add_ui(q, q, 1u << 14);
+    mpz_fdiv_q_2exp(q, q, 15);
+    mpz_mul_2exp(q, q, 15);
+    mpz_sub(z, z, q);
+    *B = mpz_get_si(z);
+    mpz_fdiv_q_2exp(q, q, 15);
+    mpz_fdiv_r_2exp(q, q, 16);
+    *A = (int64_t)mpz_get_ui(q);
+    mpfr_clears(a, c, (mpfr_ptr)0);
+    mpz_clears(z, q, (mpz_ptr)0);
+    return 0.5 + Xmax * terr * 0x1p-15;
+}
 
 static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
 {
@@ -102,6 +137,25 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
     double du1 = Xmax * 0x1p-63 + (G->W == 32 ? 0x1p-31 : 0);
     G->fmax = 1;
     snprintf(G->sat_text, sizeof G->sat_text, "none needed unless the output cannot hold +-1");
+    if (G->W == 16) {
+        /* 16-bit lanes: x must fit an int16_t */
+        if (pf_type_max_stored(&G->in) > 32767) {
+            snprintf(err, errlen, "16-bit lanes: input above 32767");
+            return -2;
+        }
+        double dw = phase16(Ei, Xmax, &G->K_A16, &G->K_B16);
+        G->kind = 2;
+        G->dred = dw * 0x1p-14;
+        snprintf(G->red_text, sizeof G->red_text,
+                 "on |x| (sin(-x) = -sin(x), cos(-x) = cos(x), exactly); u = |x| 2/pi in quarter turns, 2^-14 "
+                 "units, modulo 4 in a uint16_t: w = |x| %lld + round(|x| %lld 2^-15) + %d 2^14 (2^(30-%d)/pi = %lld 2^15 + %lld, MPFR; the product by %lld taken mod 2^16, "
+                 "the other by the rounding multiply-high); fold to v in [-1, 1] (v = w - 1 or 3 - w, 2^-14 "
+                 "units), +-1 held as +-(1 - 2^-14) (sin is flat there: it moves the result by < 5e-9), doubled "
+                 "to 2^-15 units; error of v <= %.3e",
+                 (long long)G->K_A16, (long long)G->K_B16, is_cos ? 2 : 1, Ei, (long long)G->K_A16,
+                 (long long)G->K_B16, (long long)G->K_A16, G->dred);
+        return 0;
+    }
     if (G->W == 32 && G->in.storage_bits <= 16 && (du0 * M_PI / 2 <= budget || du0 <= du1)) {
         G->kind = 0;
         G->dred = du0;
@@ -132,8 +186,33 @@ static int prep_cos(fx_gen *G, char *err, size_t n) { return prepare(G, err, n, 
 
 static int out_shift(const fx_gen *G) { return (G->W - 2) + G->Ep - G->out.exp; }
 
+/* 16-bit lanes: v (2^-15) times P (2^-Ep) by the rounding multiply-high is
+   at 2^-Ep: the output's lsb, or rounded again to a coarser one; a finer
+   output takes the full 32-bit product */
+static void budget16(fx_gen *G)
+{
+    int Eo = G->out.exp, Ep = G->Ep;
+    G->R = 0;
+    if (Eo > Ep && 15 + Ep - Eo < 2) {
+        G->A = INFINITY;
+        return;
+    }
+    /* s = v^2 rounded (1/2 of 2^-15); Horner; phase; v held below 1 */
+    G->A = G->arith + G->dP * 0x1p-16 + M_PI / 2 * G->dred + 5e-9;
+    if (Eo < Ep)
+        G->A += ldexp(0.5, -Ep); /* the product's rounding before the final one */
+    if (G->errkind == FIT_REL)
+        G->R = G->poly_err;
+    else
+        G->A += G->poly_err;
+}
+
 static void budget(fx_gen *G)
 {
+    if (G->W == 16) {
+        budget16(G);
+        return;
+    }
     G->R = 0;
     if (out_shift(G) < 1 || out_shift(G) > 2 * G->W - 2) {
         G->A = INFINITY;
@@ -149,8 +228,64 @@ static void budget(fx_gen *G)
         G->A += G->poly_err;
 }
 
+static void emit16(fx_gen *G, fx_buf *b, int is_cos)
+{
+    fx_buf body = {0}, horner = {0};
+    int Eo = G->out.exp, Ep = G->Ep;
+    fx_printf(&body, "    /* phase w = (u + %d) mod 4, 2^-14 units */\n", is_cos ? 2 : 1);
+    /* on |x|, so that sin is exactly odd and cos exactly even (the
+       rounding multiply-high rounds ties up, which is not symmetric) */
+    int full = G->in.storage_bits == 16 && G->in.is_signed; /* x can be -32768 */
+    const char *ka = fx_k16(G, G->K_A16 > 32767 ? G->K_A16 - 65536 : G->K_A16,
+                            "A (as uint16_t): |x| 2^(15-Ei)/pi = |x| (A + B 2^-15)");
+    const char *kb = fx_k16(G, G->K_B16, "B");
+    const char *ko = fx_k16(G, 1, "1 (see the array form)");
+    fx_printf(&body, "    uint16_t ax = (uint16_t)(x < 0 ? -(int32_t)x : x); /* |x| */\n");
+    fx_printf(&body, "    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)%s + (uint16_t)pf_fx_mulhrs((int16_t)(ax * %s), %s) + %s);\n",
+              ka, ko, kb, is_cos ? "0x8000u" : "0x4000u");
+    if (full) /* |x| = 32768 went through the multiply-high as -32768: it gave -B for B */
+        fx_printf(&body, "    w = (uint16_t)(w + ((uint16_t)(0u - (uint16_t)(ax == 32768u)) & (uint16_t)(2 * %s)));\n", kb);
+    fx_put(&body, "    /* fold: v = w - 1 on [0, 2), 3 - w on [2, 4), in [-1, 1] (2^-14), then 2^-15 units */\n"
+                  "    int16_t v14 = (int16_t)(w < 0x8000u ? (int32_t)w - 0x4000 : 0xc000 - (int32_t)w);\n"
+                  "    int16_t vc = (int16_t)(v14 > 16383 ? 16383 : v14 < -16383 ? -16383 : v14); /* +-1 held below */\n");
+    fx_printf(&body, "    int16_t v = (int16_t)(vc * %s); /* 2^-15 units */\n", fx_k16(G, 2, "2 (see the array form)"));
+    fx_put(&body, "    int16_t s = pf_fx_mulhrs(v, v); /* v^2 in [0, 1), 2^-15 units */\n");
+    fx_put(&body, "    /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner in 16-bit words, one rounding per step */\n");
+    fx_emit_horner(G, &horner, "s", "    ");
+    fx_put(&body, horner.s);
+    if (Eo == Ep) {
+        fx_put(&body, "    int16_t r = pf_fx_mulhrs(v, p); /* v P, rounded once to the output's lsb */\n");
+    } else if (Eo < Ep) {
+        fx_printf(&body, "    int16_t r = pf_fx_rsh16(pf_fx_mulhrs(v, p), %d); /* v P at 2^-%d, then the output's lsb */\n",
+                  Ep - Eo, Ep);
+    } else {
+        fx_printf(&body, "    int32_t r = pf_fx_rsh32((int32_t)v * p, %d); /* v P: full 32-bit product, rounded once */\n",
+                  15 + Ep - Eo);
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 "the final product v P is a full 16x16 -> 32-bit product, rounded once: the output's lsb 2^-%d is "
+                 "finer than P's 2^-%d", Eo, Ep);
+    }
+    if (!is_cos) {
+        if (Eo > Ep)
+            fx_put(&body, "    r = x < 0 ? -r : r; /* sin(-x) = -sin(x) */\n");
+        else
+            fx_put(&body, "    int16_t sg = (int16_t)-(x < 0); /* sin(-x) = -sin(x), through a mask */\n"
+                          "    r = (int16_t)((r ^ sg) - sg);\n");
+    }
+    fx_emit_return16(G, &body, "r", Eo > Ep ? INT32_MIN : -32768, Eo > Ep ? INT32_MAX : 32767);
+    const char *kv[] = {"FUNC", is_cos ? "cos" : "sin", "PHASE", is_cos ? "2" : "1", "NAME", G->name, "IT", G->it,
+                        "OT", G->ot, "BODY", body.s, NULL};
+    fx_subst(b, fx_template("fx_sincos16.c"), kv);
+    free(body.s);
+    free(horner.s);
+}
+
 static void emit(fx_gen *G, fx_buf *b, int is_cos)
 {
+    if (G->W == 16) {
+        emit16(G, b, is_cos);
+        return;
+    }
     fx_buf phase = {0}, fold = {0}, sq = {0}, horner = {0}, out = {0};
     int W = G->W;
     if (G->kind == 0) {

@@ -85,6 +85,15 @@ sweep-fixed: $(BUILD)/pfsweep $(BUILD)/libpfmath.so
 # ns/element of the fixed-point set beside the float exact/fast variants
 # (not a test): $(BUILD)/bench_fixed
 PROGS += $(BUILD)/bench_fixed
+# -O3 -fno-math-errno: the sqrtf peer's loop vectorizes (issue 14's peer)
 $(BUILD)/bench_fixed: tests/bench_fixed.c $(BUILD)/libpfmath.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lm
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -O3 -fno-math-errno -MMD -MP $< -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lm
+
+# make bench: the fixed-point table above (issue 14's ratios in its last two
+# columns) in $(BUILD)/bench-fixed.md, after the other benches (two timing
+# at once on two cores would disturb each other)
+.PHONY: bench-fixed
+bench: bench-fixed
+bench-fixed: $(BUILD)/bench_fixed | bench-float bench-noise
+	$(BUILD)/bench_fixed 40 | tee $(BUILD)/bench-fixed.md

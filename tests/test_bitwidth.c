@@ -528,6 +528,95 @@ static void test_horner(void **state)
     assert_true(nsat < nt); /* a corner, not the rule */
 }
 
+/* ---- Horner in 16-bit words (pf_bw_horner_word) ----------------------- */
+
+static int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+/* round(a b / 2^15), ties up: what pmulhrsw computes */
+static int64_t mulhrs(int64_t a, int64_t b) { return floor_div(a * b + 16384, 32768); }
+
+/* Random polynomials on [0, 1] with pmax[k] = sum_{j >= k} |a_j| (a bound
+ * for x in [0, 1] that owes nothing to the code under test).  Coefficients
+ * rounded to their steps' lsbs, the kernel evaluated exactly as the
+ * generator emits it, p = mulhrs(p, x_d) + c_k with x_d = mulhrs(x, 2^(15-d)):
+ * every value stays within +-32767 (no wrap, never -32768) and the result is
+ * within the analysis's err of the exact polynomial with the rounded
+ * coefficients, for all 32768 x of some polynomials and random x of the
+ * rest.  The formats must be non-increasing, with d_k the drop. */
+static void test_horner_word(void **state)
+{
+    (void)state;
+    int nt = quick ? 100 : 600, bad = 0, tight = 0;
+    for (int i = 0; i < nt; i++) {
+        int n = rnd_int(0, 7);
+        double a[8], pm[8];
+        for (int k = 0; k <= n; k++) {
+            double mag = ldexp(1.0, -rnd_int(0, 2 * k + 1));
+            a[k] = mag * ((double)(rnd() >> 11) * 0x1p-53 * 4 - 2);
+        }
+        for (int k = n; k >= 0; k--)
+            pm[k] = fabs(a[k]) + (k < n ? pm[k + 1] : 0);
+        pf_bw_wstep st[8];
+        double err;
+        int emax = rnd_int(10, 15);
+        assert_int_equal(pf_bw_horner_word(pm, n, 16, emax, st, &err), 0);
+        int64_t c[8];
+        for (int k = 0; k <= n; k++) {
+            assert_true(st[k].exp <= emax);
+            if (k < n) {
+                assert_true(st[k].exp <= st[k + 1].exp);
+                assert_int_equal(st[k].xdrop, st[k + 1].exp - st[k].exp);
+                assert_int_equal(st[k].kind, PF_BW_MULHRS);
+            }
+            c[k] = llround(ldexp(a[k], st[k].exp));
+            assert_true(c[k] >= -32767 && c[k] <= 32767);
+        }
+        int all = i % 20 == 0, ntrial = all ? 32768 : 200;
+        double worst = 0;
+        mpq_t q, xv, cv, d;
+        mpq_init(q), mpq_init(xv), mpq_init(cv), mpq_init(d);
+        for (int t = 0; t < ntrial; t++) {
+            int64_t x = all ? t : rnd_in(0, 32767), p = c[n];
+            for (int k = n - 1; k >= 0; k--) {
+                int64_t xd = st[k].xdrop ? mulhrs(x, (int64_t)1 << (15 - st[k].xdrop)) : x;
+                p = mulhrs(p, xd) + c[k];
+                if (p < -32767 || p > 32767) {
+                    if (bad++ < 5)
+                        print_error("word %d: p_%d = %lld leaves the word at x = %lld\n", i, k, (long long)p, (long long)x);
+                    p = 0;
+                }
+            }
+            /* exact p(x) with the rounded coefficients */
+            q_of(xv, x, 15);
+            q_of(q, c[n], st[n].exp);
+            for (int k = n - 1; k >= 0; k--) {
+                mpq_mul(q, q, xv);
+                q_of(cv, c[k], st[k].exp);
+                mpq_add(q, q, cv);
+            }
+            q_of(d, p, st[0].exp);
+            mpq_sub(d, d, q);
+            double e = fabs(mpq_get_d(d));
+            worst = e > worst ? e : worst;
+            if (e > err * (1 + 1e-12) && bad++ < 5)
+                print_error("word %d (n=%d): error %g above the bound %g at x = %lld\n", i, n, e, err, (long long)x);
+        }
+        tight += n > 1 && worst > err / 4;
+        mpq_clear(q), mpq_clear(xv), mpq_clear(cv), mpq_clear(d);
+    }
+    print_message("horner_word: %d of %d polynomials reach a quarter of their bound\n", tight, nt);
+    assert_int_equal(bad, 0);
+    assert_true(tight > 0); /* the bound is not vacuous */
+    /* edges: n < 0, a bad word size */
+    double pm[1] = {1};
+    pf_bw_wstep st[1];
+    double e;
+    assert_int_equal(pf_bw_horner_word(pm, -1, 16, 15, st, &e), -1);
+    assert_int_equal(pf_bw_horner_word(pm, 0, 4, 15, st, &e), -1);
+    /* a constant 1 in 16 bits: lsb 2^-14 (2^15 would overflow) */
+    assert_int_equal(pf_bw_horner_word(pm, 0, 16, 15, st, &e), 0);
+    assert_int_equal(st[0].exp, 14);
+}
+
 int main(void)
 {
     quick = getenv("PF_QUICK") != NULL;
@@ -537,6 +626,7 @@ int main(void)
         cmocka_unit_test(test_bottom_up_holds_exact),
         cmocka_unit_test(test_top_down),
         cmocka_unit_test(test_horner),
+        cmocka_unit_test(test_horner_word),
     };
     return cmocka_run_group_tests_name("bitwidth", tests, NULL, NULL);
 }

@@ -6,7 +6,12 @@
  * The -O0 table is also swept against MPFR (exact: below 1 LSB; fast: its
  * bound), so every build is within bound.  The one golden hash is derived,
  * not recorded: the exact sqrt's table must hash like the table of
- * pffixed.h's correctly rounded pf_fx_sqrt. */
+ * pffixed.h's correctly rounded pf_fx_sqrt.  "-U__GNUC__" builds the plain-C
+ * fallbacks of the 16-bit lane helpers (other compilers' path).
+ * test_lanes16: the functions emitted in 16-bit lanes really run in them:
+ * built with gcc -O3 -march=x86-64-v3, their array loop holds at least one
+ * vpmulhrsw per pf_fx_mulhrs of the source (GCC finds the rounding
+ * multiply-high only under the conditions fx_tail16.c.in describes). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -41,6 +46,7 @@ static const hfn fns[] = {
 static const char *const flagsets[][2] = {
     {"", "-O0"}, {"", "-O1 -fno-inline"}, {"", "-O2 -ffast-math"}, {"", "-Os -fno-tree-vectorize"},
     {"", "-O3 -march=native"}, {"clang", "-O0"}, {"clang", "-O3 -march=native -ffast-math"},
+    {"", "-O2 -U__GNUC__"},
 };
 #define NFLAGS ((int)(sizeof flagsets / sizeof flagsets[0]))
 
@@ -194,10 +200,87 @@ static void test_flags(void **st)
     assert_int_equal(bad, 0);
 }
 
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *b = malloc((size_t)n + 1);
+    if (b && fread(b, 1, (size_t)n, f) != (size_t)n) {
+        free(b);
+        b = NULL;
+    }
+    if (b)
+        b[n] = 0;
+    fclose(f);
+    return b;
+}
+
+static int count(const char *a, const char *end, const char *needle)
+{
+    int c = 0;
+    size_t l = strlen(needle);
+    for (const char *p = strstr(a, needle); p && p < end; p = strstr(p + l, needle))
+        c++;
+    return c;
+}
+
+static void test_lanes16(void **st)
+{
+    (void)st;
+#if defined(__x86_64__)
+    assert_int_equal(find_root(), 0);
+    char dir[] = "/tmp/pf-fxlanes-XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    int bad = 0, n16 = 0;
+    for (int i = 0; i < NFNS; i++)
+        for (int fast = 0; fast <= 1; fast++) {
+            char src[PATH_MAX + 64], as[PATH_MAX], sym[112], cmd[3 * PATH_MAX];
+            snprintf(src, sizeof src, "%s/libpfmath/generated/pf_fx_%s%s.c", root, fns[i].stem, fast ? "_fast" : "");
+            char *c = slurp(src);
+            assert_non_null(c);
+            const char *body = strstr(c, "_inline(");
+            int calls = body ? count(body, body + strlen(body), "pf_fx_mulhrs(") : 0;
+            if (!strstr(c, "16-bit lanes") || !calls) {
+                free(c);
+                continue;
+            }
+            n16++;
+            snprintf(as, sizeof as, "%s/f.s", dir);
+            snprintf(cmd, sizeof cmd, "%s -std=c17 -O3 -march=x86-64-v3 -S -o '%s' '%s'",
+                     getenv("CC") && *getenv("CC") ? getenv("CC") : "cc", as, src);
+            assert_int_equal(system(cmd), 0);
+            char *a = slurp(as);
+            assert_non_null(a);
+            snprintf(sym, sizeof sym, "pf_%s%s_array:", fns[i].stem, fast ? "_fast" : "");
+            const char *f = strstr(a, sym), *e = f ? strstr(f, ".size") : NULL;
+            int got = f && e ? count(f, e, "vpmulhrsw") : 0;
+            print_message("%-28s %d pf_fx_mulhrs in the source, %d vpmulhrsw in the array loop (x86-64-v3)\n", sym,
+                          calls, got);
+            if (got < calls) {
+                print_message("FAILED: %s does not run in 16-bit lanes\n", sym);
+                bad++;
+            }
+            unlink(as);
+            free(a);
+            free(c);
+        }
+    rmdir(dir);
+    assert_int_equal(bad, 0);
+    assert_true(n16 >= 7); /* every fast 16-bit function at least */
+#else
+    skip();
+#endif
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_flags),
+        cmocka_unit_test(test_lanes16),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

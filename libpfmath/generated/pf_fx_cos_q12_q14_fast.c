@@ -4,26 +4,35 @@
  * Regenerate:  pfmathgen --func cos --type 'fixed<15,12>' --out-type 'fixed<15,14>' --variant fast -o libpfmath/generated/pf_fx_cos_q12_q14_fast.c
  * Input:       int16_t x, value x 2^-12 in [-8, 7.99975586]
  * Output:      int16_t y, value y 2^-14 in [-2, 1.99993896]
- * Reduction:   u = x 2/pi with 2/pi = 1367130551 2^-31, the product rounded to 2^-30; phase w = 
- *              (u + 2) mod 4 (uint32_t, 30 fraction bits); fold to v in [-1, 1] (v = w - 1 or 3 
- *              - w); error of v <= 1.035e-09
+ * Reduction:   on |x| (sin(-x) = -sin(x), cos(-x) = cos(x), exactly); u = |x| 2/pi in quarter 
+ *              turns, 2^-14 units, modulo 4 in a uint16_t: w = |x| 3 + round(|x| -14861 2^-15) 
+ *              + 2 2^14 (2^(30-12)/pi = 3 2^15 + -14861, MPFR; the product by 3 taken mod 2^16, 
+ *              the other by the rounding multiply-high); fold to v in [-1, 1] (v = w - 1 or 3 - 
+ *              w, 2^-14 units), +-1 held as +-(1 - 2^-14) (sin is flat there: it moves the 
+ *              result by < 5e-9), doubled to 2^-15 units; error of v <= 3.215e-05
  * Domain:      sin(pi/2 t) on t in [0, 1] (odd polynomial t P(t^2))
- * Order:       5 (3 fixed-point coefficients; int32_t words, 64-bit products)
- * Method:      least-squares absolute error (Gauss-Legendre quadrature), coefficients rounded 
+ * Order:       5 (3 fixed-point coefficients; int16_t words: 16-bit lanes)
+ * Lanes:       every step in 16-bit lanes
+ * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
  *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
  * Constraints: none
- * Formats:     x unsigned fixed<31,31>; p2 fixed<26,29>, p1 fixed<30,29>, p0 fixed<30,29>; 
- *              product shifts 31; p0 saturated to its format
- * Polynomial:  max absolute error 1.608e-04 (2^-12.60) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.6340 LSB (polynomial 2.6339, 
- *              arithmetic and reduction 0.0001) = 3.1340 LSB
- * Sweep:       max 3.0318 LSB at x = -25744 (-6.28515625), mean 0.6159 LSB; exhaustive: all 
+ * Formats:     x unsigned fixed<15,15> in int16_t; p2 fixed<15,15>, p1 fixed<15,15>, p0 
+ *              fixed<15,14> (x rounded to 2^-14); steps p = pf_fx_mulhrs(p, x) + c, the 
+ *              rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
+ *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
+ *              Horner rounding error <= 6.542e-05
+ * Polynomial:  max relative error 2.441e-04 (2^-12.00) at t = 1
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.441e-04 |f(x)| (polynomial 
+ *              2.441e-04, arithmetic and reduction 0.000e+00, relative) + 2.0970 LSB 
+ *              (arithmetic and reduction, absolute) = 6.5970 LSB at most (|f| <= 1)
+ * Sweep:       max 4.3034 LSB at x = -25711 (-6.27709961), mean 0.7812 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
  * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              to even; bit-identical under any compiler flags
+ *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
+ *              per rounding); bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -131,47 +140,116 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
     return n + (int)x;
 }
 
-/* cos in fixed point.  u = x 2/pi counts quarter turns; the phase
-   w = (u + 2) mod 4 (32-bit word, 30 fraction bits) is all that
-   matters, since cos(x) = sin(pi/2 (w - 1)).  Fold: v = w - 1 on [0, 2),
-   3 - w on [2, 4) (sin(pi/2 v) = sin(pi/2 (2 - v))), so v is in [-1, 1] and
-   cos(x) = sin(pi/2 v) = v P(v^2). */
-PF_FX_INLINE int16_t pf_cos_q12_q14_fast_inline(int16_t x)
+/* 16-bit lane helpers (gen/templates/fx_common16.h.in), for functions whose
+   input and output are stored in at most 16 bits: the array loop then runs
+   in 16-bit lanes, twice as many as 32-bit ones.  The roundings here are to
+   nearest with ties up (the error bounds need only |error| <= 1/2 lsb).
+   GCC and Clang define >> of a negative int as arithmetic (floor), which
+   the first forms use because GCC recognizes exactly them as pmulhrsw and
+   16-bit shifts; other compilers get the same values from unsigned shifts. */
+
+/* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
+   Never called with a = b = -32768 (whose result, 2^15, does not fit). */
+PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 {
-    uint32_t w = (uint32_t)pf_fx_rne((int64_t)x * 1367130551, 13) + 0x80000000u;
-    int32_t v = w < 0x80000000u ? (int32_t)w - 0x40000000 : 0x40000000 - (int32_t)(w - 0x80000000u);
-    /* s = v^2 in [0, 1): unsigned fixed<31,31>, saturated at its max when v = +-1 */
-    int64_t s0 = pf_fx_rne((int64_t)v * v, 29);
-    int32_t s = (int32_t)(s0 < INT32_MAX ? s0 : INT32_MAX);
-    /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner, one rounding per step, in
-       the formats of the bit-width analysis (see Formats above) */
-    int32_t p = 38887384; /* c5 = 0.0724333971739 */
-    p = (int32_t)pf_fx_mul32(p, s, 31) - 345052246; /* c3 = -0.642709892243 */
-    p = (int32_t)pf_fx_mul32(p, s, 31) + 843122081; /* c1 = 1.57043725438 */
-    p = p > 1073741823 ? 1073741823 : p < -1073741824 ? -1073741824 : p; /* p0 saturated to fixed<30,29> */
-    /* v P(s), rounded once to fixed<15,14> and saturated */
-    int64_t r = pf_fx_rne((int64_t)v * p, 45);
-    return (int16_t)(r > 32767 ? 32767 : r < -32768 ? -32768 : r);
+#if defined(__GNUC__)
+    return (int16_t)(((((int32_t)a * b) >> 14) + 1) >> 1);
+#else
+    uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
+    return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
 }
+
+/* round(z / 2^d), ties up, 1 <= d <= 15: floor(z / 2^d) plus the bit below
+   (no intermediate beyond 16 bits, which would cost 32-bit lanes) */
+PF_FX_INLINE int16_t pf_fx_rsh16(int16_t z, int d)
+{
+#if defined(__GNUC__)
+    return (int16_t)((z >> d) + ((z >> (d - 1)) & 1));
+#else
+    uint32_t u = (uint32_t)((int32_t)z + 32768) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(16-d) */
+    return (int16_t)((int32_t)((u + 1) >> 1) - (32768 >> d));
+#endif
+}
+
+/* round(z / 2^d), ties up, for a 32-bit z (a full 16x16-bit product),
+   1 <= d <= 30 */
+PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
+{
+#if defined(__GNUC__)
+    return ((z >> (d - 1)) + 1) >> 1;
+#else
+    uint32_t u = ((uint32_t)z + 0x80000000u) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(32-d) */
+    return (int32_t)((u + 1) >> 1) - (int32_t)(0x80000000u >> d);
+#endif
+}
+
+/* cos in fixed point, in 16-bit lanes.  u = x 2/pi counts quarter turns;
+   the phase w = (u + 2) mod 4 is a uint16_t with 14 fraction bits, and
+   cos(x) = sin(pi/2 (w - 1)).  Fold: v = w - 1 on [0, 2), 3 - w on
+   [2, 4) (sin(pi/2 v) = sin(pi/2 (2 - v))), so v is in [-1, 1] and
+   cos(x) = sin(pi/2 v) = v P(v^2).  k[] holds the constants. */
+PF_FX_INLINE int16_t pf_cos_q12_q14_fast_inline(int16_t x, const int16_t *k)
+{
+    /* phase w = (u + 2) mod 4, 2^-14 units */
+    uint16_t ax = (uint16_t)(x < 0 ? -(int32_t)x : x); /* |x| */
+    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)k[0] + (uint16_t)pf_fx_mulhrs((int16_t)(ax * k[2]), k[1]) + 0x8000u);
+    w = (uint16_t)(w + ((uint16_t)(0u - (uint16_t)(ax == 32768u)) & (uint16_t)(2 * k[1])));
+    /* fold: v = w - 1 on [0, 2), 3 - w on [2, 4), in [-1, 1] (2^-14), then 2^-15 units */
+    int16_t v14 = (int16_t)(w < 0x8000u ? (int32_t)w - 0x4000 : 0xc000 - (int32_t)w);
+    int16_t vc = (int16_t)(v14 > 16383 ? 16383 : v14 < -16383 ? -16383 : v14); /* +-1 held below */
+    int16_t v = (int16_t)(vc * k[3]); /* 2^-15 units */
+    int16_t s = pf_fx_mulhrs(v, v); /* v^2 in [0, 1), 2^-15 units */
+    /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner in 16-bit words, one rounding per step */
+    int16_t s1 = pf_fx_mulhrs(s, k[4]); /* s rounded to 2^-14 */
+    int16_t p = k[5]; /* c5 = 0.0733032226562 */
+    p = (int16_t)(pf_fx_mulhrs(p, s) + k[6]); /* c3 = -0.643737792969, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, s1) + k[7]); /* c1 = 1.57067871094, 2^-14 units */
+    int16_t r = pf_fx_mulhrs(v, p); /* v P, rounded once to the output's lsb */
+    return (int16_t)r;
+}
+
+/* The constants the body reads (Horner coefficients and multipliers) */
+static const int16_t pf_cos_q12_q14_fast_k[8] = {
+    3,      /* k[0]: A (as uint16_t): |x| 2^(15-Ei)/pi = |x| (A + B 2^-15) */
+    -14861, /* k[1]: B */
+    1,      /* k[2]: 1 (see the array form) */
+    2,      /* k[3]: 2 (see the array form) */
+    16384,  /* k[4]: 2^14: s rounded to 14 fraction bits */
+    2402,   /* k[5]: c5 = 0.0733032226562 */
+    -21094, /* k[6]: c3 = -0.643737792969 */
+    25734,  /* k[7]: c1 = 1.57067871094 */
+};
 
 int16_t pf_cos_q12_q14_fast(int16_t x)
 {
-    return pf_cos_q12_q14_fast_inline(x);
+    return pf_cos_q12_q14_fast_inline(x, pf_cos_q12_q14_fast_k);
 }
 
-/* Array form: the body above is branch-free integer code, so this loop
-   vectorizes.  Built for a baseline without AVX2, it gets one clone per
-   x86-64 level and the widest the CPU has is picked at load time (when the
-   baseline already has AVX2, e.g. -march=native, the loop is simply built
-   for it).  Every clone computes the same bits: integers only. */
+/* Array form in 16-bit lanes.  The constants come through a pointer that an
+   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
+   into shifts and adds before it looks for the rounding multiply-high, and
+   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
+   can bound both operands and prove the product fits; the body therefore
+   feeds pf_fx_mulhrs only loads, constants, its own results and values
+   multiplied by a constant of k[] (a pmullw).  The values are the same, so
+   the scalar and array forms compute the same bits.  Built for a baseline
+   without AVX2, it gets one clone per x86-64 level and the widest the CPU
+   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
+   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
+   clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_cos_q12_q14_fast_array(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
+    const int16_t *k = pf_cos_q12_q14_fast_k;
+#if defined(__GNUC__)
+    __asm__("" : "+r"(k));
+#endif
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_cos_q12_q14_fast_inline(x[i]);
+        y[i] = pf_cos_q12_q14_fast_inline(x[i], k);
 }

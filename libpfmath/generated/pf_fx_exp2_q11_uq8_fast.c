@@ -4,26 +4,33 @@
  * Regenerate:  pfmathgen --func exp2 --type 'fixed<15,11>' --out-type 'ufixed<16,8>' --variant fast -o libpfmath/generated/pf_fx_exp2_q11_uq8_fast.c
  * Input:       int16_t x, value x 2^-11 in [-16, 15.9995117]
  * Output:      uint16_t y, value y 2^-8 in [0, 255.996094]
- * Reduction:   t = x; k = floor(t), f = t - k (exact, the low bits of the stored integer); 
- *              inputs clamped to [-20481, 16383] (stored), saturating from there
+ * Reduction:   t = x; k = floor(t), f = t - k (exact, the low bits of the stored integer, in a 
+ *              uint16_t biased by 11); inputs clamped to [-20481, 16383] (stored), saturating 
+ *              from there
  * Domain:      2^t on t in [0, 1]
- * Order:       3 (4 fixed-point coefficients; int32_t words, 64-bit products)
+ * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
+ * Lanes:       the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 
+ *              16-bit per-element shift; the error model does not need them)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
  *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
  * Constraints: p(0) = 1 (exact powers of 2 at integer t)
- * Formats:     x unsigned fixed<31,31>; p3 fixed<26,29>, p2 fixed<28,29>, p1 fixed<30,29>, p0 
- *              fixed<30,29>; product shifts 31; p0 saturated to its format
- * Polynomial:  max relative error 1.651e-04 (2^-12.56) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 1.651e-04 |f(x)| (polynomial 
- *              1.651e-04, arithmetic and reduction 4.657e-09, relative) = 11.3210 LSB at most 
+ * Formats:     x unsigned fixed<15,15> in int16_t; p3 fixed<15,15>, p2 fixed<15,15>, p1 
+ *              fixed<15,15>, p0 fixed<15,14> (x rounded to 2^-14); steps p = pf_fx_mulhrs(p, x) 
+ *              + c, the rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
+ *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
+ *              Horner rounding error <= 9.154e-05
+ * Polynomial:  max relative error 1.678e-04 (2^-12.54) at t = 1
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.594e-04 |f(x)| (polynomial 
+ *              1.678e-04, arithmetic and reduction 9.154e-05, relative) = 17.4992 LSB at most 
  *              (|f| <= 255.996)
- * Sweep:       max 10.8230 LSB at x = 16383 (7.99951172), mean 0.2651 LSB; exhaustive: all 
+ * Sweep:       max 11.4916 LSB at x = 16381 (7.99853516), mean 0.2688 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  x >= 16384 (stored; 8) overflows: 65535 (the max); results beyond the output 
  *              range give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
  * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              to even; bit-identical under any compiler flags
+ *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
+ *              per rounding); bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -131,52 +138,118 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
     return n + (int)x;
 }
 
-/* exp2 in fixed point.  t = x splits into k = floor(t) and
-   f = t - k in [0, 1); exp2(x) = 2^k 2^f with 2^f = P(f) in [1, 2), and
-   the result is P(f) shifted by k, rounded once.  Inputs at or above
-   16384 (stored) saturate to the output's max; inputs below -20481
-   (stored), where the result is below 1/4 lsb, compute as -20481 (0). */
-PF_FX_INLINE uint16_t pf_exp2_q11_uq8_fast_inline(int16_t x)
+/* 16-bit lane helpers (gen/templates/fx_common16.h.in), for functions whose
+   input and output are stored in at most 16 bits: the array loop then runs
+   in 16-bit lanes, twice as many as 32-bit ones.  The roundings here are to
+   nearest with ties up (the error bounds need only |error| <= 1/2 lsb).
+   GCC and Clang define >> of a negative int as arithmetic (floor), which
+   the first forms use because GCC recognizes exactly them as pmulhrsw and
+   16-bit shifts; other compilers get the same values from unsigned shifts. */
+
+/* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
+   Never called with a = b = -32768 (whose result, 2^15, does not fit). */
+PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 {
-    int64_t xc = x;
-    xc = xc < -20481 ? -20481 : xc;
-    xc = xc > 16383 ? 16383 : xc;
-    uint64_t tb = (uint64_t)(xc + INT64_C(24576)); /* (t + 12) 2^11 */
-    uint64_t kb = tb >> 11; /* k + 12 */
-    uint64_t fr = tb & UINT64_C(0x7ff); /* f 2^11 */
-    int32_t f = (int32_t)(fr << 20); /* f in [0, 1), 2^-31 units */
-    /* P(f) ~ 2^f: Horner, one rounding per step, in the formats of the
-       bit-width analysis (see Formats above) */
-    int32_t p = 40976601; /* c3 = 0.0763248670846 */
-    p = (int32_t)pf_fx_mul32(p, f, 31) + 122572400; /* c2 = 0.22830888629 */
-    p = (int32_t)pf_fx_mul32(p, f, 31) + 373144622; /* c1 = 0.69503602013 */
-    p = (int32_t)pf_fx_mul32(p, f, 31) + 536870912; /* c0 = 1 */
-    p = p > 1073741823 ? 1073741823 : p < -1073741824 ? -1073741824 : p; /* p0 saturated to fixed<30,29> */
-    /* P 2^k, rounded once to unsigned fixed<16,8>, saturated */
-    uint64_t sh = 33 - kb;
-    uint64_t r = pf_fx_rne_u((uint64_t)(p > 0 ? p : 0), sh);
-    r = r < 65535u ? r : 65535u;
-    return (uint16_t)(x >= 16384 ? 65535u : r);
+#if defined(__GNUC__)
+    return (int16_t)(((((int32_t)a * b) >> 14) + 1) >> 1);
+#else
+    uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
+    return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
 }
+
+/* round(z / 2^d), ties up, 1 <= d <= 15: floor(z / 2^d) plus the bit below
+   (no intermediate beyond 16 bits, which would cost 32-bit lanes) */
+PF_FX_INLINE int16_t pf_fx_rsh16(int16_t z, int d)
+{
+#if defined(__GNUC__)
+    return (int16_t)((z >> d) + ((z >> (d - 1)) & 1));
+#else
+    uint32_t u = (uint32_t)((int32_t)z + 32768) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(16-d) */
+    return (int16_t)((int32_t)((u + 1) >> 1) - (32768 >> d));
+#endif
+}
+
+/* round(z / 2^d), ties up, for a 32-bit z (a full 16x16-bit product),
+   1 <= d <= 30 */
+PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
+{
+#if defined(__GNUC__)
+    return ((z >> (d - 1)) + 1) >> 1;
+#else
+    uint32_t u = ((uint32_t)z + 0x80000000u) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(32-d) */
+    return (int32_t)((u + 1) >> 1) - (int32_t)(0x80000000u >> d);
+#endif
+}
+
+/* exp2 in fixed point, in 16-bit lanes.  t = x splits into
+   k = floor(t) and f = t - k in [0, 1); exp2(x) = 2^k 2^f with
+   2^f = P(f) in [1, 2), and the result is P(f) 2^k, rounded once.  Inputs
+   at or above 16384 (stored) saturate to the output's max; inputs below
+   -20481 (stored), where the result is below 1/4 lsb, compute as -20481 (0).
+   k[] holds the constants. */
+PF_FX_INLINE uint16_t pf_exp2_q11_uq8_fast_inline(int16_t x, const int16_t *k)
+{
+    int16_t xc = (int16_t)x;
+    xc = (int16_t)(xc < -20481 ? -20481 : xc);
+    xc = (int16_t)(xc > 16383 ? 16383 : xc);
+    uint16_t tb = (uint16_t)((uint16_t)xc + 22528u); /* (t + 11) 2^11 */
+    uint16_t kb = (uint16_t)(tb >> 11); /* k + 11 */
+    int16_t f = (int16_t)((tb & 0x7ff) * k[0]); /* f in [0, 1), 2^-15 units (a product: see the array form) */
+    /* P(f) ~ 2^f: Horner in 16-bit words, one rounding per step */
+    int16_t f1 = pf_fx_mulhrs(f, k[1]); /* f rounded to 2^-14 */
+    int16_t p = k[2]; /* c3 = 0.0763244628906 */
+    p = (int16_t)(pf_fx_mulhrs(p, f) + k[3]); /* c2 = 0.228302001953, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, f) + k[4]); /* c1 = 0.695037841797, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, f1) + k[5]); /* c0 = 1, 2^-14 units */
+    /* P 2^k rounded once to the output, s = 6 - k in [-1, 17] */
+    uint32_t sv = (uint32_t)(17 - (int32_t)kb + 1);
+    uint32_t h = ((uint32_t)(uint16_t)p << 2) >> sv;
+    uint32_t r = (h >> 1) + (h & 1u);
+    uint16_t r16 = (uint16_t)(r < 65535u ? r : 65535u);
+    uint16_t m = (uint16_t)(0u - (uint16_t)(x >= 16384)); /* all ones from the first overflowing input */
+    return (uint16_t)((r16 & ~m) | (65535u & m));
+}
+
+/* The constants the body reads (Horner coefficients and multipliers) */
+static const int16_t pf_exp2_q11_uq8_fast_k[6] = {
+    16,     /* k[0]: 2^4: f to 2^-15 units */
+    16384,  /* k[1]: 2^14: f rounded to 14 fraction bits */
+    2501,   /* k[2]: c3 = 0.0763244628906 */
+    7481,   /* k[3]: c2 = 0.228302001953 */
+    22775,  /* k[4]: c1 = 0.695037841797 */
+    16384,  /* k[5]: c0 = 1 */
+};
 
 uint16_t pf_exp2_q11_uq8_fast(int16_t x)
 {
-    return pf_exp2_q11_uq8_fast_inline(x);
+    return pf_exp2_q11_uq8_fast_inline(x, pf_exp2_q11_uq8_fast_k);
 }
 
-/* Array form: the body above is branch-free integer code, so this loop
-   vectorizes.  Built for a baseline without AVX2, it gets one clone per
-   x86-64 level and the widest the CPU has is picked at load time (when the
-   baseline already has AVX2, e.g. -march=native, the loop is simply built
-   for it).  Every clone computes the same bits: integers only. */
+/* Array form in 16-bit lanes.  The constants come through a pointer that an
+   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
+   into shifts and adds before it looks for the rounding multiply-high, and
+   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
+   can bound both operands and prove the product fits; the body therefore
+   feeds pf_fx_mulhrs only loads, constants, its own results and values
+   multiplied by a constant of k[] (a pmullw).  The values are the same, so
+   the scalar and array forms compute the same bits.  Built for a baseline
+   without AVX2, it gets one clone per x86-64 level and the widest the CPU
+   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
+   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
+   clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_exp2_q11_uq8_fast_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+    const int16_t *k = pf_exp2_q11_uq8_fast_k;
+#if defined(__GNUC__)
+    __asm__("" : "+r"(k));
+#endif
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_exp2_q11_uq8_fast_inline(x[i]);
+        y[i] = pf_exp2_q11_uq8_fast_inline(x[i], k);
 }

@@ -4,26 +4,32 @@
  * Regenerate:  pfmathgen --func log2 --type 'ufixed<16,8>' --out-type 'fixed<15,11>' --variant fast -o libpfmath/generated/pf_fx_log2_uq8_q11_fast.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
- * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (leading-zero count), t in [0, 
- *              1) the bits below the leading one (exact); log2(x) = e  + P(t) summed in 64 bits 
- *              at 2^-57, rounded once; x <= 0 -> -32768 (most negative)
+ * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
+ *              constant shifts and selects), t in [0, 1) the 15 bits below the leading one 
+ *              (exact); log2(x) = e + P(t) summed in an int16_t at 2^-11, rounded once; x <= 0 
+ *              -> -32768 (most negative)
  * Domain:      log2(1+t) on t in [0, 1]
- * Order:       3 (4 fixed-point coefficients; int32_t words, 64-bit products)
+ * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
+ * Lanes:       every step in 16-bit lanes
  * Method:      least-squares absolute error (Gauss-Legendre quadrature), coefficients rounded 
  *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
  * Constraints: p(0) = 0 (log2 of powers of 2 exact)
- * Formats:     x unsigned fixed<31,31>; p3 fixed<26,28>, p2 fixed<29,28>, p1 fixed<30,28>, p0 
- *              fixed<29,28>; product shifts 31; p0 saturated to its format
- * Polynomial:  max absolute error 1.315e-03 (2^-9.57) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.6938 LSB (polynomial 2.6938, 
- *              arithmetic and reduction 0.0000) = 3.1938 LSB
- * Sweep:       max 3.1803 LSB at x = 16383 (63.9960938), mean 0.9265 LSB; exhaustive: all 65536 
+ * Formats:     x unsigned fixed<15,15> in int16_t; p3 fixed<15,15>, p2 fixed<15,15>, p1 
+ *              fixed<15,14> (x rounded to 2^-14), p0 fixed<15,14>; steps p = pf_fx_mulhrs(p, x) 
+ *              + c, the rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
+ *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
+ *              Horner rounding error <= 9.423e-05
+ * Polynomial:  max absolute error 1.312e-03 (2^-9.57) at t = 1
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.8805 LSB (polynomial 2.6875, 
+ *              arithmetic and reduction 0.1930) = 3.3805 LSB
+ * Sweep:       max 3.1803 LSB at x = 16383 (63.9960938), mean 0.9208 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  log2(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
  * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              to even; bit-identical under any compiler flags
+ *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
+ *              per rounding); bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -131,48 +137,124 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
     return n + (int)x;
 }
 
-/* log2 in fixed point.  x = 2^e (1 + t) with t in [0, 1): e from the
-   leading-zero count of the stored integer, t its remaining bits (exact).
-   log2(x) = e  + P(t), P(t) ~ log2(1 + t), summed exactly and rounded
-   once.  x <= 0 (log of 0 or of a negative number) gives the most negative
-   output, -32768. */
-PF_FX_INLINE int16_t pf_log2_uq8_q11_fast_inline(uint16_t x)
+/* 16-bit lane helpers (gen/templates/fx_common16.h.in), for functions whose
+   input and output are stored in at most 16 bits: the array loop then runs
+   in 16-bit lanes, twice as many as 32-bit ones.  The roundings here are to
+   nearest with ties up (the error bounds need only |error| <= 1/2 lsb).
+   GCC and Clang define >> of a negative int as arithmetic (floor), which
+   the first forms use because GCC recognizes exactly them as pmulhrsw and
+   16-bit shifts; other compilers get the same values from unsigned shifts. */
+
+/* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
+   Never called with a = b = -32768 (whose result, 2^15, does not fit). */
+PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 {
-    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */
-    int n = pf_fx_bitlen(ux) - 1;
-    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */
-    /* P(t) ~ log2(1 + t): Horner, one rounding per step, in the formats of the
-       bit-width analysis (see Formats above) */
-    int32_t p = 44451121; /* c3 = 0.165593329817 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) - 157779162; /* c2 = -0.587773181498 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) + 382116575; /* c1 = 1.42349516973 */
-    p = (int32_t)pf_fx_mul32(p, t, 31); /* c0 = 0 */
-    p = p > 536870911 ? 536870911 : p < -536870912 ? -536870912 : p; /* p0 saturated to fixed<29,28> */
-    /* e  + P(t) at 2^-57, exact; one rounding to the output */
-    int64_t z = (int64_t)(n - 8) * INT64_C(144115188075855872) + (int64_t)p * INT64_C(536870912);
-    int64_t r = pf_fx_rne(z, 46);
-    r = r > 32767 ? 32767 : r < -32768 ? -32768 : r;
-    return (int16_t)(x > 0 ? r : -32768);
+#if defined(__GNUC__)
+    return (int16_t)(((((int32_t)a * b) >> 14) + 1) >> 1);
+#else
+    uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
+    return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
 }
+
+/* round(z / 2^d), ties up, 1 <= d <= 15: floor(z / 2^d) plus the bit below
+   (no intermediate beyond 16 bits, which would cost 32-bit lanes) */
+PF_FX_INLINE int16_t pf_fx_rsh16(int16_t z, int d)
+{
+#if defined(__GNUC__)
+    return (int16_t)((z >> d) + ((z >> (d - 1)) & 1));
+#else
+    uint32_t u = (uint32_t)((int32_t)z + 32768) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(16-d) */
+    return (int16_t)((int32_t)((u + 1) >> 1) - (32768 >> d));
+#endif
+}
+
+/* round(z / 2^d), ties up, for a 32-bit z (a full 16x16-bit product),
+   1 <= d <= 30 */
+PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
+{
+#if defined(__GNUC__)
+    return ((z >> (d - 1)) + 1) >> 1;
+#else
+    uint32_t u = ((uint32_t)z + 0x80000000u) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(32-d) */
+    return (int32_t)((u + 1) >> 1) - (int32_t)(0x80000000u >> d);
+#endif
+}
+
+/* log2 in fixed point, in 16-bit lanes.  x = 2^e (1 + t) with t in
+   [0, 1): e from a staged normalization of the stored integer, t its
+   remaining bits (exact).  log2(x) = e  + P(t), P(t) ~ log2(1 + t),
+   summed in an int16_t and rounded once.  x <= 0 (log of 0 or of a
+   negative number) gives the most negative output, -32768.  k[] holds
+   the constants. */
+PF_FX_INLINE int16_t pf_log2_uq8_q11_fast_inline(uint16_t x, const int16_t *k)
+{
+    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */
+    uint16_t u = (uint16_t)(ux << 0);
+    int16_t n = 15; /* bitlen(ux) - 1 */
+    n = (int16_t)(u < 0x100u ? n - 8 : n);
+    u = (uint16_t)(u < 0x100u ? u << 8 : u);
+    n = (int16_t)(u < 0x1000u ? n - 4 : n);
+    u = (uint16_t)(u < 0x1000u ? u << 4 : u);
+    n = (int16_t)(u < 0x4000u ? n - 2 : n);
+    u = (uint16_t)(u < 0x4000u ? u << 2 : u);
+    n = (int16_t)(u < 0x8000u ? n - 1 : n);
+    u = (uint16_t)(u < 0x8000u ? u << 1 : u);
+    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
+    int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
+    /* P(t) ~ log2(1 + t): Horner in 16-bit words, one rounding per step */
+    int16_t tq1 = pf_fx_mulhrs(tq, k[1]); /* tq rounded to 2^-14 */
+    int16_t p = k[2]; /* c3 = 0.165649414062 */
+    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c2 = -0.587860107422, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, tq1) + k[4]); /* c1 = 1.42352294922, 2^-14 units */
+    p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-14 units */
+    int16_t ea = (int16_t)((n - 8) * k[5]); /* e 2^11 */
+    int16_t z = (int16_t)(ea + pf_fx_rsh16(p, 3)); /* e + P at 2^-11 */
+    int16_t r = z;
+    int16_t rc = (int16_t)r;
+    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */
+    return (int16_t)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)-32768 & m));
+}
+
+/* The constants the body reads (Horner coefficients and multipliers) */
+static const int16_t pf_log2_uq8_q11_fast_k[6] = {
+    1,      /* k[0]: 1 (see the array form) */
+    16384,  /* k[1]: 2^14: tq rounded to 14 fraction bits */
+    5428,   /* k[2]: c3 = 0.165649414062 */
+    -19263, /* k[3]: c2 = -0.587860107422 */
+    23323,  /* k[4]: c1 = 1.42352294922 */
+    2048,   /* k[5]: 2^11: e at 2^-11 */
+};
 
 int16_t pf_log2_uq8_q11_fast(uint16_t x)
 {
-    return pf_log2_uq8_q11_fast_inline(x);
+    return pf_log2_uq8_q11_fast_inline(x, pf_log2_uq8_q11_fast_k);
 }
 
-/* Array form: the body above is branch-free integer code, so this loop
-   vectorizes.  Built for a baseline without AVX2, it gets one clone per
-   x86-64 level and the widest the CPU has is picked at load time (when the
-   baseline already has AVX2, e.g. -march=native, the loop is simply built
-   for it).  Every clone computes the same bits: integers only. */
+/* Array form in 16-bit lanes.  The constants come through a pointer that an
+   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
+   into shifts and adds before it looks for the rounding multiply-high, and
+   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
+   can bound both operands and prove the product fits; the body therefore
+   feeds pf_fx_mulhrs only loads, constants, its own results and values
+   multiplied by a constant of k[] (a pmullw).  The values are the same, so
+   the scalar and array forms compute the same bits.  Built for a baseline
+   without AVX2, it gets one clone per x86-64 level and the widest the CPU
+   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
+   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
+   clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_log2_uq8_q11_fast_array(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
+    const int16_t *k = pf_log2_uq8_q11_fast_k;
+#if defined(__GNUC__)
+    __asm__("" : "+r"(k));
+#endif
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_log2_uq8_q11_fast_inline(x[i]);
+        y[i] = pf_log2_uq8_q11_fast_inline(x[i], k);
 }

@@ -4,27 +4,34 @@
  * Regenerate:  pfmathgen --func sqrt --type 'ufixed<16,8>' --out-type 'ufixed<16,12>' --variant fast -o libpfmath/generated/pf_fx_sqrt_uq8_uq12_fast.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      uint16_t y, value y 2^-12 in [0, 15.9997559]
- * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (leading-zero count), t in [0, 
- *              1) exact; sqrt(x) = 2^floor(e/2) (sqrt2 if e is odd) P(t), sqrt2 = 1518500250 
- *              2^-30 (MPFR); x <= 0 -> 0
+ * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
+ *              constant shifts and selects), t in [0, 1) the 15 bits below the leading one 
+ *              (exact); sqrt(x) = 2^ceil(e/2) P(t) (/ sqrt2 if e is odd: P round(2^15/sqrt2) 
+ *              2^-15 = P 23170 2^-15 by the rounding multiply-high, MPFR); x <= 0 -> 0
  * Domain:      sqrt(1+t) on t in [0, 1]
- * Order:       3 (4 fixed-point coefficients; int32_t words, 64-bit products)
+ * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
+ * Lanes:       the scaling by 2^ceil(e/2) is a per-element shift, done in 32-bit lanes (AVX2 
+ *              has no 16-bit per-element shift; the error model does not need them)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
  *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
  * Constraints: p(0) = 1 (exact at powers of 4)
- * Formats:     x unsigned fixed<31,31>; p3 fixed<24,29>, p2 fixed<27,29>, p1 fixed<29,29>, p0 
- *              fixed<30,29>; product shifts 31; p0 saturated to its format
- * Polynomial:  max relative error 1.411e-04 (2^-12.79) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 1.411e-04 |f(x)| (polynomial 
- *              1.411e-04, arithmetic and reduction 5.917e-09, relative) = 9.7449 LSB at most 
+ * Formats:     x unsigned fixed<15,15> in int16_t; p3 fixed<15,15>, p2 fixed<15,15>, p1 
+ *              fixed<15,15>, p0 fixed<15,14> (x rounded to 2^-14); steps p = pf_fx_mulhrs(p, x) 
+ *              + c, the rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
+ *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
+ *              Horner rounding error <= 7.623e-05
+ * Polynomial:  max relative error 1.521e-04 (2^-12.68) at t = 1
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.920e-04 |f(x)| (polynomial 
+ *              1.521e-04, arithmetic and reduction 1.399e-04, relative) = 19.6374 LSB at most 
  *              (|f| <= 15.9998)
- * Sweep:       max 9.5046 LSB at x = 65487 (255.808594), mean 2.0714 LSB; exhaustive: all 65536 
- *              inputs
+ * Sweep:       max 11.6946 LSB at x = 65217 (254.753906), mean 2.2406 LSB; exhaustive: all 
+ *              65536 inputs
  * Saturation:  sqrt(x) for x < 0 (undefined) gives 0; results beyond the output range give its 
  *              max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
  * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              to even; bit-identical under any compiler flags
+ *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
+ *              per rounding); bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -132,49 +139,128 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
     return n + (int)x;
 }
 
-/* sqrt in fixed point.  x = 2^e (1 + t) with t in [0, 1): e from the
-   leading-zero count of the stored integer, t its remaining bits (exact).
-   sqrt(x) = 2^floor(e/2) (sqrt 2 if e is odd) P(t), P(t) ~ sqrt(1 + t).
-   x <= 0 gives 0 (sqrt of a negative number is defined as 0). */
-PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_fast_inline(uint16_t x)
+/* 16-bit lane helpers (gen/templates/fx_common16.h.in), for functions whose
+   input and output are stored in at most 16 bits: the array loop then runs
+   in 16-bit lanes, twice as many as 32-bit ones.  The roundings here are to
+   nearest with ties up (the error bounds need only |error| <= 1/2 lsb).
+   GCC and Clang define >> of a negative int as arithmetic (floor), which
+   the first forms use because GCC recognizes exactly them as pmulhrsw and
+   16-bit shifts; other compilers get the same values from unsigned shifts. */
+
+/* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
+   Never called with a = b = -32768 (whose result, 2^15, does not fit). */
+PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 {
-    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */
-    int n = pf_fx_bitlen(ux) - 1;
-    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */
-    /* P(t) ~ sqrt(1 + t): Horner, one rounding per step, in the formats of
-       the bit-width analysis (see Formats above) */
-    int32_t p = 13896746; /* c3 = 0.025884706527 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) - 58651379; /* c2 = -0.10924670659 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) + 267240948; /* c1 = 0.497775055468 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) + 536870912; /* c0 = 1 */
-    p = p > 1073741823 ? 1073741823 : p < -1073741824 ? -1073741824 : p; /* p0 saturated to fixed<30,29> */
-    uint64_t eb = (uint64_t)(n + 0); /* e + 2 J0 = n - 8 + 2 J0 >= 0, J0 = 4 */
-    int32_t q = (eb & 1) ? 1518500250 : 1073741824; /* sqrt2 or 1, 2^-30 units */
-    int64_t y = pf_fx_mul32(p, q, 30); /* P q, 2^-29 units */
-    uint64_t sh = 21 - (eb >> 1);
-    uint64_t r = pf_fx_rne_u((uint64_t)y, sh);
-    r = r < 65535u ? r : 65535u;
-    return (uint16_t)(x > 0 ? r : 0);
+#if defined(__GNUC__)
+    return (int16_t)(((((int32_t)a * b) >> 14) + 1) >> 1);
+#else
+    uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
+    return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
 }
+
+/* round(z / 2^d), ties up, 1 <= d <= 15: floor(z / 2^d) plus the bit below
+   (no intermediate beyond 16 bits, which would cost 32-bit lanes) */
+PF_FX_INLINE int16_t pf_fx_rsh16(int16_t z, int d)
+{
+#if defined(__GNUC__)
+    return (int16_t)((z >> d) + ((z >> (d - 1)) & 1));
+#else
+    uint32_t u = (uint32_t)((int32_t)z + 32768) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(16-d) */
+    return (int16_t)((int32_t)((u + 1) >> 1) - (32768 >> d));
+#endif
+}
+
+/* round(z / 2^d), ties up, for a 32-bit z (a full 16x16-bit product),
+   1 <= d <= 30 */
+PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
+{
+#if defined(__GNUC__)
+    return ((z >> (d - 1)) + 1) >> 1;
+#else
+    uint32_t u = ((uint32_t)z + 0x80000000u) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(32-d) */
+    return (int32_t)((u + 1) >> 1) - (int32_t)(0x80000000u >> d);
+#endif
+}
+
+/* sqrt in fixed point, in 16-bit lanes.  x = 2^e (1 + t) with t in [0, 1):
+   e from a staged normalization of the stored integer, t its remaining bits
+   (exact).  sqrt(x) = 2^ceil(e/2) P(t) (divided by sqrt 2 if e is odd),
+   P(t) ~ sqrt(1 + t).  x <= 0 gives 0 (sqrt of a negative number is
+   defined as 0).  k[] holds the constants. */
+PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_fast_inline(uint16_t x, const int16_t *k)
+{
+    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */
+    uint16_t u = (uint16_t)(ux << 0);
+    int16_t n = 15; /* bitlen(ux) - 1 */
+    n = (int16_t)(u < 0x100u ? n - 8 : n);
+    u = (uint16_t)(u < 0x100u ? u << 8 : u);
+    n = (int16_t)(u < 0x1000u ? n - 4 : n);
+    u = (uint16_t)(u < 0x1000u ? u << 4 : u);
+    n = (int16_t)(u < 0x4000u ? n - 2 : n);
+    u = (uint16_t)(u < 0x4000u ? u << 2 : u);
+    n = (int16_t)(u < 0x8000u ? n - 1 : n);
+    u = (uint16_t)(u < 0x8000u ? u << 1 : u);
+    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
+    uint16_t eb = (uint16_t)(n + 0); /* e + 2 j0 >= 0, e = n - 8, j0 = 4 */
+    int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
+    /* P(t) ~ sqrt(1 + t): Horner in 16-bit words, one rounding per step */
+    int16_t tq1 = pf_fx_mulhrs(tq, k[1]); /* tq rounded to 2^-14 */
+    int16_t p = k[2]; /* c3 = 0.0259094238281 */
+    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c2 = -0.109252929688, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[4]); /* c1 = 0.497772216797, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, tq1) + k[5]); /* c0 = 1, 2^-14 units */
+    int16_t pq = pf_fx_mulhrs(p, k[6]); /* P / sqrt2 (computed for every element: branch-free) */
+    int16_t y = (eb & 1) ? pq : p; /* P, or P / sqrt2 for odd e: sqrt(x) = 2^ceil(e/2) y */
+    /* y 2^ceil(e/2) rounded once to the output, s = 2 - ceil(e/2) in [-2, 6] */
+    uint32_t sv = (uint32_t)(6 - (int32_t)((eb + 1) >> 1) + 2);
+    uint32_t h = ((uint32_t)(uint16_t)y << 3) >> sv;
+    uint32_t r = (h >> 1) + (h & 1u);
+    uint16_t r16 = (uint16_t)(r < 65535u ? r : 65535u);
+    uint16_t m = (uint16_t)(0u - (uint16_t)(x > 0)); /* x <= 0 gives 0, through a mask */
+    return (uint16_t)(r16 & m);
+}
+
+/* The constants the body reads (Horner coefficients and multipliers) */
+static const int16_t pf_sqrt_uq8_uq12_fast_k[7] = {
+    1,      /* k[0]: 1 (see the array form) */
+    16384,  /* k[1]: 2^14: tq rounded to 14 fraction bits */
+    849,    /* k[2]: c3 = 0.0259094238281 */
+    -3580,  /* k[3]: c2 = -0.109252929688 */
+    16311,  /* k[4]: c1 = 0.497772216797 */
+    16384,  /* k[5]: c0 = 1 */
+    23170,  /* k[6]: round(2^15 / sqrt2) */
+};
 
 uint16_t pf_sqrt_uq8_uq12_fast(uint16_t x)
 {
-    return pf_sqrt_uq8_uq12_fast_inline(x);
+    return pf_sqrt_uq8_uq12_fast_inline(x, pf_sqrt_uq8_uq12_fast_k);
 }
 
-/* Array form: the body above is branch-free integer code, so this loop
-   vectorizes.  Built for a baseline without AVX2, it gets one clone per
-   x86-64 level and the widest the CPU has is picked at load time (when the
-   baseline already has AVX2, e.g. -march=native, the loop is simply built
-   for it).  Every clone computes the same bits: integers only. */
+/* Array form in 16-bit lanes.  The constants come through a pointer that an
+   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
+   into shifts and adds before it looks for the rounding multiply-high, and
+   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
+   can bound both operands and prove the product fits; the body therefore
+   feeds pf_fx_mulhrs only loads, constants, its own results and values
+   multiplied by a constant of k[] (a pmullw).  The values are the same, so
+   the scalar and array forms compute the same bits.  Built for a baseline
+   without AVX2, it gets one clone per x86-64 level and the widest the CPU
+   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
+   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
+   clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_sqrt_uq8_uq12_fast_array(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+    const int16_t *k = pf_sqrt_uq8_uq12_fast_k;
+#if defined(__GNUC__)
+    __asm__("" : "+r"(k));
+#endif
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_sqrt_uq8_uq12_fast_inline(x[i]);
+        y[i] = pf_sqrt_uq8_uq12_fast_inline(x[i], k);
 }
