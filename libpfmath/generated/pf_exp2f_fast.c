@@ -95,8 +95,9 @@ static const float pf_exp2f_fast_C[5] = {
 
 /* exp2(x) = 2^k 2^r, k = round(x), r = x - k in [-1/2, 1/2], in float lanes
    with fmaf (one rounding each, the same bits on every clone).
-   - k: x + 1.5 * 2^23 rounds x to an integer and leaves it in the low bits
-     of z; r = x - (z - 1.5 * 2^23) is exact.
+   - k: x + S, S = 1.5 * 2^23 + 254, rounds x to an integer k (ties to
+     even, S being even) and leaves k + 254 in the low bits of z;
+     r = x - (z - S) is exact.
    - p(r) by Horner with fmaf; the last step fmaf(., r, c0) is the rounding
      into float (the error model in the provenance counts every step).
      p(0) = c0 = 1, so powers of two are exact.
@@ -109,14 +110,17 @@ static const float pf_exp2f_fast_C[5] = {
      included).  NaN fails both tests and stays NaN through the arithmetic. */
 static inline float pf_exp2f_fast_inline(float x)
 {
-    const float shift = 0x1.8p23f;
+    /* 1.5 * 2^23 + 254: z's bit pattern is 0x4b4000fe + k */
+    const float shift = 0x1.8001fcp23f;
     float z = x + shift;
     float r = x - (z - shift);
     float y = pf_horner_fma(r, pf_exp2f_fast_C, 5);
-    int32_t k = (int32_t)(pf_asuint(z) - pf_asuint(shift));
-    int32_t k1 = k >> 1; /* arithmetic shift (GCC, Clang): floor(k/2) */
-    float s1 = pf_asfloat((uint32_t)(k1 + 127) << 23);
-    float s2 = pf_asfloat((uint32_t)(k - k1 + 127) << 23);
+    /* 2^k = 2^k1 2^k2, k1 = floor(k/2), k2 = k - k1, in the exponent field:
+       (zb >> 1) << 23 is (k1 + 127) << 23 (0x4b4000fe is even and its upper
+       bits shift out), and (zb << 23) is (k + 254) << 23 */
+    uint32_t zb = pf_asuint(z), e1 = (zb >> 1) << 23;
+    float s1 = pf_asfloat(e1);
+    float s2 = pf_asfloat((zb << 23) - e1);
     float res = y * s1 * s2;
     res = x > 160.0f ? (float)INFINITY : res;
     return x < -160.0f ? 0.0f : res;

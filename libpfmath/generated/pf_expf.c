@@ -106,8 +106,8 @@ static const float PF_EXP_LN2LO = -0x1.05c61p-29f;
 
 /* exp(x) = 2^k e^r, k = round(x/ln2), r = x - k ln2 in [-ln2/2, ln2/2], in
    float lanes with fmaf (one rounding each, the same bits on every clone).
-   - k: fmaf(x, 1/ln2, 1.5 * 2^23) rounds x/ln2 once and leaves k in the low
-     bits of z; z - 1.5 * 2^23 is k exactly.
+   - k: fmaf(x, 1/ln2, S), S = 1.5 * 2^23 + 254, rounds x/ln2 once and
+     leaves k + 254 in the low bits of z; z - S is k exactly.
    - r = fmaf(-k, LN2HI, x) is exact: LN2HI is ln2 rounded to float, so the
      result is a multiple of 2^-25 (2^-24 once |x| >= 1) below 1/2 in
      magnitude, which float holds.  fmaf(-k, LN2LO, .) then rounds once: r
@@ -125,16 +125,19 @@ static const float PF_EXP_LN2LO = -0x1.05c61p-29f;
      stays NaN through the arithmetic. */
 static inline float pf_expf_inline(float x)
 {
-    const float shift = 0x1.8p23f;
+    /* 1.5 * 2^23 + 254: z's bit pattern is 0x4b4000fe + k */
+    const float shift = 0x1.8001fcp23f;
     float z = fmaf(x, PF_EXP_INVLN2, shift);
     float kf = z - shift;
     float r = fmaf(-kf, PF_EXP_LN2HI, x);
     r = fmaf(-kf, PF_EXP_LN2LO, r);
     float y = pf_horner_fma(r, pf_expf_C, 7);
-    int32_t k = (int32_t)(pf_asuint(z) - pf_asuint(shift));
-    int32_t k1 = k >> 1; /* arithmetic shift (GCC, Clang): floor(k/2) */
-    float s1 = pf_asfloat((uint32_t)(k1 + 127) << 23);
-    float s2 = pf_asfloat((uint32_t)(k - k1 + 127) << 23);
+    /* 2^k = 2^k1 2^k2, k1 = floor(k/2), k2 = k - k1, in the exponent field:
+       (zb >> 1) << 23 is (k1 + 127) << 23 (0x4b4000fe is even and its upper
+       bits shift out), and (zb << 23) is (k + 254) << 23 */
+    uint32_t zb = pf_asuint(z), e1 = (zb >> 1) << 23;
+    float s1 = pf_asfloat(e1);
+    float s2 = pf_asfloat((zb << 23) - e1);
     float res = y * s1 * s2;
     res = x > 100.0f ? (float)INFINITY : res;
     return x < -110.0f ? 0.0f : res;
