@@ -104,34 +104,43 @@ static const float PF_LOG2_LL PF_UNUSED = 0x1.4ae0cp-26f;
    r = m - 1 is exact (Sterbenz), p(r) = r + r^2 q(r) approximates log(1+r)
    (C[0] = 0, C[1] = 1), and 1/ln2 = LH + LL (LH 1/ln2 rounded to float).
    With compensation (0 > 0, the exact variant): at k = +-1 the sum
-   k + p(r)/ln2 cancels up to half, so it is kept exact where it is large:
-   r LH = a + a_lo exactly (one fmaf gives the product's rounding error),
-   k + a = hi + lo exactly (Dekker's fast two-sum: |k| >= 1 > |a|, or k = 0),
-   and only the small part lo + a_lo + r LL + r^2 q(r) LH is rounded before
-   the last addition, which is the result's own rounding.
+   k + p(r)/ln2 cancels up to half, and at k = 0 just below sqrt(2) the
+   result's ulp is 2^-25 while r^2 q(r)/ln2 is near 0.1, so every rounding of
+   that part would cost 0.1-0.2 ULP.  Hence: r LH = a + a_lo exactly (one
+   fmaf gives a product's rounding error), k + a = hi + lo exactly (Dekker's
+   fast two-sum: |k| >= 1 > |a|, or k = 0), r^2 q = u + u_lo exactly up to
+   r2_lo q (two exact products), and the small terms lo + a_lo + r LL +
+   u_lo LH are summed (each below 2^-16, so their roundings are below 2^-41)
+   into the last fmaf(u, LH, .): r^2 q(r) LH and the rest are rounded once
+   before the last addition, which is the result's own rounding.
    Without (the fast variant): fmaf(p(r), 1/ln2, k), one rounding.
    Powers of two give r = 0 and k exactly. */
 static inline float pf_log2f_fast_inline(float x)
 {
     uint32_t ix = pf_asuint(x);
-    /* subnormals: scale by 2^23 so the exponent field below is meaningful */
+    /* subnormals: scaled by 2^23 so that the exponent field is meaningful,
+       and 23 more taken off k through the offset (a multiple of 2^23, so
+       the low 23 bits, which give m, are the same) */
     int sub = ix < 0x00800000u;
-    uint32_t iy = pf_asuint(sub ? x * 0x1p23f : x);
-    uint32_t t = iy - 0x3f3504f3u; /* bits of 0x1.6a09e6p-1, the low edge of m */
-    int32_t k = (int32_t)t >> 23;  /* arithmetic shift (GCC, Clang) */
-    float m = pf_asfloat(iy - ((uint32_t)k << 23));
+    uint32_t iy = pf_asuint(x * (sub ? 0x1p23f : 1.0f));
+    /* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
+    uint32_t t = iy - (sub ? 0x3f3504f3u + (23u << 23) : 0x3f3504f3u);
+    float kf = (float)((int32_t)t >> 23); /* arithmetic shift (GCC, Clang) */
+    float m = pf_asfloat((t & 0x007fffffu) + 0x3f3504f3u);
     float r = m - 1.0f;
-    float kf = (float)k - (sub ? 23.0f : 0.0f);
     float y;
     if (0 > 0) {
         float q = pf_horner_fma(r, pf_log2f_fast_C + 2, 6 - 2);
-        float r2 = r * r;
+        float r2 = r * r, r2_lo = fmaf(r, r, -r2); /* r^2 = r2 + r2_lo exactly */
+        float u = r2 * q, u_lo = fmaf(r2, q, -u);   /* r2 q = u + u_lo exactly */
+        u_lo = fmaf(r2_lo, q, u_lo);
         float a = r * PF_LOG2_LH;
         float a_lo = fmaf(r, PF_LOG2_LH, -a);
         float hi = kf + a;
         float lo = a - (hi - kf);
-        float s = fmaf(r2 * q, PF_LOG2_LH, fmaf(r, PF_LOG2_LL, a_lo));
-        y = hi + (lo + s);
+        float w = fmaf(r, PF_LOG2_LL, a_lo + lo);
+        w = fmaf(u_lo, PF_LOG2_LH, w);
+        y = hi + fmaf(u, PF_LOG2_LH, w);
     } else {
         y = fmaf(pf_horner_fma(r, pf_log2f_fast_C, 6), PF_LOG2_LH, kf);
     }

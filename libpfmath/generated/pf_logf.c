@@ -125,14 +125,16 @@ static const float PF_LOG_LN2 PF_UNUSED = 0x1.62e43p-1f;
 static inline float pf_logf_inline(float x)
 {
     uint32_t ix = pf_asuint(x);
-    /* subnormals: scale by 2^23 so the exponent field below is meaningful */
+    /* subnormals: scaled by 2^23 so that the exponent field is meaningful,
+       and 23 more taken off k through the offset (a multiple of 2^23, so
+       the low 23 bits, which give m, are the same) */
     int sub = ix < 0x00800000u;
-    uint32_t iy = pf_asuint(sub ? x * 0x1p23f : x);
-    uint32_t t = iy - 0x3f3504f3u; /* bits of 0x1.6a09e6p-1, the low edge of m */
-    int32_t k = (int32_t)t >> 23;  /* arithmetic shift (GCC, Clang) */
-    float m = pf_asfloat(iy - ((uint32_t)k << 23));
+    uint32_t iy = pf_asuint(x * (sub ? 0x1p23f : 1.0f));
+    /* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
+    uint32_t t = iy - (sub ? 0x3f3504f3u + (23u << 23) : 0x3f3504f3u);
+    float kf = (float)((int32_t)t >> 23); /* arithmetic shift (GCC, Clang) */
+    float m = pf_asfloat((t & 0x007fffffu) + 0x3f3504f3u);
     float r = m - 1.0f;
-    float kf = (float)k - (sub ? 23.0f : 0.0f);
     float y;
     if (1 > 0) {
         float q = pf_horner_fma(r, pf_logf_C + 2, 11 - 2);
