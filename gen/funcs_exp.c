@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #define HALF_LN2 (0.5 * M_LN2)
 
@@ -96,10 +97,12 @@ static int model_exp_common(const fit_poly *p, int order, pf_scheme *sc, double 
              "%s; p(r) by Horner in float with fmaf, no compensated step (the model's worst "
              "point is r = %.4f)",
              what, worst_at);
+    /* A bound above 1 ULP is stated, not refused: --order or --target may ask
+       for less than the library's exact variant (whose default order the
+       tests check is within 1 ULP by this model). */
     if (worst > 1.0) {
-        snprintf(sc->text, sizeof sc->text, "error model: %.3f ULP > 1 at r = %.4f (order %d)", worst,
-                 worst_at, order);
-        return -1;
+        size_t len = strlen(sc->text);
+        snprintf(sc->text + len, sizeof sc->text - len, "; above 1 ULP at this order");
     }
     return 0;
 }

@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include <stdlib.h>
 
 /* ---- fit targets, in the fit variable t ---- */
@@ -118,11 +119,13 @@ static int model_log_common(const fit_poly *p, int order, pf_scheme *sc, int is_
                 e = et + (k ? H(fabs(w) + lo) : 0) + abs(k) * 0x1p-41 + H(u) + p->max_err * fabs(g);
                 f = k * M_LN2 + g;
             } else {
-                /* w = fmaf(r, LL, a_lo): |r LL| < 2^-25 |r|, |a_lo| <= half an ulp of r LH */
-                double w = fabs(r) * 0x1p-25 + H(r * L), lo = H(k + r * L);
-                double s = r2 * q * L + w;
-                e = et * L + H(r2 * q) * L + H(w) + H(s) + (k ? H(fabs(s) + lo) : 0) +
-                    fabs(r) * 0x1p-48 + r2 * fabs(q) * 0x1p-25 + p->max_err * fabs(g) * L;
+                /* |a_lo| <= half an ulp of r LH, |lo| half an ulp of hi, |r LL| < 2^-25 |r|;
+                   t + t_lo = r2 q exactly, then r2_lo q is added (|r2_lo| <= 2^-24 r^2) */
+                double alo = H(r * L), lo = k ? H(k + r * L) : 0, t = r2 * q;
+                double tlo = H(t) + 0x1p-24 * r2 * fabs(q), w0 = alo + lo;
+                double w1 = fabs(r) * 0x1p-25 + w0, w2 = w1 + tlo * L, s = t * L + w2;
+                e = r2 * eq * L + H(tlo) + H(w0) + H(w1) + H(w2) + H(s) + fabs(r) * 0x1p-48 +
+                    r2 * fabs(q) * 0x1p-25 + p->max_err * fabs(g) * L;
                 f = k + g * L;
             }
             if (f == 0)
@@ -135,14 +138,18 @@ static int model_log_common(const fit_poly *p, int order, pf_scheme *sc, int is_
     sc->ncomp = 1;
     sc->bound_ulp = worst;
     snprintf(sc->text, sizeof sc->text,
-             "q(r) = (p(r) - r)/r^2 by Horner in float with fmaf; %s exact (two-sum), "
+             "q(r) = (p(r) - r)/r^2 by Horner in float with fmaf; %s, "
              "the small rest summed in float, one rounding into the result (the model's worst "
              "point is k = %d, r = %.4f)",
-             is_log2 ? "k + r LH" : "k LN2HI + r", worst_k, worst_r);
+             is_log2 ? "k + r LH exact (two-sum), r^2 q(r) exact but for r2_lo q (two products)"
+                     : "k LN2HI + r exact (two-sum)",
+             worst_k, worst_r);
+    /* A bound above 1 ULP is stated, not refused: --order or --target may ask
+       for less than the library's exact variant (whose default order the
+       tests check is within 1 ULP by this model). */
     if (worst > 1.0) {
-        snprintf(sc->text, sizeof sc->text, "error model: %.3f ULP > 1 at k = %d, r = %.4f (order %d)",
-                 worst, worst_k, worst_r, order);
-        return -1;
+        size_t len = strlen(sc->text);
+        snprintf(sc->text + len, sizeof sc->text - len, "; above 1 ULP at this order");
     }
     return 0;
 }
@@ -175,14 +182,8 @@ const pf_spec pf_specs_log[] = {
      {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1"),
       {FIT_CON_VALUE, 1, "p(1) = log 2"}, {FIT_CON_DERIV, 1, "p'(1) = 1/2"}},
      0, 0x1p-10, "float", "0x1.62e42fefa39efp-1", 0, NULL, NULL, NULL},
-    /* log2 exact stays in double: in float, the model's bound is above 1 ULP
-       (1.22 at order 11, k = 0, x just below sqrt(2), where the result's ulp
-       is 2^-25 and the r^2 q(r) / ln2 part's roundings each cost 0.1-0.2) */
-    {"log2", "balanced", "exact", "log_balanced", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "double",
-     "1.0", 1.0, "0x1.71547652b82fep+0", NULL, NULL},
-    {"log2", "fma", "exact", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 11, 0, "fma",
+    {"log2", "balanced", "exact", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
      NULL, 1.0, NULL, extra_log2, model_log2},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL},
