@@ -90,11 +90,19 @@ int pfb_ours_open(const char *lib, char *err, size_t errlen)
     const char *probe[] = {"pf_logf", "pf_log2f", "pf_expf", "pf_sinf"};
     for (size_t i = 0; i < sizeof probe / sizeof probe[0] && symtab; i++) {
         void *p = dlsym(lib_h, probe[i]);
-        uintptr_t v = sym_value(probe[i]);
-        if (p && v) {
-            have_clones = (uintptr_t)p == lib_base + v;
-            break;
+        /* the scalar forms are target_clones too (an IFUNC symbol): dlsym
+           then gives the clone the resolver picked, so compare with those */
+        const char *sfx[] = {"", ".arch_x86_64_v4", ".arch_x86_64_v3", ".default"};
+        int found = 0;
+        for (size_t c = 0; c < sizeof sfx / sizeof sfx[0] && p && !have_clones; c++) {
+            char name[64];
+            snprintf(name, sizeof name, "%s%s", probe[i], sfx[c]);
+            uintptr_t v = sym_value(name);
+            found |= v != 0;
+            have_clones = v && (uintptr_t)p == lib_base + v;
         }
+        if (found)
+            break;
     }
     return 0;
 }

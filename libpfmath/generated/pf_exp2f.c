@@ -3,11 +3,13 @@
  * Regenerate:  pfmathgen --func exp2 --variant exact -o libpfmath/generated/pf_exp2f.c
  * Reduction:   x = k + r, k = round(x), r = x - k in [-1/2, 1/2] (exact); exp2(x) = 2^k 2^r
  * Domain:      2^t on t in [-0x1p-1, 0x1p-1]  (-0.5 .. 0.5)
- * Order:       6 (float coefficients, Horner in double)
+ * Order:       6 (float coefficients, Horner in float with fmaf)
+ * Evaluation:  r = x - k exact; p(r) by Horner in float with fmaf, no compensated step (the model's worst point is r = -0.5000)
+ * Error model: at most 0.911 ULP (fit error and every rounding of the scheme)
  * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), coefficients rounded to float by pin-and-refit
  * Constraints: p(0) = 1
  * Max relative error of this polynomial on the domain: 2.992e-09 (2^-28.32) at t = 0x1p-1
- * Sweep:       max 0.541 ULP at x = 0x1.6f604p-1 (0x3f37b020), mean 0.2195 ULP, 98.39% correctly
+ * Sweep:       max 0.783 ULP at x = 0x1.010c4p-1 (0x3f008620), mean 0.2237 ULP, 95.28% correctly
  *              rounded; sampled sweep of 1835632 inputs (every 16th float in [0x1p-2, 0x1.fffffep+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -95,32 +97,37 @@ static const float pf_exp2f_C[7] = {
     0x1.416b5ep-13f,    /* c6 = 0.000153264715 */
 };
 
-/* exp2(x) = 2^k 2^r, k = round(x), r = x - k in [-1/2, 1/2], exact.
-   All in double: 2^k is a double for every k the clamped input gives, so
-   p(r) 2^k is one double and its conversion to float is the only rounding
-   into the float range: results below 2^-126 round once, straight to the
-   subnormal (gradual underflow), 2^-150 and below to +0 and 2^128 and above
-   to +inf.  Integer x gives r = 0, p(0) = 1: powers of two are exact. */
-static inline uint64_t pf_exp2f_asu64(double x) { uint64_t u; memcpy(&u, &x, sizeof u); return u; }
-static inline double pf_exp2f_asf64(uint64_t u) { double x; memcpy(&x, &u, sizeof x); return x; }
-
+/* exp2(x) = 2^k 2^r, k = round(x), r = x - k in [-1/2, 1/2], in float lanes
+   with fmaf (one rounding each, the same bits on every clone).
+   - k: x + S, S = 1.5 * 2^23 + 254, rounds x to an integer k (ties to
+     even, S being even) and leaves k + 254 in the low bits of z;
+     r = x - (z - S) is exact.
+   - p(r) by Horner with fmaf; the last step fmaf(., r, c0) is the rounding
+     into float (the error model in the provenance counts every step).
+     p(0) = c0 = 1, so powers of two are exact.
+   - 2^k is applied as 2^k1 2^k2 (k1 = floor(k/2), both normal for |k| <=
+     252): p 2^k1 is exact and the second product rounds once, giving
+     gradual underflow to subnormals and overflow to +inf.
+   - Past x = 160 the result is +inf and below -160 +0, selected at the
+     end, where every lane has been computed: the arithmetic above stays
+     valid up to there, and whatever it gives beyond is discarded (+-inf
+     included).  NaN fails both tests and stays NaN through the arithmetic. */
 static inline float pf_exp2f_inline(float x)
 {
-    /* every input beyond [-151, 129] gives +0 or +inf: clamping keeps k in
-       range and makes exp2(+-inf) right; NaN (fails both tests) is put back
-       at the end */
-    float xc = x > -151.0f ? x : -151.0f;
-    xc = xc < 129.0f ? xc : 129.0f;
-    double xd = xc;
-    /* adding 1.5 * 2^52 rounds x to an integer k (to nearest even) and leaves
-       it in the low bits of z */
-    const double shift = 0x1.8p52;
-    double z = xd + shift;
-    uint64_t ki = pf_exp2f_asu64(z);
-    double r = xd - (z - shift);
-    double scale = pf_exp2f_asf64((ki + 1023u) << 52);
-    float res = (float)(pf_horner_d(r, pf_exp2f_C, 7) * scale);
-    return x != x ? x + x : res;
+    /* 1.5 * 2^23 + 254: z's bit pattern is 0x4b4000fe + k */
+    const float shift = 0x1.8001fcp23f;
+    float z = x + shift;
+    float r = x - (z - shift);
+    float y = pf_horner_fma(r, pf_exp2f_C, 7);
+    /* 2^k = 2^k1 2^k2, k1 = floor(k/2), k2 = k - k1, in the exponent field:
+       (zb >> 1) << 23 is (k1 + 127) << 23 (0x4b4000fe is even and its upper
+       bits shift out), and (zb << 23) is (k + 254) << 23 */
+    uint32_t zb = pf_asuint(z), e1 = (zb >> 1) << 23;
+    float s1 = pf_asfloat(e1);
+    float s2 = pf_asfloat((zb << 23) - e1);
+    float res = y * s1 * s2;
+    res = x > 160.0f ? (float)INFINITY : res;
+    return x < -160.0f ? 0.0f : res;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

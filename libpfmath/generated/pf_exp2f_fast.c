@@ -3,11 +3,11 @@
  * Regenerate:  pfmathgen --func exp2 --variant fast -o libpfmath/generated/pf_exp2f_fast.c
  * Reduction:   x = k + r, k = round(x), r = x - k in [-1/2, 1/2] (exact); exp2(x) = 2^k 2^r
  * Domain:      2^t on t in [-0x1p-1, 0x1p-1]  (-0.5 .. 0.5)
- * Order:       4 (float coefficients, Horner in float)
+ * Order:       4 (float coefficients, Horner in float with fmaf)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p(0) = 1, p(-1/2) = 2^(-1/2), p'(-1/2) = ln2 2^(-1/2), p(1/2) = 2^(1/2), p'(1/2) = ln2 2^(1/2)
  * Max relative error of this polynomial on the domain: 1.369e-05 (2^-16.16) at t = -0x1.e19c4648721e2p-3
- * Sweep:       max 196.868 ULP at x = 0x1.8ebe8p-1 (0x3f475f40), mean 72.8111 ULP, 15.09% correctly
+ * Sweep:       max 196.744 ULP at x = 0x1.8ef4ep-1 (0x3f477a70), mean 72.8100 ULP, 15.18% correctly
  *              rounded; sampled sweep of 1835632 inputs (every 16th float in [0x1p-2, 0x1.fffffep+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -93,30 +93,37 @@ static const float pf_exp2f_fast_C[5] = {
     0x1.3db2dep-7f,    /* c4 = 0.0096953949 */
 };
 
-/* exp2(x) = 2^k 2^r, k = round(x), r = x - k in [-1/2, 1/2] (exact), all in
-   float.  p matches 2^r in value and slope at r = +-1/2, so at every fold
-   x = n + 1/2 the pieces 2^k p(1/2) and 2^(k+1) p(-1/2) agree with equal
-   slopes; p(0) = 1 makes powers of two exact.
-   2^k, k in [-160, 160], is applied as 2^k1 2^k2 (k1 = floor(k/2), both
-   normal floats): p 2^k1 is exact and the second product rounds once,
-   giving gradual underflow to subnormals and overflow to +inf. */
+/* exp2(x) = 2^k 2^r, k = round(x), r = x - k in [-1/2, 1/2], in float lanes
+   with fmaf (one rounding each, the same bits on every clone).
+   - k: x + S, S = 1.5 * 2^23 + 254, rounds x to an integer k (ties to
+     even, S being even) and leaves k + 254 in the low bits of z;
+     r = x - (z - S) is exact.
+   - p(r) by Horner with fmaf; the last step fmaf(., r, c0) is the rounding
+     into float (the error model in the provenance counts every step).
+     p(0) = c0 = 1, so powers of two are exact.
+   - 2^k is applied as 2^k1 2^k2 (k1 = floor(k/2), both normal for |k| <=
+     252): p 2^k1 is exact and the second product rounds once, giving
+     gradual underflow to subnormals and overflow to +inf.
+   - Past x = 160 the result is +inf and below -160 +0, selected at the
+     end, where every lane has been computed: the arithmetic above stays
+     valid up to there, and whatever it gives beyond is discarded (+-inf
+     included).  NaN fails both tests and stays NaN through the arithmetic. */
 static inline float pf_exp2f_fast_inline(float x)
 {
-    /* inputs beyond [-160, 160] give +0 or +inf, exp2(+-inf) too; NaN
-       (fails both tests) is put back at the end */
-    float xc = x > -160.0f ? x : -160.0f;
-    xc = xc < 160.0f ? xc : 160.0f;
-    /* adding 1.5 * 2^23 rounds x to an integer (to nearest even) and leaves
-       it in the low bits of z */
-    const float shift = 0x1.8p23f;
-    float z = xc + shift;
-    int32_t k = (int32_t)(pf_asuint(z) - pf_asuint(shift));
-    float r = xc - (z - shift);
-    int32_t k1 = k >> 1; /* arithmetic shift (GCC, Clang): floor(k/2) */
-    float s1 = pf_asfloat((uint32_t)(k1 + 127) << 23);
-    float s2 = pf_asfloat((uint32_t)(k - k1 + 127) << 23);
-    float res = pf_horner_f(r, pf_exp2f_fast_C, 5) * s1 * s2;
-    return x != x ? x + x : res;
+    /* 1.5 * 2^23 + 254: z's bit pattern is 0x4b4000fe + k */
+    const float shift = 0x1.8001fcp23f;
+    float z = x + shift;
+    float r = x - (z - shift);
+    float y = pf_horner_fma(r, pf_exp2f_fast_C, 5);
+    /* 2^k = 2^k1 2^k2, k1 = floor(k/2), k2 = k - k1, in the exponent field:
+       (zb >> 1) << 23 is (k1 + 127) << 23 (0x4b4000fe is even and its upper
+       bits shift out), and (zb << 23) is (k + 254) << 23 */
+    uint32_t zb = pf_asuint(z), e1 = (zb >> 1) << 23;
+    float s1 = pf_asfloat(e1);
+    float s2 = pf_asfloat((zb << 23) - e1);
+    float res = y * s1 * s2;
+    res = x > 160.0f ? (float)INFINITY : res;
+    return x < -160.0f ? 0.0f : res;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

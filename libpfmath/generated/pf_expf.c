@@ -3,11 +3,13 @@
  * Regenerate:  pfmathgen --func exp --variant exact -o libpfmath/generated/pf_expf.c
  * Reduction:   x = k ln2 + r, k = round(x/ln2), r in [-ln2/2, ln2/2] (Cody-Waite ln2 = hi + lo); exp(x) = 2^k e^r
  * Domain:      e^t on t in [-0x1.62e42fefa39efp-2, 0x1.62e42fefa39efp-2]  (-0.34657359 .. 0.34657359)
- * Order:       6 (float coefficients, Horner in double)
+ * Order:       6 (float coefficients, Horner in float with fmaf)
+ * Evaluation:  r = fmaf(-k, LN2HI, x) exact, then fmaf(-k, LN2LO, r): one rounding; p(r) by Horner in float with fmaf, no compensated step (the model's worst point is r = -0.3466)
+ * Error model: at most 0.962 ULP (fit error and every rounding of the scheme)
  * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), coefficients rounded to float by pin-and-refit
  * Constraints: p(0) = 1, p'(0) = 1
  * Max relative error of this polynomial on the domain: 3.137e-09 (2^-28.25) at t = 0x1.3581aa1a3ff35p-2
- * Sweep:       max 0.542 ULP at x = 0x1.009bap-1 (0x3f004dd0), mean 0.2197 ULP, 98.25% correctly
+ * Sweep:       max 0.849 ULP at x = 0x1.f411d8p+3 (0x417a08ec), mean 0.2241 ULP, 94.99% correctly
  *              rounded; sampled sweep of 1835632 inputs (every 16th float in [0x1p-2, 0x1.fffffep+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -95,43 +97,50 @@ static const float pf_expf_C[7] = {
     0x1.6a3d0ep-10f,    /* c6 = 0.0013818302 */
 };
 
-/* Reduction constants, computed with MPFR by pfmathgen: 1/ln2 rounded to double,
-   and ln2 = LN2HI + LN2LO with LN2HI of 32 significant bits, so k * LN2HI is
-   exact for |k| < 2^21 (Cody-Waite); LN2LO is the rest rounded to double. */
-static const double PF_EXP_INVLN2 = 0x1.71547652b82fep+0;
-static const double PF_EXP_LN2HI = 0x1.62e42ffp-1;
-static const double PF_EXP_LN2LO = -0x1.718432a1b0e26p-35;
+/* Reduction constants, computed with MPFR by pfmathgen: 1/ln2 rounded to float,
+   and ln2 = LN2HI + LN2LO with LN2HI ln2 rounded to float (fmaf(-k, LN2HI, x)
+   is exact) and LN2LO the rest rounded to float. */
+static const float PF_EXP_INVLN2 = 0x1.715476p+0f;
+static const float PF_EXP_LN2HI = 0x1.62e43p-1f;
+static const float PF_EXP_LN2LO = -0x1.05c61p-29f;
 
-/* exp(x) = 2^k e^r, k = round(x/ln2), r = x - k ln2 in [-ln2/2, ln2/2].
-   All in double: r = (x - k LN2HI) - k LN2LO (Cody-Waite; k LN2HI is exact)
-   is within 2^-50 of the true r relative to exp(x), p(r) adds the fit's
-   error, and 2^k is a double for every k the clamped input gives.  So
-   p(r) 2^k is one double and its conversion to float is the only rounding
-   into the float range: results below 2^-126 round once, straight to the
-   subnormal (gradual underflow), and results past FLT_MAX to +inf. */
-static inline uint64_t pf_expf_asu64(double x) { uint64_t u; memcpy(&u, &x, sizeof u); return u; }
-static inline double pf_expf_asf64(uint64_t u) { double x; memcpy(&x, &u, sizeof x); return x; }
-
+/* exp(x) = 2^k e^r, k = round(x/ln2), r = x - k ln2 in [-ln2/2, ln2/2], in
+   float lanes with fmaf (one rounding each, the same bits on every clone).
+   - k: fmaf(x, 1/ln2, S), S = 1.5 * 2^23 + 254, rounds x/ln2 once and
+     leaves k + 254 in the low bits of z; z - S is k exactly.
+   - r = fmaf(-k, LN2HI, x) is exact: LN2HI is ln2 rounded to float, so the
+     result is a multiple of 2^-25 (2^-24 once |x| >= 1) below 1/2 in
+     magnitude, which float holds.  fmaf(-k, LN2LO, .) then rounds once: r
+     is within half an ulp of x - k ln2 (plus k 2^-49 for ln2's own split).
+   - p(r) by Horner with fmaf; the last step fmaf(., r, c0) is the rounding
+     into float, so this is the result's own rounding (the error model in
+     the provenance counts every step).
+   - 2^k is applied as 2^k1 2^k2 (k1 = floor(k/2), both normal for |k| <=
+     252): p 2^k1 is exact and the second product rounds once, giving
+     gradual underflow to subnormals and overflow to +inf.
+   - Past x = 100 (exp(x) > 2^144) the result is +inf and below -110
+     (exp(x) < 2^-158) +0, selected at the end, where every lane has been
+     computed: the arithmetic above stays valid up to there, and whatever it
+     gives beyond is discarded (+-inf included).  NaN fails both tests and
+     stays NaN through the arithmetic. */
 static inline float pf_expf_inline(float x)
 {
-    /* exp(89) > 2^128 and exp(-105) < 2^-151: every input beyond these gives
-       +inf or +0, so clamping keeps k in [-151, 128] and makes exp(+-inf)
-       come out right.  NaN fails both tests (becomes -105); it is put back
-       at the end. */
-    float xc = x > -105.0f ? x : -105.0f;
-    xc = xc < 89.0f ? xc : 89.0f;
-    double xd = xc;
-    /* adding 1.5 * 2^52 rounds x/ln2 to an integer k (to nearest) and leaves
-       it in the low bits of z; kd is k as a double */
-    const double shift = 0x1.8p52;
-    double z = xd * PF_EXP_INVLN2 + shift;
-    uint64_t ki = pf_expf_asu64(z);
-    double kd = z - shift;
-    double r = (xd - kd * PF_EXP_LN2HI) - kd * PF_EXP_LN2LO;
-    /* 2^k: (k + 1023) << 52, the upper bits of z's pattern shift out */
-    double scale = pf_expf_asf64((ki + 1023u) << 52);
-    float res = (float)(pf_horner_d(r, pf_expf_C, 7) * scale);
-    return x != x ? x + x : res;
+    /* 1.5 * 2^23 + 254: z's bit pattern is 0x4b4000fe + k */
+    const float shift = 0x1.8001fcp23f;
+    float z = fmaf(x, PF_EXP_INVLN2, shift);
+    float kf = z - shift;
+    float r = fmaf(-kf, PF_EXP_LN2HI, x);
+    r = fmaf(-kf, PF_EXP_LN2LO, r);
+    float y = pf_horner_fma(r, pf_expf_C, 7);
+    /* 2^k = 2^k1 2^k2, k1 = floor(k/2), k2 = k - k1, in the exponent field:
+       (zb >> 1) << 23 is (k1 + 127) << 23 (0x4b4000fe is even and its upper
+       bits shift out), and (zb << 23) is (k + 254) << 23 */
+    uint32_t zb = pf_asuint(z), e1 = (zb >> 1) << 23;
+    float s1 = pf_asfloat(e1);
+    float s2 = pf_asfloat((zb << 23) - e1);
+    float res = y * s1 * s2;
+    res = x > 100.0f ? (float)INFINITY : res;
+    return x < -110.0f ? 0.0f : res;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

@@ -3,11 +3,11 @@
  * Regenerate:  pfmathgen --func exp --variant fast -o libpfmath/generated/pf_expf_fast.c
  * Reduction:   x = k ln2 + r, k = round(x/ln2), r in [-ln2/2, ln2/2] (Cody-Waite ln2 = hi + lo); exp(x) = 2^k e^r
  * Domain:      e^t on t in [-0x1.62e42fefa39efp-2, 0x1.62e42fefa39efp-2]  (-0.34657359 .. 0.34657359)
- * Order:       4 (float coefficients, Horner in float)
+ * Order:       4 (float coefficients, Horner in float with fmaf)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p(0) = 1, p(-ln2/2) = e^(-ln2/2), p'(-ln2/2) = e^(-ln2/2), p(ln2/2) = e^(ln2/2), p'(ln2/2) = e^(ln2/2)
  * Max relative error of this polynomial on the domain: 1.370e-05 (2^-16.16) at t = -0x1.4de79e7848fb6p-3
- * Sweep:       max 196.896 ULP at x = 0x1.147f2p-1 (0x3f0a3f90), mean 71.9894 ULP, 14.87% correctly
+ * Sweep:       max 196.778 ULP at x = 0x1.5731e8p+6 (0x42ab98f4), mean 71.9888 ULP, 14.92% correctly
  *              rounded; sampled sweep of 1835632 inputs (every 16th float in [0x1p-2, 0x1.fffffep+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -94,39 +94,49 @@ static const float pf_expf_fast_C[5] = {
 };
 
 /* Reduction constants, computed with MPFR by pfmathgen: 1/ln2 rounded to float,
-   and ln2 = LN2HI + LN2LO with LN2HI of 16 significant bits, so k * LN2HI is
-   exact for |k| < 2^8 (Cody-Waite); LN2LO is the rest rounded to float. */
+   and ln2 = LN2HI + LN2LO with LN2HI ln2 rounded to float (fmaf(-k, LN2HI, x)
+   is exact) and LN2LO the rest rounded to float. */
 static const float PF_EXP_INVLN2 = 0x1.715476p+0f;
-static const float PF_EXP_LN2HI = 0x1.62e4p-1f;
-static const float PF_EXP_LN2LO = 0x1.7f7d1cp-20f;
+static const float PF_EXP_LN2HI = 0x1.62e43p-1f;
+static const float PF_EXP_LN2LO = -0x1.05c61p-29f;
 
-/* exp(x) = 2^k e^r, k = round(x/ln2), r = x - k ln2 in [-ln2/2, ln2/2], all
-   in float.  r = (x - k LN2HI) - k LN2LO: k LN2HI is exact (LN2HI has 16
-   bits, |k| < 2^8) and so is its difference with x, which is close to it.
-   p matches e^r in value and slope at both ends of the interval, so at a
-   fold (k -> k+1) 2^k p(ln2/2) = 2^(k+1) p(-ln2/2) and the same for the
-   slopes: exp stays continuous with a continuous slope.
-   2^k, k in [-159, 144], is applied as 2^k1 2^k2 (k1 = floor(k/2), both
-   normal floats): p 2^k1 is exact and the second product rounds once,
-   giving gradual underflow to subnormals and overflow to +inf. */
+/* exp(x) = 2^k e^r, k = round(x/ln2), r = x - k ln2 in [-ln2/2, ln2/2], in
+   float lanes with fmaf (one rounding each, the same bits on every clone).
+   - k: fmaf(x, 1/ln2, S), S = 1.5 * 2^23 + 254, rounds x/ln2 once and
+     leaves k + 254 in the low bits of z; z - S is k exactly.
+   - r = fmaf(-k, LN2HI, x) is exact: LN2HI is ln2 rounded to float, so the
+     result is a multiple of 2^-25 (2^-24 once |x| >= 1) below 1/2 in
+     magnitude, which float holds.  fmaf(-k, LN2LO, .) then rounds once: r
+     is within half an ulp of x - k ln2 (plus k 2^-49 for ln2's own split).
+   - p(r) by Horner with fmaf; the last step fmaf(., r, c0) is the rounding
+     into float, so this is the result's own rounding (the error model in
+     the provenance counts every step).
+   - 2^k is applied as 2^k1 2^k2 (k1 = floor(k/2), both normal for |k| <=
+     252): p 2^k1 is exact and the second product rounds once, giving
+     gradual underflow to subnormals and overflow to +inf.
+   - Past x = 100 (exp(x) > 2^144) the result is +inf and below -110
+     (exp(x) < 2^-158) +0, selected at the end, where every lane has been
+     computed: the arithmetic above stays valid up to there, and whatever it
+     gives beyond is discarded (+-inf included).  NaN fails both tests and
+     stays NaN through the arithmetic. */
 static inline float pf_expf_fast_inline(float x)
 {
-    /* exp(100) > 2^144 and exp(-110) < 2^-158: inputs beyond give +inf or
-       +0, and exp(+-inf) too; NaN (fails both tests) is put back at the end */
-    float xc = x > -110.0f ? x : -110.0f;
-    xc = xc < 100.0f ? xc : 100.0f;
-    /* adding 1.5 * 2^23 rounds x/ln2 to an integer and leaves it in the low
-       bits of z */
-    const float shift = 0x1.8p23f;
-    float z = xc * PF_EXP_INVLN2 + shift;
-    int32_t k = (int32_t)(pf_asuint(z) - pf_asuint(shift));
+    /* 1.5 * 2^23 + 254: z's bit pattern is 0x4b4000fe + k */
+    const float shift = 0x1.8001fcp23f;
+    float z = fmaf(x, PF_EXP_INVLN2, shift);
     float kf = z - shift;
-    float r = (xc - kf * PF_EXP_LN2HI) - kf * PF_EXP_LN2LO;
-    int32_t k1 = k >> 1; /* arithmetic shift (GCC, Clang): floor(k/2) */
-    float s1 = pf_asfloat((uint32_t)(k1 + 127) << 23);
-    float s2 = pf_asfloat((uint32_t)(k - k1 + 127) << 23);
-    float res = pf_horner_f(r, pf_expf_fast_C, 5) * s1 * s2;
-    return x != x ? x + x : res;
+    float r = fmaf(-kf, PF_EXP_LN2HI, x);
+    r = fmaf(-kf, PF_EXP_LN2LO, r);
+    float y = pf_horner_fma(r, pf_expf_fast_C, 5);
+    /* 2^k = 2^k1 2^k2, k1 = floor(k/2), k2 = k - k1, in the exponent field:
+       (zb >> 1) << 23 is (k1 + 127) << 23 (0x4b4000fe is even and its upper
+       bits shift out), and (zb << 23) is (k + 254) << 23 */
+    uint32_t zb = pf_asuint(z), e1 = (zb >> 1) << 23;
+    float s1 = pf_asfloat(e1);
+    float s2 = pf_asfloat((zb << 23) - e1);
+    float res = y * s1 * s2;
+    res = x > 100.0f ? (float)INFINITY : res;
+    return x < -110.0f ? 0.0f : res;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

@@ -3,11 +3,13 @@
  * Regenerate:  pfmathgen --func log2 --variant exact -o libpfmath/generated/pf_log2f.c
  * Reduction:   x = 2^k m, m in [0x1.6a09e6p-1, 0x1.6a09e6p+0) (balanced about 1), t = m - 1
  * Domain:      log(1+t) on t in [-0x1.2bec34p-2, 0x1.a82798p-2]  (-0.292893231 .. 0.414213538)
- * Order:       10 (float coefficients, Horner in double)
+ * Order:       10 (float coefficients, Horner in float with fmaf)
+ * Evaluation:  q(r) = (p(r) - r)/r^2 by Horner in float with fmaf; k + r LH exact (two-sum), r^2 q(r) exact but for r2_lo q (two products), the small rest summed in float, one rounding into the result (the model's worst point is k = 0, r = 0.4142)
+ * Error model: at most 0.954 ULP (fit error and every rounding of the scheme)
  * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), coefficients rounded to float by pin-and-refit
  * Constraints: p(0) = 0, p'(0) = 1
  * Max relative error of this polynomial on the domain: 4.189e-09 (2^-27.83) at t = 0x1.62548553d18fcp-2
- * Sweep:       max 0.568 ULP at x = 0x1.65af6p+0 (0x3fb2d7b0), mean 0.2257 ULP, 98.18% correctly
+ * Sweep:       max 0.866 ULP at x = 0x1.66282p+0 (0x3fb31410), mean 0.2283 ULP, 96.54% correctly
  *              rounded; sampled sweep of 1311344 inputs (every 16th float in [0x1p-1, 0x1.fffffep+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -99,28 +101,61 @@ static const float pf_log2f_C[11] = {
     -0x1.381384p-4f,    /* c10 = -0.0761904866 */
 };
 
-/* log(x) = k ln2 + log(m), x = 2^k m, m in [sqrt(2)/2, sqrt(2)).
-   The balanced binade keeps r = m - 1 small on both sides of 1: inputs just
-   below 1 then give small r instead of the seed's -ln2 + log(m ~ 2), which
-   cancels catastrophically.  r = m - 1 is exact (Sterbenz: m/2 <= 1 <= 2m). */
+/* Reconstruction constants, computed with MPFR by pfmathgen: 1/ln2 = LH + LL,
+   LH 1/ln2 rounded to float and LL the rest rounded to float. */
+static const float PF_LOG2_LH PF_UNUSED = 0x1.715476p+0f;
+static const float PF_LOG2_LL PF_UNUSED = 0x1.4ae0cp-26f;
+
+/* log2(x) = k + log(m)/ln2, x = 2^k m, m in [sqrt(2)/2, sqrt(2)), in float
+   lanes with fmaf (one rounding each, the same bits on every clone).
+   r = m - 1 is exact (Sterbenz), p(r) = r + r^2 q(r) approximates log(1+r)
+   (C[0] = 0, C[1] = 1), and 1/ln2 = LH + LL (LH 1/ln2 rounded to float).
+   With compensation (1 > 0, the exact variant): at k = +-1 the sum
+   k + p(r)/ln2 cancels up to half, and at k = 0 just below sqrt(2) the
+   result's ulp is 2^-25 while r^2 q(r)/ln2 is near 0.1, so every rounding of
+   that part would cost 0.1-0.2 ULP.  Hence: r LH = a + a_lo exactly (one
+   fmaf gives a product's rounding error), k + a = hi + lo exactly (Dekker's
+   fast two-sum: |k| >= 1 > |a|, or k = 0), r^2 q = u + u_lo exactly up to
+   r2_lo q (two exact products), and the small terms lo + a_lo + r LL +
+   u_lo LH are summed (each below 2^-16, so their roundings are below 2^-41)
+   into the last fmaf(u, LH, .): r^2 q(r) LH and the rest are rounded once
+   before the last addition, which is the result's own rounding.
+   Without (the fast variant): fmaf(p(r), 1/ln2, k), one rounding.
+   Powers of two give r = 0 and k exactly. */
 static inline float pf_log2f_inline(float x)
 {
     uint32_t ix = pf_asuint(x);
-    /* subnormals: scale by 2^23 so the exponent field below is meaningful */
+    /* subnormals: scaled by 2^23 so that the exponent field is meaningful,
+       and 23 more taken off k through the offset (a multiple of 2^23, so
+       the low 23 bits, which give m, are the same) */
     int sub = ix < 0x00800000u;
-    uint32_t iy = pf_asuint(sub ? x * 0x1p23f : x);
-    uint32_t t = iy - 0x3f3504f3u; /* bits of 0x1.6a09e6p-1, the low edge of m */
-    int32_t k = (int32_t)t >> 23;  /* arithmetic shift (GCC, Clang) */
-    float m = pf_asfloat(iy - ((uint32_t)k << 23));
-    double r = (double)m - 1;
-    double kf = (double)(k - (sub ? 23 : 0));
-    double y = kf * (double)1.0 + pf_horner_d(r, pf_log2f_C, 11) * (double)0x1.71547652b82fep+0;
-    float res = (float)y;
+    uint32_t iy = pf_asuint(x * (sub ? 0x1p23f : 1.0f));
+    /* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
+    uint32_t t = iy - (sub ? 0x3f3504f3u + (23u << 23) : 0x3f3504f3u);
+    float kf = (float)((int32_t)t >> 23); /* arithmetic shift (GCC, Clang) */
+    float m = pf_asfloat((t & 0x007fffffu) + 0x3f3504f3u);
+    float r = m - 1.0f;
+    float y;
+    if (1 > 0) {
+        float q = pf_horner_fma(r, pf_log2f_C + 2, 11 - 2);
+        float r2 = r * r, r2_lo = fmaf(r, r, -r2); /* r^2 = r2 + r2_lo exactly */
+        float u = r2 * q, u_lo = fmaf(r2, q, -u);   /* r2 q = u + u_lo exactly */
+        u_lo = fmaf(r2_lo, q, u_lo);
+        float a = r * PF_LOG2_LH;
+        float a_lo = fmaf(r, PF_LOG2_LH, -a);
+        float hi = kf + a;
+        float lo = a - (hi - kf);
+        float w = fmaf(r, PF_LOG2_LL, a_lo + lo);
+        w = fmaf(u_lo, PF_LOG2_LH, w);
+        y = hi + fmaf(u, PF_LOG2_LH, w);
+    } else {
+        y = fmaf(pf_horner_fma(r, pf_log2f_C, 11), PF_LOG2_LH, kf);
+    }
     /* special inputs, chosen last so the arithmetic above stays branch-free:
-       +-0 -> -inf, x < 0 -> NaN, +inf -> +inf, NaN -> NaN */
-    float special = (ix << 1) == 0 ? -(float)INFINITY
-                  : (ix > 0x80000000u && ix <= 0xff800000u) ? (float)NAN : x + x;
-    return ((ix << 1) == 0 || ix >= 0x7f800000u) ? special : res;
+       +inf -> +inf, +-0 -> -inf, x < 0 and NaN -> NaN */
+    y = x == (float)INFINITY ? x : y;
+    y = x >= 0.0f ? y : (float)NAN;
+    return x == 0.0f ? -(float)INFINITY : y;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

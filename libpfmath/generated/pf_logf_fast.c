@@ -3,11 +3,11 @@
  * Regenerate:  pfmathgen --func log --variant fast -o libpfmath/generated/pf_logf_fast.c
  * Reduction:   x = 2^k m, m in [0x1.6a09e6p-1, 0x1.6a09e6p+0) (balanced about 1), t = m - 1
  * Domain:      log(1+t) on t in [-0x1.2bec34p-2, 0x1.a82798p-2]  (-0.292893231 .. 0.414213538)
- * Order:       5 (float coefficients, Horner in float)
+ * Order:       5 (float coefficients, Horner in float with fmaf)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p(0) = 0, p'(0) = 1, p(a) = log(1+a), p'(a) = 1/(1+a), p(b) = log(1+b), p'(b) = 1/(1+b)
  * Max relative error of this polynomial on the domain: 3.400e-04 (2^-11.52) at t = 0x1.8a0a9bade3da2p-3
- * Sweep:       max 4974.762 ULP at x = 0x1.2216p+0 (0x3f910b00), mean 920.8367 ULP, 11.76% correctly
+ * Sweep:       max 4974.762 ULP at x = 0x1.2216p+0 (0x3f910b00), mean 920.8357 ULP, 11.88% correctly
  *              rounded; sampled sweep of 1311344 inputs (every 16th float in [0x1p-1, 0x1.fffffep+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -94,28 +94,56 @@ static const float pf_logf_fast_C[6] = {
     0x1.8e1dd4p-3f,    /* c5 = 0.19439283 */
 };
 
-/* log(x) = k ln2 + log(m), x = 2^k m, m in [sqrt(2)/2, sqrt(2)).
-   The balanced binade keeps r = m - 1 small on both sides of 1: inputs just
-   below 1 then give small r instead of the seed's -ln2 + log(m ~ 2), which
-   cancels catastrophically.  r = m - 1 is exact (Sterbenz: m/2 <= 1 <= 2m). */
+/* Reconstruction constants, computed with MPFR by pfmathgen: ln2 = LN2HI + LN2LO
+   with LN2HI of 16 significant bits, so k * LN2HI is exact for |k| < 2^8, and
+   LN2LO the rest rounded to float; LN2 is ln2 rounded to float. */
+static const float PF_LOG_LN2HI PF_UNUSED = 0x1.62e4p-1f;
+static const float PF_LOG_LN2LO PF_UNUSED = 0x1.7f7d1cp-20f;
+static const float PF_LOG_LN2 PF_UNUSED = 0x1.62e43p-1f;
+
+/* log(x) = k ln2 + log(m), x = 2^k m, m in [sqrt(2)/2, sqrt(2)), in float
+   lanes with fmaf (one rounding each, the same bits on every clone).
+   The balanced binade keeps r = m - 1 small on both sides of 1, and
+   r = m - 1 is exact (Sterbenz: m/2 <= 1 <= 2m).  p(r) = r + r^2 q(r)
+   (the fit has p(0) = 0, p'(0) = 1: C[0] = 0, C[1] = 1).
+   With compensation (0 > 0, the exact variant):  at k = +-1 the sum
+   k ln2 + p(r) cancels up to half (x near sqrt(2)/2 or sqrt(2)), so p's own
+   rounding would cost half an ULP of the result.  So the sum keeps r apart:
+   P = k LN2HI is exact (LN2HI has 16 bits, |k| <= 149), P + r is split
+   exactly into hi + lo (Dekker's fast two-sum: |P| >= |r|, or P = 0), and
+   only the small part r^2 q(r) + (k LN2LO + lo) is rounded before the last
+   addition, which is the result's own rounding (k LN2LO + lo is below
+   2^-16, so its own rounding is below 2^-41).
+   Without (the fast variant): fmaf(k, ln2, p(r)), one rounding. */
 static inline float pf_logf_fast_inline(float x)
 {
     uint32_t ix = pf_asuint(x);
-    /* subnormals: scale by 2^23 so the exponent field below is meaningful */
+    /* subnormals: scaled by 2^23 so that the exponent field is meaningful,
+       and 23 more taken off k through the offset (a multiple of 2^23, so
+       the low 23 bits, which give m, are the same) */
     int sub = ix < 0x00800000u;
-    uint32_t iy = pf_asuint(sub ? x * 0x1p23f : x);
-    uint32_t t = iy - 0x3f3504f3u; /* bits of 0x1.6a09e6p-1, the low edge of m */
-    int32_t k = (int32_t)t >> 23;  /* arithmetic shift (GCC, Clang) */
-    float m = pf_asfloat(iy - ((uint32_t)k << 23));
-    float r = (float)m - 1;
-    float kf = (float)(k - (sub ? 23 : 0));
-    float y = kf * (float)0x1.62e42fefa39efp-1 + pf_horner_f(r, pf_logf_fast_C, 6) * (float)1;
-    float res = (float)y;
+    uint32_t iy = pf_asuint(x * (sub ? 0x1p23f : 1.0f));
+    /* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
+    uint32_t t = iy - (sub ? 0x3f3504f3u + (23u << 23) : 0x3f3504f3u);
+    float kf = (float)((int32_t)t >> 23); /* arithmetic shift (GCC, Clang) */
+    float m = pf_asfloat((t & 0x007fffffu) + 0x3f3504f3u);
+    float r = m - 1.0f;
+    float y;
+    if (0 > 0) {
+        float q = pf_horner_fma(r, pf_logf_fast_C + 2, 6 - 2);
+        float r2 = r * r;
+        float P = kf * PF_LOG_LN2HI;
+        float hi = P + r;
+        float lo = r - (hi - P);
+        y = hi + fmaf(r2, q, fmaf(kf, PF_LOG_LN2LO, lo));
+    } else {
+        y = fmaf(kf, PF_LOG_LN2, pf_horner_fma(r, pf_logf_fast_C, 6));
+    }
     /* special inputs, chosen last so the arithmetic above stays branch-free:
-       +-0 -> -inf, x < 0 -> NaN, +inf -> +inf, NaN -> NaN */
-    float special = (ix << 1) == 0 ? -(float)INFINITY
-                  : (ix > 0x80000000u && ix <= 0xff800000u) ? (float)NAN : x + x;
-    return ((ix << 1) == 0 || ix >= 0x7f800000u) ? special : res;
+       +inf -> +inf, +-0 -> -inf, x < 0 and NaN -> NaN */
+    y = x == (float)INFINITY ? x : y;
+    y = x >= 0.0f ? y : (float)NAN;
+    return x == 0.0f ? -(float)INFINITY : y;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
