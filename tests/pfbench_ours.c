@@ -86,14 +86,19 @@ int pfb_ours_open(const char *lib, char *err, size_t errlen)
     if (dlinfo(lib_h, RTLD_DI_LINKMAP, &lm) == 0 && lm)
         lib_base = (uintptr_t)lm->l_addr;
     map_symtab(lib);
-    /* trust the table only if it places an exported function where dlsym does */
+    /* trust the table only if it places an exported function where dlsym
+       does: the scalar forms are clones too, and dlsym resolves the ifunc to
+       one of them */
     const char *probe[] = {"pf_logf", "pf_log2f", "pf_expf", "pf_sinf"};
-    for (size_t i = 0; i < sizeof probe / sizeof probe[0] && symtab; i++) {
+    const char *sfx[] = {"arch_x86_64_v4", "arch_x86_64_v3", "default"};
+    for (size_t i = 0; i < sizeof probe / sizeof probe[0] && symtab && !have_clones; i++) {
         void *p = dlsym(lib_h, probe[i]);
-        uintptr_t v = sym_value(probe[i]);
-        if (p && v) {
-            have_clones = (uintptr_t)p == lib_base + v;
-            break;
+        for (size_t k = 0; p && k < sizeof sfx / sizeof sfx[0]; k++) {
+            char name[96];
+            snprintf(name, sizeof name, "%s.%s", probe[i], sfx[k]);
+            uintptr_t v = sym_value(name);
+            if (v && (uintptr_t)p == lib_base + v)
+                have_clones = 1;
         }
     }
     return 0;
