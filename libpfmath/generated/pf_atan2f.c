@@ -134,7 +134,9 @@ static inline float pf_atan2f_inline(float y, float x)
     double v = swap ? PF_PIO2_HI - (p - PF_PIO2_LO) : p;
     v = negx ? PF_PI_HI - (v - PF_PI_LO) : v;
     float res = pf_asfloat(pf_asuint((float)v) | (iy & 0x80000000u));
-    return (ax != ax || ay != ay) ? x + y : res;
+    /* a NaN operand is returned quieted (x first): x + y would let the
+       compiler pick either payload, and the clones must agree */
+    return ax != ax ? x + x : ay != ay ? y + y : res;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
