@@ -176,7 +176,7 @@ static int extra_pi_float(char *buf, size_t n)
     {.func = fn, .reduction = "sqrthalf", .variant = "fast", .tmpl = tm, .arity = 1,              \
      .reduction_text = red, .target_text = "asin(t)", .g = g_asin, .a = 0, .b = 0.5,              \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = ASIN_FAST_CON,               \
-     .default_order = 0, .fast_target = 0x1p-10, .real = "float", .extra = extra_pi_float}
+     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float}
 #define ROW_ATAN_EXACT(fn, tm, ar, red)                                                           \
     {.func = fn, .reduction = "recip", .variant = "exact", .tmpl = tm, .arity = ar,               \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 0.5,              \
@@ -187,16 +187,16 @@ static int extra_pi_float(char *buf, size_t n)
     {.func = fn, .reduction = "recip", .variant = "fast", .tmpl = tm, .arity = ar,                \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = ATAN_FAST_CON,               \
-     .default_order = 0, .fast_target = 0x1p-10, .real = "float", .extra = extra_pi_float}
+     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float}
 
 const pf_spec pf_specs_atrig[] = {
     ROW_ASIN_EXACT("asin", "asin_ff", ASIN_RED, pf_model_asin),
-    ROW_ASIN_FAST("asin", "asin_sqrthalf", ASIN_RED),
+    ROW_ASIN_FAST("asin", "asin_fast", ASIN_RED),
     ROW_ASIN_EXACT("acos", "acos_ff", ACOS_RED, pf_model_acos),
-    ROW_ASIN_FAST("acos", "acos_sqrthalf", ACOS_RED),
+    ROW_ASIN_FAST("acos", "acos_fast", ACOS_RED),
     ROW_ATAN_EXACT("atan", "atan_ff", 1, ATAN_RED),
-    ROW_ATAN_FAST("atan", "atan_recip", 1, ATAN_RED_FAST),
+    ROW_ATAN_FAST("atan", "atan_fast", 1, ATAN_RED_FAST),
     ROW_ATAN_EXACT("atan2", "atan2_ff", 2, ATAN2_RED),
-    ROW_ATAN_FAST("atan2", "atan2_recip", 2, ATAN2_RED_FAST),
+    ROW_ATAN_FAST("atan2", "atan2_fast", 2, ATAN2_RED_FAST),
     {0},
 };
