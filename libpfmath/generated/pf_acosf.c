@@ -125,13 +125,12 @@ static const float pf_acosf_C[7] = {
    leaves 1.8e-3; one coupled step on s = W y, h = y/2 (r = 1/2 - s h,
    s += s r, h += h r) squares it to 5e-6; the residual W - s^2 (one fmaf,
    rounded at 2^-40 of it) times h gives lo with s + lo within 2^-35 of
-   sqrt(W).  W = 0 gives s = lo = 0 (the estimate is taken at 2^-60 so that
-   y stays finite). */
+   sqrt(W).  W = 0 gives s = lo = 0 (y = 1.3e19, y^2 still finite); W < 0
+   (|x| > 1) gives garbage, replaced by NaN. */
 static inline float pf_acosf_sqrt(float W, float *lo)
 {
-    float wc = W > 0x1p-60f ? W : 0x1p-60f;
-    float y = pf_asfloat(0x5f3759dfu - (pf_asuint(wc) >> 1));
-    y = y * fmaf(-0.5f * wc, y * y, 1.5f);
+    float y = pf_asfloat(0x5f3759dfu - (pf_asuint(W) >> 1));
+    y = y * fmaf(-0.5f * W, y * y, 1.5f);
     float s = W * y, h = 0.5f * y;
     float r = fmaf(-s, h, 0.5f);
     s = fmaf(s, r, s);
@@ -154,8 +153,7 @@ static inline float pf_acosf_inline(float x)
     float a = pf_asfloat(ix & 0x7fffffffu);
     uint32_t big = 0u - (uint32_t)(a > 0.5f);   /* all ones for |x| > 1/2 */
     uint32_t pos = 0u - (uint32_t)(x > 0.5f);   /* all ones for x > 1/2 */
-    /* a > 1 (NaN result) is clamped so the square root sees W in [0, 2] */
-    float W = fmaf(-2.0f, a > 1 ? 1.0f : a, 2.0f);
+    float W = fmaf(-2.0f, a, 2.0f);   /* exact for a in [1/2, 1] */
     float lo, s = pf_acosf_sqrt(W, &lo);
     /* every select comes before q: a test after it makes GCC duplicate q
        into both paths (jump threading) */
