@@ -1,17 +1,24 @@
 /* Function table rows for the atrig family: asin, acos, atan, atan2 (see
  * gen/funcs.h).
  *
- * Two polynomials serve the four functions:
- *   asin(t) on [0, 1/2], odd: asin and acos.  Beyond |x| = 1/2 both use
+ * Polynomials, all odd, p(t) = t + t z q(z) with z = t^2 and c1 = 1:
+ *   asin(t) on [0, 1/2]: asin and acos, both variants.  Beyond |x| = 1/2
  *     asin(|x|) = pi/2 - 2 asin(s), s = sqrt((1 - |x|)/2) in [0, 1/2]
  *     acos(x) = 2 asin(s) (x > 1/2), pi - 2 asin(sqrt((1 + x)/2)) (x < -1/2),
  *   so one polynomial on [0, 1/2] is evaluated once, at a selected argument.
  *   Over that domain the Taylor ratio is t^2 <= 1/4: two bits per term.
- *   atan(t) on [0, 1], odd: atan and atan2.  Beyond 1, atan(x) = pi/2 -
- *     atan(1/x).  atan's singularities at +-i limit the best polynomial on
- *     [-1, 1] to a factor (1 + sqrt 2)^2 ~ 5.8 (2.5 bits) per odd term; order
- *     21 (11 terms) reaches 2^-29, well inside order 30, so no second identity
- *     (atan(x) = pi/4 + atan((x-1)/(x+1))) is needed.
+ *   atan(t) on [0, 1/2] (exact): atan and atan2 reduce by atan a = pi/4 +
+ *     atan((a - 1)/(a + 1)) on (1/2, 2] and pi/2 - atan(1/a) beyond, so
+ *     |q| <= 1/2; atan's singularities at +-i then give a factor
+ *     (2 + sqrt 5)^2 ~ 18 (4.2 bits) per odd term, and order 13 reaches
+ *     2^-31.7.  The reduced argument is a quotient, carried as qh + ql.
+ *   atan(t) on [0, 1] (fast): one reciprocal fold, atan(x) = pi/2 - atan(1/x).
+ * The exact variants evaluate in float lanes with fmaf (gen/templates/
+ * {asin,acos,atan,atan2}_ff.c.in): the correction t z q(z) is at most 5.4%
+ * of the result, so its roundings weigh 1/20 of an ULP, and everything
+ * else (the fold's constant, the square root, the quotient) is kept exact
+ * as hi + lo floats up to one final rounding.  gen/funcs_atrig_model.c
+ * bounds each scheme (the provenance's "Error model:" line).
  * The fast rows match value and slope at both ends of the reduced domain:
  * at t = 0 the slope 1 (c1 = 1), at the outer end the value and slope of the
  * target.  The identities map p's value and slope at the outer end onto both
@@ -20,13 +27,19 @@
  * acos) and |x| = 1 (atan, atan2 at |y| = |x|), and the slope constraint
  * makes its slope there the true one.
  *
- * The constants pi/2, pi, pi/4 the templates need are computed here with
- * MPFR (the `extra` callbacks): double hi + lo pairs for the exact variants
- * (so the subtraction pi/2 - 2 asin(s) near |x| = 1 loses nothing), the
- * nearest floats with lo = 0 for the fast variants. */
+ * The constants pi/4, pi/2, pi the templates need are computed here with
+ * MPFR (the `extra` callbacks): float hi + lo pairs for the exact variants
+ * (so K + p loses nothing before the last rounding), the nearest floats
+ * with lo = 0 for the fast variants. */
 #include "funcs.h"
 
 #include <stdio.h>
+
+/* the exact schemes' error models (gen/funcs_atrig_model.c) */
+int pf_model_asin(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_acos(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_atan(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_atan2(const fit_poly *p, int order, pf_scheme *sc);
 
 /* ---- fit targets, in the fit variable t ---- */
 static void g_asin(mpfr_t y, const mpfr_t t, const void *c)
@@ -51,18 +64,6 @@ static void pi_times(mpfr_t v, long num, long den)
     mpfr_div_si(v, v, den, MPFR_RNDN);
 }
 
-/* hi = v rounded to double, lo = (v - hi) rounded to double */
-static void split_d(long num, long den, double *hi, double *lo)
-{
-    mpfr_t v;
-    mpfr_init2(v, 256);
-    pi_times(v, num, den);
-    *hi = mpfr_get_d(v, MPFR_RNDN);
-    mpfr_sub_d(v, v, *hi, MPFR_RNDN);
-    *lo = mpfr_get_d(v, MPFR_RNDN);
-    mpfr_clear(v);
-}
-
 static float nearest_f(long num, long den)
 {
     mpfr_t v;
@@ -73,19 +74,52 @@ static float nearest_f(long num, long den)
     return f;
 }
 
-static int extra_pi_double(char *buf, size_t n)
+/* hi = v rounded to float, lo = (v - hi) rounded to float */
+static void split_f(long num, long den, float *hi, float *lo)
 {
-    double h2, l2, h1, l1, h4, l4;
-    split_d(1, 2, &h2, &l2);
-    split_d(1, 1, &h1, &l1);
-    split_d(1, 4, &h4, &l4);
+    mpfr_t v;
+    mpfr_init2(v, 256);
+    pi_times(v, num, den);
+    *hi = mpfr_get_flt(v, MPFR_RNDN);
+    mpfr_sub_d(v, v, (double)*hi, MPFR_RNDN);
+    *lo = mpfr_get_flt(v, MPFR_RNDN);
+    mpfr_clear(v);
+}
+
+static int extra_pi_ff(char *buf, size_t n)
+{
+    float h4, l4, h2, l2, h1, l1;
+    split_f(1, 4, &h4, &l4);
+    split_f(1, 2, &h2, &l2);
+    split_f(1, 1, &h1, &l1);
     return snprintf(buf, n,
-                    "/* pi/2 and pi as hi + lo (hi the nearest double, lo the nearest double to\n"
-                    "   the rest; computed with MPFR at 256 bits), pi/4 to the nearest double */\n"
-                    "#define PF_PIO2_HI %a\n#define PF_PIO2_LO %a\n"
-                    "#define PF_PI_HI %a\n#define PF_PI_LO %a\n"
-                    "#define PF_PIO4 %a\n\n",
-                    h2, l2, h1, l1, h4);
+                    "/* pi/4, pi/2 and pi as hi + lo floats (hi the nearest float, lo the\n"
+                    "   nearest float to the rest: 2^-48 relative; MPFR at 256 bits) */\n"
+                    "#define PF_PIO4_HI %af\n#define PF_PIO4_LO %af\n"
+                    "#define PF_PIO2_HI %af\n#define PF_PIO2_LO %af\n"
+                    "#define PF_PI_HI %af\n#define PF_PI_LO %af\n\n",
+                    (double)h4, (double)l4, (double)h2, (double)l2, (double)h1, (double)l1);
+}
+
+/* pi/4 = A + B + O(2^-45): A with 21 significant bits, so that m A is exact
+   for m = 0..4, B the nearest float to the rest */
+static int extra_pi_m4(char *buf, size_t n)
+{
+    mpfr_t v, a;
+    mpfr_init2(v, 256);
+    mpfr_init2(a, 21);
+    pi_times(v, 1, 4);
+    mpfr_set(a, v, MPFR_RNDN);
+    float fa = mpfr_get_flt(a, MPFR_RNDN);
+    mpfr_sub(v, v, a, MPFR_RNDN);
+    float fb = mpfr_get_flt(v, MPFR_RNDN);
+    mpfr_clear(v);
+    mpfr_clear(a);
+    return snprintf(buf, n,
+                    "/* pi/4 = A + B to 2^-45: A rounded to 21 bits (m A exact for m <= 4), B the\n"
+                    "   nearest float to the rest (MPFR at 256 bits) */\n"
+                    "#define PF_PIO4_A %af\n#define PF_PIO4_B %af\n\n",
+                    (double)fa, (double)fb);
 }
 
 static int extra_pi_float(char *buf, size_t n)
@@ -106,8 +140,14 @@ static int extra_pi_float(char *buf, size_t n)
 #define ACOS_RED                                                                                  \
     "|x| <= 1/2: acos x = pi/2 - asin x; x > 1/2: 2 asin(t), t = sqrt((1 - x)/2); "              \
     "x < -1/2: pi - 2 asin(t), t = sqrt((1 + x)/2)"
-#define ATAN_RED "|x| <= 1: t = |x|; |x| > 1: atan|x| = pi/2 - atan(t), t = 1/|x|"
+#define ATAN_RED                                                                                  \
+    "|x| <= 1/2: t = |x|; 1/2 < |x| <= 2: atan|x| = pi/4 + atan(t), t = (|x| - 1)/(|x| + 1); "   \
+    "|x| > 2: pi/2 + atan(t), t = -1/|x|"
+#define ATAN_RED_FAST "|x| <= 1: t = |x|; |x| > 1: atan|x| = pi/2 - atan(t), t = 1/|x|"
 #define ATAN2_RED                                                                                 \
+    "n = min(|y|,|x|), d = max; n/d <= 1/2: t = n/d; else pi/4 + atan(t), t = (n - d)/(n + d); "  \
+    "atan2 from it by pi/2 - (|y| > |x|), pi - (x < 0 or x = -0), sign of y (C99 F.9.1.4)"
+#define ATAN2_RED_FAST                                                                            \
     "t = min(|y|,|x|) / max(|y|,|x|); atan2 from atan(t) by pi/2 - (|y| > |x|), pi - (x < 0 or " \
     "x = -0), sign of y (C99 F.9.1.4)"
 
@@ -118,44 +158,45 @@ static int extra_pi_float(char *buf, size_t n)
 
 /* exact orders: the smallest odd orders whose float-coefficient polynomial is
    within 2^-29 relative whether it is fitted minimax (the exact default) or by
-   least squares (asin 13: 2^-31.7 / 2^-30.1, atan 21: 2^-31.1 / 2^-29.2).
-   After the final rounding that is <= 0.5 + 2 * 2^-29 * 2^24 = 0.57 ULP, the
-   2 being asin's worst amplification just above |x| = 1/2.  One order less
-   (asin 11, atan 19) falls to 2^-26..2^-27 by least squares: too close to 1 ULP. */
+   least squares (asin 13 on [0, 1/2]: 2^-31.7 / 2^-30.1, atan 13 on [0, 1/2]:
+   2^-31.7 / 2^-30.2).  The models then bound the float schemes at 0.80
+   (asin), 0.68 (acos), 0.75 (atan), 0.95 (atan2) ULP.  One order less falls
+   to 2^-27.5 (atan 11: 0.74 ULP on pfmathgen's sample): the one FMA saved
+   is 2% of the loop, not worth the margin. */
 #define ASIN_EXACT_ORDER 13
-#define ATAN_EXACT_ORDER 21
+#define ATAN_EXACT_ORDER 13
 
-#define ROW_ASIN_EXACT(fn, tm, red)                                                               \
+#define ROW_ASIN_EXACT(fn, tm, red, mo)                                                            \
     {.func = fn, .reduction = "sqrthalf", .variant = "exact", .tmpl = tm, .arity = 1,             \
      .reduction_text = red, .target_text = "asin(t)", .g = g_asin, .a = 0, .b = 0.5,              \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
-     .default_order = ASIN_EXACT_ORDER, .real = "double", .ulp_bound = 1.0,                       \
-     .extra = extra_pi_double}
+     .default_order = ASIN_EXACT_ORDER, .real = "fma", .ulp_bound = 1.0,                          \
+     .extra = extra_pi_ff, .model = mo}
 #define ROW_ASIN_FAST(fn, tm, red)                                                                \
     {.func = fn, .reduction = "sqrthalf", .variant = "fast", .tmpl = tm, .arity = 1,              \
      .reduction_text = red, .target_text = "asin(t)", .g = g_asin, .a = 0, .b = 0.5,              \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = ASIN_FAST_CON,               \
-     .default_order = 0, .fast_target = 0x1p-10, .real = "float", .extra = extra_pi_float}
+     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float}
 #define ROW_ATAN_EXACT(fn, tm, ar, red)                                                           \
     {.func = fn, .reduction = "recip", .variant = "exact", .tmpl = tm, .arity = ar,               \
-     .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
+     .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 0.5,              \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
-     .default_order = ATAN_EXACT_ORDER, .real = "double", .ulp_bound = 1.0,                       \
-     .extra = extra_pi_double}
+     .default_order = ATAN_EXACT_ORDER, .real = "fma", .ulp_bound = 1.0,                          \
+     .extra = ar == 2 ? extra_pi_m4 : extra_pi_ff, .model = ar == 2 ? pf_model_atan2 : pf_model_atan}
 #define ROW_ATAN_FAST(fn, tm, ar, red)                                                            \
     {.func = fn, .reduction = "recip", .variant = "fast", .tmpl = tm, .arity = ar,                \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = ATAN_FAST_CON,               \
-     .default_order = 0, .fast_target = 0x1p-10, .real = "float", .extra = extra_pi_float}
+     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float}
 
 const pf_spec pf_specs_atrig[] = {
-    ROW_ASIN_EXACT("asin", "asin_sqrthalf", ASIN_RED),
-    ROW_ASIN_FAST("asin", "asin_sqrthalf", ASIN_RED),
-    ROW_ASIN_EXACT("acos", "acos_sqrthalf", ACOS_RED),
-    ROW_ASIN_FAST("acos", "acos_sqrthalf", ACOS_RED),
-    ROW_ATAN_EXACT("atan", "atan_recip", 1, ATAN_RED),
-    ROW_ATAN_FAST("atan", "atan_recip", 1, ATAN_RED),
-    ROW_ATAN_EXACT("atan2", "atan2_recip", 2, ATAN2_RED),
-    ROW_ATAN_FAST("atan2", "atan2_recip", 2, ATAN2_RED),
+    ROW_ASIN_EXACT("asin", "asin_ff", ASIN_RED, pf_model_asin),
+    ROW_ASIN_FAST("asin", "asin_fast", ASIN_RED),
+    ROW_ASIN_EXACT("acos", "acos_ff", ACOS_RED, pf_model_acos),
+    ROW_ASIN_FAST("acos", "acos_fast", ACOS_RED),
+    ROW_ATAN_EXACT("atan", "atan_ff", 1, ATAN_RED),
+    ROW_ATAN_FAST("atan", "atan_fast", 1, ATAN_RED_FAST),
+    ROW_ATAN_EXACT("atan2", "atan2_ff", 2, ATAN2_RED),
+    ROW_ATAN_FAST("atan2", "atan2_fast", 2, ATAN2_RED_FAST),
     {0},
 };

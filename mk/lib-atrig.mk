@@ -23,3 +23,11 @@ PROGS += $(BUILD)/bench_atrig
 $(BUILD)/bench_atrig: tests/bench_atrig.c $(BUILD)/libpfmath.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lm
+
+# the fast variants' bound max(2^-10 |f|, 2^-11) on all 2^32 floats (atan2: a
+# dense pair sample); minutes, so not in make test: run build/fastsweep_atrig
+PROGS += $(BUILD)/fastsweep_atrig
+$(BUILD)/fastsweep_atrig: tests/fastsweep_atrig.c $(BUILD)/libpfref.a $(BUILD)/libpfmath.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -fopenmp -MMD -MP $< -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a \
+	  $(BUILD)/libpfref.a -fopenmp $(LIBS_NUM)

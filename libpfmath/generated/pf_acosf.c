@@ -3,11 +3,13 @@
  * Regenerate:  pfmathgen --func acos --variant exact -o libpfmath/generated/pf_acosf.c
  * Reduction:   |x| <= 1/2: acos x = pi/2 - asin x; x > 1/2: 2 asin(t), t = sqrt((1 - x)/2); x < -1/2: pi - 2 asin(t), t = sqrt((1 + x)/2)
  * Domain:      asin(t) on t in [0x0p+0, 0x1p-1]  (0 .. 0.5)
- * Order:       13 (float coefficients, Horner in double)
+ * Order:       13 (float coefficients, Horner in float with fmaf)
+ * Evaluation:  q(z) by fmaf Horner in float; p = v + fmaf(T z, q, lo); 2 sqrt((1-|x|)/2) = s + lo to 2^-35 (integer estimate, 1 Newton and 1 coupled step, fmaf residual); K + sg v exact (Fast2Sum), pi/2 and pi as float hi + lo; one final rounding
+ * Error model: at most 0.675 ULP (fit error and every rounding of the scheme)
  * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1
  * Max relative error of this polynomial on the domain: 2.890e-10 (2^-31.69) at t = 0x1.b61486421e78bp-3
- * Sweep:       max 0.504 ULP at x = 0x1.cfe5cp-1 (0x3f67f2e0), mean 0.2447 ULP, 99.96% correctly
+ * Sweep:       max 0.591 ULP at x = 0x1.21faap-1 (0x3f10fd50), mean 0.2448 ULP, 99.72% correctly
  *              rounded; sampled sweep of 3932785 inputs (every 16th float in [0x1p-7, 0x1p+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -95,56 +97,81 @@ static const float pf_acosf_C[7] = {
     0x1.34c6bcp-5f,    /* c13 = 0.0376924202 */
 };
 
-/* pi/2 and pi as hi + lo (hi the nearest double, lo the nearest double to
-   the rest; computed with MPFR at 256 bits), pi/4 to the nearest double */
-#define PF_PIO2_HI 0x1.921fb54442d18p+0
-#define PF_PIO2_LO 0x1.1a62633145c07p-54
-#define PF_PI_HI 0x1.921fb54442d18p+1
-#define PF_PI_LO 0x1.1a62633145c07p-53
-#define PF_PIO4 0x1.921fb54442d18p-1
+/* pi/4, pi/2 and pi as hi + lo floats (hi the nearest float, lo the
+   nearest float to the rest: 2^-48 relative; MPFR at 256 bits) */
+#define PF_PIO4_HI 0x1.921fb6p-1f
+#define PF_PIO4_LO -0x1.777a5cp-26f
+#define PF_PIO2_HI 0x1.921fb6p+0f
+#define PF_PIO2_LO -0x1.777a5cp-25f
+#define PF_PI_HI 0x1.921fb6p+1f
+#define PF_PI_LO -0x1.777a5cp-24f
 
-/* acos(x) from the odd polynomial p(t) ~ asin(t) on [0, 1/2] that asin uses:
-     |x| <= 1/2:  acos x = pi/2 - p(x)
-     x  >  1/2:  acos x = 2 p(s),       s = sqrt((1 - x)/2)
-     x  < -1/2:  acos x = pi - 2 p(s),  s = sqrt((1 + x)/2)
-   1 - |x| is exact for |x| in [1/2, 1] (Sterbenz), the halving too, so near
-   x = 1 the result 2 p(s) keeps p's relative error; the other two branches
-   are >= pi/3 and subtract at most half of pi/2 (resp. a third of pi), so
-   they lose at most a factor 1/2 of p's error.  pi/2, pi are hi + lo.
-   Branch-free: one p evaluation at a selected argument. */
-/* sqrt(w) for w in [0, 1/2] (w a float value), without libm: GCC gives sqrt()
-   an errno check (a call in a branch) that stops the array loop from
-   vectorizing unless the whole file is built with -fno-math-errno, which a
-   pragma cannot do.  The integer estimate of 1/sqrt(w) is within 3.5%; each
-   Newton step y <- y (3/2 - (w/2) y^2) squares the error (times 3/2):
-   1.8e-3, 4.6e-6, 3.2e-11, so three steps leave the double variant 2^-34 and
-   the float variant its own rounding.  w = 0 gives 0 * (finite y) = 0. */
-static inline double pf_acosf_sqrt(double w)
+/* acos(x) in float lanes from the odd polynomial p(t) = t + t z q(z) ~ asin
+   on [0, 1/2] that asin uses:
+     |x| <= 1/2:  acos x = pi/2 - (x + x z q(z)),        z = x^2
+     x  >  1/2:  acos x = S + S w q(w),                 w = (1 - |x|)/2, S = 2 sqrt(w)
+     x  < -1/2:  acos x = pi - (S + S w q(w))
+   Each is K + sg (v + c) with v a float and c a correction of at most 4.5%
+   of v, so the correction's roundings weigh 1/20 of an ULP.  2 - 2|x| = 4w
+   is exact for |x| in [1/2, 1] (Sterbenz; the fma rounds once), S is s + lo
+   to 2^-35, K + sg v is h + l exactly (Fast2Sum: |K| >= |v| or K = 0), pi/2
+   and pi are hi + lo: the one rounding left is the last add.  Near x = 1 the
+   result S (1 + w q) keeps S's relative accuracy.  Branch-free: q is
+   evaluated once, at z = w or x^2. */
+/* sqrt(W) for W in [0, 2] as s + *lo, without libm's sqrtf: with errno
+   semantics GCC calls it in a branch, which stops the array loop from
+   vectorizing (-fno-math-errno cannot be set by a pragma).  The integer
+   estimate of 1/sqrt(W) is within 3.5%; one Newton step y (3/2 - (W/2) y^2)
+   leaves 1.8e-3; one coupled step on s = W y, h = y/2 (r = 1/2 - s h,
+   s += s r, h += h r) squares it to 5e-6; the residual W - s^2 (one fmaf,
+   rounded at 2^-40 of it) times h gives lo with s + lo within 2^-35 of
+   sqrt(W).  W = 0 gives s = lo = 0 (y = 1.3e19, y^2 still finite); W < 0
+   (|x| > 1) gives garbage, replaced by NaN. */
+static inline float pf_acosf_sqrt(float W, float *lo)
 {
-    double y = (double)pf_asfloat(0x5f3759dfu - (pf_asuint((float)w) >> 1));
-    double hw = (double)0.5 * w;
-    y = y * ((double)1.5 - hw * y * y);
-    y = y * ((double)1.5 - hw * y * y);
-    y = y * ((double)1.5 - hw * y * y);
-    return w * y;
+    float y = pf_asfloat(0x5f3759dfu - (pf_asuint(W) >> 1));
+    y = y * fmaf(-0.5f * W, y * y, 1.5f);
+    float s = W * y, h = 0.5f * y;
+    float r = fmaf(-s, h, 0.5f);
+    s = fmaf(s, r, s);
+    h = fmaf(h, r, h);
+    *lo = fmaf(-s, s, W) * h;
+    return s;
+}
+
+/* m ? a : b for a mask m of all ones or zeros, on the bits: one vpternlogd
+   or blend in the array loop, and no branch in the scalar form (GCC turns
+   ?: into a jump there, mispredicted half the time on random |x|) */
+static inline float pf_acosf_pick(uint32_t m, float a, float b)
+{
+    return pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
 }
 
 static inline float pf_acosf_inline(float x)
 {
     uint32_t ix = pf_asuint(x);
     float a = pf_asfloat(ix & 0x7fffffffu);
-    int big = a > 0.5f, neg = ix >> 31;
-    /* a > 1 (NaN result) is clamped so the square root sees w in [0, 1/2] */
-    double w = ((double)1 - (double)(a > 1 ? 1 : a)) * (double)0.5;
-    double s = pf_acosf_sqrt(w);
-    double t = big ? s : (double)x;
-    double p = t * pf_horner_d(t * t, pf_acosf_C, 7);
-    double r_small = PF_PIO2_HI - (p - PF_PIO2_LO);
-    double r_neg = PF_PI_HI - ((double)2 * p - PF_PI_LO);
-    double r = big ? (neg ? r_neg : (double)2 * p) : r_small;
-    float res = (float)r;
-    /* |x| > 1 (inf included): domain error, NaN; NaN in gives NaN through t */
-    return a > 1 ? (float)NAN : res;
+    uint32_t big = 0u - (uint32_t)(a > 0.5f);   /* all ones for |x| > 1/2 */
+    uint32_t pos = 0u - (uint32_t)(x > 0.5f);   /* all ones for x > 1/2 */
+    float W = fmaf(-2.0f, a, 2.0f);   /* exact for a in [1/2, 1] */
+    float lo, s = pf_acosf_sqrt(W, &lo);
+    /* every select comes before q: a test after it makes GCC duplicate q
+       into both paths (jump threading) */
+    float z = pf_acosf_pick(big, 0.25f * W, x * x);
+    float v = pf_acosf_pick(big, s, x), T = pf_acosf_pick(big, s + lo, x);
+    float l0 = pf_asfloat(pf_asuint(lo) & big);
+    /* acos x = K + sg (v + c): (pi/2, -1) for |x| <= 1/2, (0, 1) for x > 1/2,
+       (pi, -1) for x < -1/2 */
+    float sg = pf_asfloat(pf_asuint(1.0f) | (~pos & 0x80000000u));
+    float khi = pf_acosf_pick(big, pf_asfloat(pf_asuint(PF_PI_HI) & ~pos), PF_PIO2_HI);
+    float klo = pf_acosf_pick(big, pf_asfloat(pf_asuint(PF_PI_LO) & ~pos), PF_PIO2_LO);
+    float q = pf_horner_fma(z, pf_acosf_C + 1, 7 - 1);   /* c1 = 1 is the v term */
+    float c = fmaf(T * z, q, l0);
+    float h = fmaf(sg, v, khi);
+    float l = fmaf(sg, v, khi - h);
+    float r = h + (l + fmaf(sg, c, klo));
+    /* |x| > 1 (inf included): domain error, NaN; NaN in gives NaN through v */
+    return a > 1 ? (float)NAN : r;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

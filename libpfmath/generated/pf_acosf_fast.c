@@ -3,11 +3,11 @@
  * Regenerate:  pfmathgen --func acos --variant fast -o libpfmath/generated/pf_acosf_fast.c
  * Reduction:   |x| <= 1/2: acos x = pi/2 - asin x; x > 1/2: 2 asin(t), t = sqrt((1 - x)/2); x < -1/2: pi - 2 asin(t), t = sqrt((1 + x)/2)
  * Domain:      asin(t) on t in [0x0p+0, 0x1p-1]  (0 .. 0.5)
- * Order:       5 (float coefficients, Horner in float)
+ * Order:       5 (float coefficients, Horner in float with fmaf)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1, p(1/2) = pi/6, p'(1/2) = 2/sqrt(3)
  * Max relative error of this polynomial on the domain: 1.589e-04 (2^-12.62) at t = 0x1.2c60794a3d068p-2
- * Sweep:       max 2480.853 ULP at x = 0x1.c1548p-1 (0x3f60aa40), mean 214.4361 ULP, 16.82% correctly
+ * Sweep:       max 5863.373 ULP at x = 0x1.d442ep-1 (0x3f6a2170), mean 439.3758 ULP, 16.84% correctly
  *              rounded; sampled sweep of 3932785 inputs (every 16th float in [0x1p-7, 0x1p+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -101,48 +101,53 @@ static const float pf_acosf_fast_C[3] = {
 #define PF_PI_LO 0.0f
 #define PF_PIO4 0x1.921fb6p-1f
 
-/* acos(x) from the odd polynomial p(t) ~ asin(t) on [0, 1/2] that asin uses:
-     |x| <= 1/2:  acos x = pi/2 - p(x)
-     x  >  1/2:  acos x = 2 p(s),       s = sqrt((1 - x)/2)
-     x  < -1/2:  acos x = pi - 2 p(s),  s = sqrt((1 + x)/2)
-   1 - |x| is exact for |x| in [1/2, 1] (Sterbenz), the halving too, so near
-   x = 1 the result 2 p(s) keeps p's relative error; the other two branches
-   are >= pi/3 and subtract at most half of pi/2 (resp. a third of pi), so
-   they lose at most a factor 1/2 of p's error.  pi/2, pi are hi + lo.
-   Branch-free: one p evaluation at a selected argument. */
-/* sqrt(w) for w in [0, 1/2] (w a float value), without libm: GCC gives sqrt()
-   an errno check (a call in a branch) that stops the array loop from
-   vectorizing unless the whole file is built with -fno-math-errno, which a
-   pragma cannot do.  The integer estimate of 1/sqrt(w) is within 3.5%; each
-   Newton step y <- y (3/2 - (w/2) y^2) squares the error (times 3/2):
-   1.8e-3, 4.6e-6, 3.2e-11, so three steps leave the double variant 2^-34 and
-   the float variant its own rounding.  w = 0 gives 0 * (finite y) = 0. */
+/* acos(x), fast variant, in float lanes with fmaf, from the odd polynomial
+   p(t) = t + t z q(z) ~ asin on [0, 1/2] (value and slope matched at both
+   ends) that asin uses:
+     |x| <= 1/2:  acos x = pi/2 - p(x),       z = x^2
+     x  >  1/2:  acos x = 2 p(s),            s = sqrt(w), z = w = (1 - |x|)/2
+     x  < -1/2:  acos x = pi - 2 p(s)
+   all one fmaf m p + k with (m, k) = (-1, pi/2), (2, 0), (-2, pi).  Near
+   x = 1 the result 2 p(s) keeps s's relative error (2^-11.7); the other
+   branches are >= pi/3.  Branch-free: mask blends, one polynomial. */
+/* m ? a : b for a mask m of all ones or zeros, on the bits: one blend in
+   the array loop, no branch in the scalar form */
+static inline float pf_acosf_fast_pick(uint32_t m, float a, float b)
+{
+    return pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
+}
+
+/* sqrt(w) for w in [0, 1/2] to 2^-11.7, without libm's sqrtf (with errno
+   semantics GCC calls it in a branch, which stops the loop vectorizing):
+   s = w y from the integer estimate y of 1/sqrt(w), then one step
+   s (1 + e/2 + 3e^2/8 + 5e^3/16), e = 1 - s y = 1 - w y^2, the series of
+   (1 - e)^(-1/2) to its remainder 35e^4/128.  The estimate's constant
+   0x5f400000 makes y exact at powers of 4 (within +8.9% elsewhere, so the
+   step leaves 3.0e-4): at the fold |x| = 1/2, w = 1/4, s = 1/2 exactly and
+   the two sides meet (C1 seam) instead of differing by the step's error.
+   w = 0 gives s = 0, e = 1, 0 (y is not squared: no overflow).  w < 0
+   (|x| > 1) gives garbage, replaced by NaN. */
 static inline float pf_acosf_fast_sqrt(float w)
 {
-    float y = (float)pf_asfloat(0x5f3759dfu - (pf_asuint((float)w) >> 1));
-    float hw = (float)0.5 * w;
-    y = y * ((float)1.5 - hw * y * y);
-    y = y * ((float)1.5 - hw * y * y);
-    y = y * ((float)1.5 - hw * y * y);
-    return w * y;
+    float y = pf_asfloat(0x5f400000u - (pf_asuint(w) >> 1));
+    float s = w * y;
+    float e = fmaf(-s, y, 1.0f);
+    return fmaf(s * e, fmaf(fmaf(e, 0.3125f, 0.375f), e, 0.5f), s);
 }
 
 static inline float pf_acosf_fast_inline(float x)
 {
     uint32_t ix = pf_asuint(x);
     float a = pf_asfloat(ix & 0x7fffffffu);
-    int big = a > 0.5f, neg = ix >> 31;
-    /* a > 1 (NaN result) is clamped so the square root sees w in [0, 1/2] */
-    float w = ((float)1 - (float)(a > 1 ? 1 : a)) * (float)0.5;
+    uint32_t big = 0u - (uint32_t)(a > 0.5f), pos = 0u - (uint32_t)(x > 0.5f);
+    float w = fmaf(-0.5f, a, 0.5f);   /* exact for a in [1/2, 1] */
     float s = pf_acosf_fast_sqrt(w);
-    float t = big ? s : (float)x;
-    float p = t * pf_horner_f(t * t, pf_acosf_fast_C, 3);
-    float r_small = PF_PIO2_HI - (p - PF_PIO2_LO);
-    float r_neg = PF_PI_HI - ((float)2 * p - PF_PI_LO);
-    float r = big ? (neg ? r_neg : (float)2 * p) : r_small;
-    float res = (float)r;
+    float t = pf_acosf_fast_pick(big, s, x), z = pf_acosf_fast_pick(big, w, x * x);
+    float m = pf_acosf_fast_pick(big, pf_acosf_fast_pick(pos, 2.0f, -2.0f), -1.0f);
+    float k = pf_acosf_fast_pick(big, pf_asfloat(pf_asuint(PF_PI_HI) & ~pos), PF_PIO2_HI);
+    float p = fmaf(t * z, pf_horner_fma(z, pf_acosf_fast_C + 1, 3 - 1), t);   /* c1 = 1 */
     /* |x| > 1 (inf included): domain error, NaN; NaN in gives NaN through t */
-    return a > 1 ? (float)NAN : res;
+    return a > 1 ? (float)NAN : fmaf(m, p, k);
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

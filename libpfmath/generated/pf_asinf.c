@@ -3,11 +3,13 @@
  * Regenerate:  pfmathgen --func asin --variant exact -o libpfmath/generated/pf_asinf.c
  * Reduction:   |x| <= 1/2: t = |x|; |x| > 1/2: asin|x| = pi/2 - 2 asin(t), t = sqrt((1 - |x|)/2)
  * Domain:      asin(t) on t in [0x0p+0, 0x1p-1]  (0 .. 0.5)
- * Order:       13 (float coefficients, Horner in double)
+ * Order:       13 (float coefficients, Horner in float with fmaf)
+ * Evaluation:  q(z) by fmaf Horner in float; p = v + fmaf(T z, q, lo); 2 sqrt((1-|x|)/2) = s + lo to 2^-35 (integer estimate, 1 Newton and 1 coupled step, fmaf residual); K + sg v exact (Fast2Sum), pi/2 and pi as float hi + lo; one final rounding
+ * Error model: at most 0.795 ULP (fit error and every rounding of the scheme)
  * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1
  * Max relative error of this polynomial on the domain: 2.890e-10 (2^-31.69) at t = 0x1.b61486421e78bp-3
- * Sweep:       max 0.504 ULP at x = 0x1.2f728p-1 (0x3f17b940), mean 0.2342 ULP, 99.84% correctly
+ * Sweep:       max 0.609 ULP at x = 0x1.18eacp-1 (0x3f0c7560), mean 0.2343 ULP, 99.43% correctly
  *              rounded; sampled sweep of 3932785 inputs (every 16th float in [0x1p-7, 0x1p+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -95,54 +97,79 @@ static const float pf_asinf_C[7] = {
     0x1.34c6bcp-5f,    /* c13 = 0.0376924202 */
 };
 
-/* pi/2 and pi as hi + lo (hi the nearest double, lo the nearest double to
-   the rest; computed with MPFR at 256 bits), pi/4 to the nearest double */
-#define PF_PIO2_HI 0x1.921fb54442d18p+0
-#define PF_PIO2_LO 0x1.1a62633145c07p-54
-#define PF_PI_HI 0x1.921fb54442d18p+1
-#define PF_PI_LO 0x1.1a62633145c07p-53
-#define PF_PIO4 0x1.921fb54442d18p-1
+/* pi/4, pi/2 and pi as hi + lo floats (hi the nearest float, lo the
+   nearest float to the rest: 2^-48 relative; MPFR at 256 bits) */
+#define PF_PIO4_HI 0x1.921fb6p-1f
+#define PF_PIO4_LO -0x1.777a5cp-26f
+#define PF_PIO2_HI 0x1.921fb6p+0f
+#define PF_PIO2_LO -0x1.777a5cp-25f
+#define PF_PI_HI 0x1.921fb6p+1f
+#define PF_PI_LO -0x1.777a5cp-24f
 
-/* asin(x) from one odd polynomial p(t) ~ asin(t) on [0, 1/2]:
-     |x| <= 1/2:  asin|x| = p(|x|)
-     |x| >  1/2:  asin|x| = pi/2 - 2 p(s),  s = sqrt((1 - |x|)/2) in [0, 1/2)
-   (asin a = pi/2 - acos a and acos a = 2 asin sqrt((1 - a)/2)).  1 - |x| is
-   exact for |x| in [1/2, 1] (Sterbenz) and the halving is exact, so s carries
-   only the square root's rounding; near |x| = 1 the result is pi/2 minus a
-   small term, and pi/2 = hi + lo keeps that subtraction exact to the double's
-   last bit.  Over [1/2, 1] the result is >= pi/6 while 2 p(s) <= pi/3, so a
-   relative error e of p costs at most 2e in the result.  Branch-free: both
-   arguments are computed, one is selected, p is evaluated once. */
-/* sqrt(w) for w in [0, 1/2] (w a float value), without libm: GCC gives sqrt()
-   an errno check (a call in a branch) that stops the array loop from
-   vectorizing unless the whole file is built with -fno-math-errno, which a
-   pragma cannot do.  The integer estimate of 1/sqrt(w) is within 3.5%; each
-   Newton step y <- y (3/2 - (w/2) y^2) squares the error (times 3/2):
-   1.8e-3, 4.6e-6, 3.2e-11, so three steps leave the double variant 2^-34 and
-   the float variant its own rounding.  w = 0 gives 0 * (finite y) = 0. */
-static inline double pf_asinf_sqrt(double w)
+/* asin(x) in float lanes from one odd polynomial p(t) = t + t z q(z),
+   z = t^2, p ~ asin on [0, 1/2]:
+     |x| <= 1/2:  asin|x| = a + a z q(z),             z = a^2
+     |x| >  1/2:  asin|x| = pi/2 - (S + S w q(w)),    w = (1 - a)/2, S = 2 sqrt(w)
+   (asin a = pi/2 - 2 asin sqrt((1 - a)/2)).  Both are K + sg (v + c) with v a
+   float and c = v z q(z) (+ S's low part) a correction of at most 4.5% of v,
+   so the correction's few roundings weigh 1/20 of an ULP.  What must be
+   exact is done exactly: 2 - 2a = 4w for a in [1/2, 1] (Sterbenz, and the
+   fma rounds once), S as s + lo to 2^-35, K + sg v as h + l (Fast2Sum, |K| >=
+   |v| or K = 0), pi/2 as hi + lo; the one rounding left is the last add.
+   Branch-free: both arguments are computed, one is selected, q is evaluated
+   once, at z = w or a^2. */
+/* sqrt(W) for W in [0, 2] as s + *lo, without libm's sqrtf: with errno
+   semantics GCC calls it in a branch, which stops the array loop from
+   vectorizing (-fno-math-errno cannot be set by a pragma).  The integer
+   estimate of 1/sqrt(W) is within 3.5%; one Newton step y (3/2 - (W/2) y^2)
+   leaves 1.8e-3; one coupled step on s = W y, h = y/2 (r = 1/2 - s h,
+   s += s r, h += h r) squares it to 5e-6; the residual W - s^2 (one fmaf,
+   rounded at 2^-40 of it) times h gives lo with s + lo within 2^-35 of
+   sqrt(W).  W = 0 gives s = lo = 0 (y = 1.3e19, y^2 still finite); W < 0
+   (|x| > 1) gives garbage, replaced by NaN. */
+static inline float pf_asinf_sqrt(float W, float *lo)
 {
-    double y = (double)pf_asfloat(0x5f3759dfu - (pf_asuint((float)w) >> 1));
-    double hw = (double)0.5 * w;
-    y = y * ((double)1.5 - hw * y * y);
-    y = y * ((double)1.5 - hw * y * y);
-    y = y * ((double)1.5 - hw * y * y);
-    return w * y;
+    float y = pf_asfloat(0x5f3759dfu - (pf_asuint(W) >> 1));
+    y = y * fmaf(-0.5f * W, y * y, 1.5f);
+    float s = W * y, h = 0.5f * y;
+    float r = fmaf(-s, h, 0.5f);
+    s = fmaf(s, r, s);
+    h = fmaf(h, r, h);
+    *lo = fmaf(-s, s, W) * h;
+    return s;
+}
+
+/* m ? a : b for a mask m of all ones or zeros, on the bits: one vpternlogd
+   or blend in the array loop, and no branch in the scalar form (GCC turns
+   ?: into a jump there, mispredicted half the time on random |x|) */
+static inline float pf_asinf_pick(uint32_t m, float a, float b)
+{
+    return pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
 }
 
 static inline float pf_asinf_inline(float x)
 {
     uint32_t ix = pf_asuint(x);
     float a = pf_asfloat(ix & 0x7fffffffu);
-    int big = a > 0.5f;
-    /* a > 1 (NaN result) is clamped so the square root sees w in [0, 1/2] */
-    double w = ((double)1 - (double)(a > 1 ? 1 : a)) * (double)0.5;
-    double s = pf_asinf_sqrt(w);
-    double t = big ? s : (double)a;
-    double p = t * pf_horner_d(t * t, pf_asinf_C, 7);
-    double r = big ? PF_PIO2_HI - ((double)2 * p - PF_PIO2_LO) : p;
-    float res = pf_asfloat(pf_asuint((float)r) | (ix & 0x80000000u));
-    /* |x| > 1 (inf included): domain error, NaN; NaN in gives NaN through t */
+    uint32_t big = 0u - (uint32_t)(a > 0.5f);   /* all ones for |x| > 1/2 */
+    float W = fmaf(-2.0f, a, 2.0f);   /* exact for a in [1/2, 1] */
+    float lo, s = pf_asinf_sqrt(W, &lo);
+    /* every select comes before q: a test after it makes GCC duplicate q
+       into both paths (jump threading) */
+    float z = pf_asinf_pick(big, 0.25f * W, a * a);
+    float v = pf_asinf_pick(big, s, a), T = pf_asinf_pick(big, s + lo, a);
+    float l0 = pf_asfloat(pf_asuint(lo) & big);
+    /* asin a = K + sg (v + c): K = 0, sg = 1 (|x| <= 1/2); K = pi/2, sg = -1 */
+    float sg = pf_asfloat(pf_asuint(1.0f) | (big & 0x80000000u));
+    float khi = pf_asfloat(pf_asuint(PF_PIO2_HI) & big);
+    float klo = pf_asfloat(pf_asuint(PF_PIO2_LO) & big);
+    float q = pf_horner_fma(z, pf_asinf_C + 1, 7 - 1);   /* c1 = 1 is the v term */
+    float c = fmaf(T * z, q, l0);
+    float h = fmaf(sg, v, khi);
+    float l = fmaf(sg, v, khi - h);
+    float r = h + (l + fmaf(sg, c, klo));
+    float res = pf_asfloat(pf_asuint(r) | (ix & 0x80000000u));
+    /* |x| > 1 (inf included): domain error, NaN; NaN in gives NaN through v */
     return a > 1 ? (float)NAN : res;
 }
 

@@ -3,11 +3,11 @@
  * Regenerate:  pfmathgen --func atan2 --variant fast -o libpfmath/generated/pf_atan2f_fast.c
  * Reduction:   t = min(|y|,|x|) / max(|y|,|x|); atan2 from atan(t) by pi/2 - (|y| > |x|), pi - (x < 0 or x = -0), sign of y (C99 F.9.1.4)
  * Domain:      atan(t) on t in [0x0p+0, 0x1p+0]  (0 .. 1)
- * Order:       7 (float coefficients, Horner in float)
+ * Order:       7 (float coefficients, Horner in float with fmaf)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1, p(1) = pi/4, p'(1) = 1/2
  * Max relative error of this polynomial on the domain: 5.688e-04 (2^-10.78) at t = 0x1.8d95d244bc15bp-1
- * Sweep:       max 6760.781 ULP at x = 0x1.0577ep-2 (0x3e82bbf0), mean 1245.6760 ULP, 12.25% correctly
+ * Sweep:       max 6759.817 ULP at x = 0x1.0574cp-2 (0x3e82ba60), mean 1245.6749 ULP, 12.25% correctly
  *              rounded; sampled sweep of 7610277 inputs (every 16th float in [0x1p-7, 0x1p+7], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -102,34 +102,45 @@ static const float pf_atan2f_fast_C[4] = {
 #define PF_PI_LO 0.0f
 #define PF_PIO4 0x1.921fb6p-1f
 
-/* atan2(y, x) from the odd polynomial p(t) ~ atan(t) on [0, 1] that atan uses:
+/* atan2(y, x), fast variant, in float lanes with fmaf, from the odd
+   polynomial p(t) = t + t z q(z) ~ atan on [0, 1] that atan uses:
      t = min(|y|, |x|) / max(|y|, |x|)  in [0, 1]
      v = p(t)                    angle of (|x|, |y|) when |y| <= |x|
      v = pi/2 - v  if |y| > |x|  (atan u = pi/2 - atan(1/u))
      v = pi - v    if x < 0 or x = -0 (the sign bit, so atan2(+-0, -0) = +-pi)
-     result = v with y's sign bit.
-   Dividing the smaller magnitude by the larger never overflows, and in the
-   exact variant (double) never underflows either: the quotient of two floats
-   is >= 2^-277.  C99 Annex F F.9.1.4 falls out of the same arithmetic:
-   a zero or infinite numerator/denominator gives t = 0, so atan2(+-0, x) is
-   +-0 or +-pi, atan2(y, +-0) and atan2(+-inf, x) are +-pi/2, atan2(y, +-inf)
-   is +-0 or +-pi for finite y.  |y| = |x| (0/0 and inf/inf included) is
-   selected directly: +-pi/4 or +-3pi/4, and 0 (then +-0 or +-pi) when both
-   are zeros.  NaN in either argument gives NaN, selected last. */
+     result = v with y's sign bit
+   folded into one fmaf sg p + K: K = pi/2 if |y| > |x|, else pi if x's sign
+   bit, else 0; sg = -1 if exactly one of the two folds applies.  Dividing
+   the smaller magnitude by the larger never overflows (it may underflow to
+   0, where atan2 is the quotient's own size anyway).  C99 Annex F F.9.1.4
+   falls out of the same arithmetic: a zero or infinite numerator or
+   denominator gives t = 0, so atan2(+-0, x) is +-0 or +-pi, atan2(y, +-0)
+   and atan2(+-inf, x) are +-pi/2, atan2(y, +-inf) is +-0 or +-pi for finite
+   y; |y| = |x| takes t = 1 (p(1) = pi/4: +-pi/4, +-3pi/4, inf/inf included)
+   and t = 0 for two zeros.  A NaN operand is returned quieted (x first):
+   x + y would let the clones pick different payloads. */
+/* m ? a : b for a mask m of all ones or zeros, on the bits: one blend in
+   the array loop, no branch in the scalar form */
+static inline float pf_atan2f_fast_pick(uint32_t m, float a, float b)
+{
+    return pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
+}
+
 static inline float pf_atan2f_fast_inline(float y, float x)
 {
     uint32_t iy = pf_asuint(y), ix = pf_asuint(x);
     float ay = pf_asfloat(iy & 0x7fffffffu), ax = pf_asfloat(ix & 0x7fffffffu);
-    int swap = ay > ax, negx = ix >> 31;
-    /* num/den is NaN for 0/0 and inf/inf: those lanes take the |y| = |x| select */
-    float num = swap ? ax : ay, den = swap ? ay : ax;
-    float t = num / den;
-    float p = t * pf_horner_f(t * t, pf_atan2f_fast_C, 4);
-    p = ay == ax ? (ax == 0 ? (float)0 : PF_PIO4) : p;
-    float v = swap ? PF_PIO2_HI - (p - PF_PIO2_LO) : p;
-    v = negx ? PF_PI_HI - (v - PF_PI_LO) : v;
-    float res = pf_asfloat(pf_asuint((float)v) | (iy & 0x80000000u));
-    return (ax != ax || ay != ay) ? x + y : res;
+    uint32_t swap = 0u - (uint32_t)(ay > ax), negx = 0u - (ix >> 31);
+    uint32_t eq = 0u - (uint32_t)(ay == ax), nz = 0u - (uint32_t)(ax != 0);
+    float n = ay > ax ? ax : ay, d = ay > ax ? ay : ax;
+    /* 0/0 and inf/inf are NaN: |y| = |x| takes t = 1, or 0 for two zeros */
+    float t = pf_atan2f_fast_pick(eq, pf_asfloat(pf_asuint(1.0f) & nz), n / d);
+    float K = pf_atan2f_fast_pick(swap, PF_PIO2_HI, pf_asfloat(pf_asuint(PF_PI_HI) & negx));
+    float sg = pf_asfloat(pf_asuint(1.0f) | ((swap ^ negx) & 0x80000000u));
+    float z = t * t;
+    float p = fmaf(t * z, pf_horner_fma(z, pf_atan2f_fast_C + 1, 4 - 1), t);   /* c1 = 1 */
+    float res = pf_asfloat(pf_asuint(fmaf(sg, p, K)) | (iy & 0x80000000u));
+    return ax != ax ? x + x : ay != ay ? y + y : res;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

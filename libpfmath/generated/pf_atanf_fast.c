@@ -3,11 +3,11 @@
  * Regenerate:  pfmathgen --func atan --variant fast -o libpfmath/generated/pf_atanf_fast.c
  * Reduction:   |x| <= 1: t = |x|; |x| > 1: atan|x| = pi/2 - atan(t), t = 1/|x|
  * Domain:      atan(t) on t in [0x0p+0, 0x1p+0]  (0 .. 1)
- * Order:       7 (float coefficients, Horner in float)
+ * Order:       7 (float coefficients, Horner in float with fmaf)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1, p(1) = pi/4, p'(1) = 1/2
  * Max relative error of this polynomial on the domain: 5.688e-04 (2^-10.78) at t = 0x1.8d95d244bc15bp-1
- * Sweep:       max 6760.781 ULP at x = 0x1.0577ep-2 (0x3e82bbf0), mean 1248.2287 ULP, 12.17% correctly
+ * Sweep:       max 6759.817 ULP at x = 0x1.0574cp-2 (0x3e82ba60), mean 1248.2276 ULP, 12.18% correctly
  *              rounded; sampled sweep of 7602801 inputs (every 16th float in [0x1p-7, 0x1p+7], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -102,24 +102,35 @@ static const float pf_atanf_fast_C[4] = {
 #define PF_PI_LO 0.0f
 #define PF_PIO4 0x1.921fb6p-1f
 
-/* atan(x) from one odd polynomial p(t) ~ atan(t) on [0, 1]:
+/* atan(x), fast variant, in float lanes with fmaf, from one odd polynomial
+   p(t) = t + t z q(z), z = t^2, p ~ atan on [0, 1] with value and slope
+   matched at both ends:
      |x| <= 1:  atan|x| = p(|x|)
      |x| >  1:  atan|x| = pi/2 - p(1/|x|)
-   The second branch is >= pi/4 and p(1/|x|) <= pi/4, so p's relative error
-   passes through at most unchanged; pi/2 = hi + lo.  |x| = inf gives 1/|x| = 0
-   and pi/2 exactly; odd symmetry restores the sign (atan(-0) = -0).
-   Branch-free: 1/|x| is computed for every input and selected. */
+   t = min(|x|, 1) / max(|x|, 1) is one division (|x| = inf gives 0 and
+   pi/2); the result is one fmaf m p + k, (m, k) = (1, 0) or (-1, pi/2).
+   The second branch is >= pi/4 and p <= pi/4, so p's relative error passes
+   through at most unchanged.  Odd symmetry restores the sign (atan(-0) =
+   -0); NaN in gives NaN through t.  Branch-free: mask blends. */
+/* m ? a : b for a mask m of all ones or zeros, on the bits: one blend in
+   the array loop, no branch in the scalar form, and no 1 / (m ? a : b)
+   rewritten by GCC as m ? 1/a : 1/b (two divisions) */
+static inline float pf_atanf_fast_pick(uint32_t m, float a, float b)
+{
+    return pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
+}
+
 static inline float pf_atanf_fast_inline(float x)
 {
     uint32_t ix = pf_asuint(x);
     float a = pf_asfloat(ix & 0x7fffffffu);
-    int big = a > 1;
-    float inv = (float)1 / (float)(big ? a : 1);
-    float t = big ? inv : (float)a;
-    float p = t * pf_horner_f(t * t, pf_atanf_fast_C, 4);
-    float r = big ? PF_PIO2_HI - (p - PF_PIO2_LO) : p;
-    /* NaN in gives NaN through t (a > 1 is false for NaN) */
-    return pf_asfloat(pf_asuint((float)r) | (ix & 0x80000000u));
+    uint32_t big = 0u - (uint32_t)(a > 1.0f);
+    float t = pf_atanf_fast_pick(big, 1.0f, a) / pf_atanf_fast_pick(big, a, 1.0f);
+    float m = pf_atanf_fast_pick(big, -1.0f, 1.0f);
+    float k = pf_asfloat(pf_asuint(PF_PIO2_HI) & big);
+    float z = t * t;
+    float p = fmaf(t * z, pf_horner_fma(z, pf_atanf_fast_C + 1, 4 - 1), t);   /* c1 = 1 */
+    return pf_asfloat(pf_asuint(fmaf(m, p, k)) | (ix & 0x80000000u));
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

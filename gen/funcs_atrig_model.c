@@ -1,0 +1,196 @@
+/* Error models of the atrig family's exact float schemes (the specs' model
+ * hooks, gen/funcs.h).  Each template computes
+ *     result = K + sg (v + c),   c = fmaf(fl(T z), q(z), lo)
+ * with v a float (the reduced argument, or 2 sqrt(w) as s + lo), q(z) the
+ * polynomial p(t) = t + t z q(z) after its c1 = 1 (fmaf Horner in float),
+ * K + sg v exact as h + l (Fast2Sum), K = khi + klo.  The bound at a point
+ * is 0.5 ULP (the last add) plus, over the ULP of the true result:
+ *   the fit's relative error times |v + c|,
+ *   q's running Horner bound times |T z| (gen/float_model.h's recurrence,
+ *   with z's own error dz),
+ *   |T z q| (u + T's relative error) for fl(T z), u |c| for the fmaf,
+ *   2u (|c| + |klo| + |l|) for the two adds before the last (|l| <= u |K|;
+ *   exact when K = 0),
+ *   the reduction's error (sqrt: 2^-35 of S; quotient: 2^-44 of q) and K's
+ *   representation (hi + lo floats: 2^-48 |K|; atan2's m A + m B: 2^-45).
+ * The max over a grid of each branch's reduced argument is the model's
+ * figure; the exhaustive sweep (pfsweep --all) is the proof. */
+#include "funcs.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#define U 0x1p-24
+#define NGRID 4096
+
+typedef struct {
+    const fit_poly *p;
+    int order;
+    double eps;      /* the emitted polynomial's max relative error */
+    double worst;    /* max bound so far, ULP */
+    double at;       /* the input where it is reached */
+} model;
+
+/* q(z) = c3 + c5 z + ... by fmaf Horner: value, *err the running bound */
+static double q_horner(const model *m, double z, double dz, double *err)
+{
+    double s = (double)m->p->c[m->order], e = 0;
+    for (int k = m->order - 2; k >= 3; k -= 2) {
+        double sn = s * z + (double)m->p->c[k];
+        e = e * fabs(z) + fabs(s) * dz + U * fabs(sn);
+        s = sn;
+    }
+    *err = e;
+    return s;
+}
+
+static double ulp_of(double r)
+{
+    int e;
+    frexp(fabs(r), &e);
+    return ldexp(1.0, (e - 1 > -126 ? e - 1 : -126) - 23);
+}
+
+/* one point: truth the true result; K, klo the constant and its low part;
+   v the main term (|T| = |v|), z and dz, rel_t T's relative error, lo the
+   low part added in c, red the reduction's absolute error in v + lo, kerr
+   the constant's representation error; x the input, for the report */
+static void point(model *m, double x, double truth, double K, double klo, double v, double z,
+                  double dz, double rel_t, double lo, double red, double kerr)
+{
+    double eq, q = q_horner(m, z, dz, &eq);
+    double tz = fabs(v * z), c = v * z * q + lo;
+    /* with K = 0 (khi = klo = 0) h = v, l = 0 and the two adds are exact */
+    double adds = K != 0 ? 2 * U * (fabs(c) + fabs(klo) + U * fabs(K)) : 0;
+    double e = m->eps * fabs(v + c) + red + kerr + tz * eq + tz * fabs(q) * (U + rel_t) +
+               U * fabs(c) + adds;
+    double b = 0.5 + e / ulp_of(truth);
+    if (b > m->worst) {
+        m->worst = b;
+        m->at = x;
+    }
+}
+
+/* One scheme per function: its bound is reported, not used to refuse.  At
+   the library's orders it is below 1 ULP; a lower order asked for with
+   --order or --target (e.g. --target float: order 11) may not be, and then
+   the text says so and the sweep decides. */
+static int finish(const model *m, pf_scheme *sc, const char *text)
+{
+    sc->ncomp = 0;
+    sc->bound_ulp = m->worst;
+    if (m->worst > 1.0)
+        snprintf(sc->text, sizeof sc->text,
+                 "%s; the model does not prove 1 ULP at this order (%.3f at x = %a)", text,
+                 m->worst, m->at);
+    else
+        snprintf(sc->text, sizeof sc->text, "%s", text);
+    return 0;
+}
+
+/* ---- asin, acos: v = |x| (or x) for |x| <= 1/2, else S = 2 sqrt((1 - |x|)/2) ---- */
+#define SQRT_TEXT                                                                                  \
+    "q(z) by fmaf Horner in float; p = v + fmaf(T z, q, lo); 2 sqrt((1-|x|)/2) = s + lo to "     \
+    "2^-35 (integer estimate, 1 Newton and 1 coupled step, fmaf residual); K + sg v exact "       \
+    "(Fast2Sum), pi/2 and pi as float hi + lo; one final rounding"
+
+static void sqrt_branch(model *m, double x, double truth, double K, double klo)
+{
+    double w = (1 - fabs(x)) / 2, S = 2 * sqrt(w);
+    point(m, x, truth, K, klo, S, w, 0, U, 5e-6 * S, 0x1p-35 * S * 1.1, 0x1p-48 * K);
+}
+
+static int model_asin_acos(const fit_poly *p, int order, pf_scheme *sc, int acos_)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio2 = acos(-1.0) / 2, klo2 = 4.37e-8, klo1 = 8.75e-8;
+    for (int i = 1; i <= NGRID; i++) {
+        double x = 0.5 * i / NGRID;               /* (0, 1/2] */
+        double xb = 0.5 + 0.5 * i / NGRID;        /* (1/2, 1] */
+        double xt = ldexp(0.5, -i * 40 / NGRID);  /* toward 0 */
+        xb = xb < 1 ? xb : 1 - 0x1p-24;
+        if (!acos_) {
+            point(&m, x, asin(x), 0, 0, x, x * x, U * x * x, 0, 0, 0, 0);
+            point(&m, xt, asin(xt), 0, 0, xt, xt * xt, U * xt * xt, 0, 0, 0, 0);
+            sqrt_branch(&m, xb, asin(xb), pio2, klo2);
+        } else {
+            point(&m, x, acos(x), pio2, klo2, x, x * x, U * x * x, 0, 0, 0, 0x1p-48 * pio2);
+            point(&m, -x, acos(-x), pio2, klo2, x, x * x, U * x * x, 0, 0, 0, 0x1p-48 * pio2);
+            sqrt_branch(&m, xb, acos(xb), 0, 0);
+            sqrt_branch(&m, -xb, acos(-xb), 2 * pio2, klo1);
+        }
+    }
+    return finish(&m, sc, SQRT_TEXT);
+}
+
+int pf_model_asin(const fit_poly *p, int order, pf_scheme *sc)
+{
+    return model_asin_acos(p, order, sc, 0);
+}
+
+int pf_model_acos(const fit_poly *p, int order, pf_scheme *sc)
+{
+    return model_asin_acos(p, order, sc, 1);
+}
+
+/* ---- atan, atan2: q = qh + ql to 2^-44 (the quotient's fmaf residual) ---- */
+#define QUOT_TEXT                                                                                  \
+    "q(z) by fmaf Horner in float; p = qh + fmaf(qh z, q, ql); the reduced argument as qh + ql " \
+    "(one division 1/den, fmaf residual, den = hi + lo); K + sg qh exact (Fast2Sum), K as float " \
+    "hi + lo; one final rounding"
+
+/* result K + sg atan(q); qh is off q by up to 2u |q| (ql), which moves z
+   and T: dz = 5u z, rel_t = 2u; exact: q = |x| (atan, |x| <= 1/2), z = fl(q q) */
+static void quot_point(model *m, double x, double truth, double K, double klo, double q,
+                       double kerr, int exact)
+{
+    double z = q * q;
+    if (exact)
+        point(m, x, truth, K, klo, q, z, U * z, 0, 0, 0, kerr);
+    else
+        point(m, x, truth, K, klo, q, z, 5 * U * z, 2 * U, 2 * U * fabs(q), 0x1p-44 * fabs(q),
+              kerr);
+}
+
+int pf_model_atan(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio4 = atan(1.0), l4 = 3.4e-8;
+    for (int i = 1; i <= NGRID; i++) {
+        double a = 0.5 * i / NGRID;                            /* (0, 1/2] */
+        double at = ldexp(0.5, -i * 40 / NGRID);
+        double am = 0.5 + 1.5 * i / NGRID;                     /* (1/2, 2] */
+        double ab = 2 * pow(2.0, 40.0 * i / NGRID);            /* (2, 2^41] */
+        quot_point(&m, a, atan(a), 0, 0, a, 0, 1);
+        quot_point(&m, at, atan(at), 0, 0, at, 0, 1);
+        quot_point(&m, am, atan(am), pio4, l4, (am - 1) / (am + 1), 0x1p-48 * pio4, 0);
+        quot_point(&m, ab, atan(ab), 2 * pio4, 2 * l4, -1 / ab, 0x1p-47 * pio4, 0);
+    }
+    return finish(&m, sc, QUOT_TEXT);
+}
+
+int pf_model_atan2(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio4 = atan(1.0);
+    for (int mid = 0; mid <= 1; mid++)
+        for (int swap = 0; swap <= 1; swap++)
+            for (int negx = 0; negx <= 1; negx++) {
+                int k = mid;
+                k = swap ? 2 - k : k;
+                k = negx ? 4 - k : k;
+                double sg = swap != negx ? -1 : 1, K = k * pio4;
+                for (int i = 1; i <= NGRID; i++) {
+                    /* the ratio n/d: (0, 1/2] or (1/2, 1], and toward 0 */
+                    double t = mid ? 0.5 + 0.5 * i / NGRID : 0.5 * i / NGRID;
+                    double q = mid ? (t - 1) / (t + 1) : t;
+                    double truth = K + sg * (atan(t) - (mid ? pio4 : 0));
+                    quot_point(&m, t, truth, K, k * 0x1p-22, q, 0x1p-45 * K, 0);
+                    if (!mid) {
+                        double tt = ldexp(0.5, -i * 40 / NGRID);
+                        quot_point(&m, tt, K + sg * atan(tt), K, k * 0x1p-22, tt, 0x1p-45 * K, 0);
+                    }
+                }
+            }
+    return finish(&m, sc, QUOT_TEXT);
+}

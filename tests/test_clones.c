@@ -1,0 +1,277 @@
+/* Every clone gives the same bits.
+ *
+ * The library's scalar and array forms are GCC target_clones (x86-64-v4,
+ * x86-64-v3, default) behind an ifunc; the loader picks one, so a user on
+ * another CPU runs other code.  The promise is that the choice never shows:
+ * fmaf is correctly rounded on every level, no FMA contraction, no
+ * reassociation.  This test holds the library to it: for every float
+ * function (exact and fast) it calls the dispatched scalar form, each scalar
+ * clone and each array clone the CPU can run, on a sample of inputs
+ * (special values, every exponent by random bit patterns, the function's
+ * own domain), and requires bit-identical results, NaN bits included.
+ *
+ * The clones are local symbols (pf_logf_array.arch_x86_64_v3, ...): they are
+ * found in the shared object's static symbol table (.symtab) and called at
+ * load base + st_value.  A library without that table (stripped, or built
+ * by a compiler without target_clones) has nothing to compare: the test is
+ * skipped then, and says so. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <dlfcn.h>
+#include <elf.h>
+#include <fcntl.h>
+#include <link.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "testutil.h"
+
+typedef float (*fn1)(float);
+typedef float (*fn2)(float, float);
+typedef void (*arr1)(const float *, float *, size_t);
+typedef void (*arr2)(const float *, const float *, float *, size_t);
+
+static void *lib;
+static uintptr_t base;
+static const Elf64_Sym *syms;
+static size_t nsyms;
+static const char *strs;
+
+/* ---- .symtab of the library file ---- */
+static void map_symtab(const char *path)
+{
+    int fd = open(path, O_RDONLY);
+    if (fd < 0)
+        return;
+    struct stat st;
+    void *m = MAP_FAILED;
+    if (fstat(fd, &st) == 0 && (size_t)st.st_size >= sizeof(Elf64_Ehdr))
+        m = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
+    close(fd);
+    if (m == MAP_FAILED)
+        return;
+    const unsigned char *b = m;
+    size_t size = (size_t)st.st_size;
+    const Elf64_Ehdr *eh = m;
+    if (memcmp(eh->e_ident, ELFMAG, SELFMAG) || eh->e_ident[EI_CLASS] != ELFCLASS64 ||
+        eh->e_shentsize != sizeof(Elf64_Shdr) ||
+        eh->e_shoff + (size_t)eh->e_shnum * sizeof(Elf64_Shdr) > size)
+        return;
+    const Elf64_Shdr *sh = (const Elf64_Shdr *)(b + eh->e_shoff);
+    for (int i = 0; i < eh->e_shnum; i++) {
+        if (sh[i].sh_type != SHT_SYMTAB || sh[i].sh_link >= eh->e_shnum)
+            continue;
+        const Elf64_Shdr *ss = &sh[sh[i].sh_link];
+        if (sh[i].sh_offset + sh[i].sh_size > size || ss->sh_offset + ss->sh_size > size ||
+            ss->sh_size == 0 || b[ss->sh_offset + ss->sh_size - 1] != 0)
+            return;
+        syms = (const Elf64_Sym *)(b + sh[i].sh_offset);
+        nsyms = sh[i].sh_size / sizeof(Elf64_Sym);
+        strs = (const char *)(b + ss->sh_offset);
+        return;
+    }
+}
+
+/* address of a defined function symbol (the clones are local), or NULL */
+static void *sym_addr(const char *name)
+{
+    for (size_t i = 0; i < nsyms; i++)
+        if (ELF64_ST_TYPE(syms[i].st_info) == STT_FUNC && syms[i].st_shndx != SHN_UNDEF &&
+            strcmp(strs + syms[i].st_name, name) == 0)
+            return (void *)(base + syms[i].st_value);
+    return NULL;
+}
+
+static int setup(void **state)
+{
+    (void)state;
+    char p[PATH_MAX];
+    tu_prog_path("libpfmath.so", p, sizeof p);
+    lib = dlopen(p, RTLD_NOW | RTLD_LOCAL);
+    if (!lib) {
+        fprintf(stderr, "dlopen %s: %s\n", p, dlerror());
+        return -1;
+    }
+    struct link_map *lm = NULL;
+    if (dlinfo(lib, RTLD_DI_LINKMAP, &lm) == 0 && lm)
+        base = (uintptr_t)lm->l_addr;
+    map_symtab(p);
+    __builtin_cpu_init();
+    return 0;
+}
+
+/* ---- inputs ---- */
+static uint64_t rng = 0x9e3779b97f4a7c15u;
+static uint32_t next32(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (uint32_t)(rng >> 16);
+}
+static float bits(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+static uint32_t asu(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+#define NIN 200000
+#define NSPEC 64
+
+static const float special[] = {
+    0.0f, -0.0f, INFINITY, -INFINITY, NAN, -NAN, 1.0f, -1.0f, 0.5f, -0.5f, 2.0f, -2.0f,
+    0x1p-149f, -0x1p-149f, 0x1p-126f, -0x1p-126f, 0x1.fffffep-127f, 0x1.fffffep+127f,
+    -0x1.fffffep+127f, 0x1p-24f, 0x1p-12f, 0x1p24f, 0x1p63f, 0x1p100f, 0x1p127f,
+    0x1.921fb6p+0f, -0x1.921fb6p+0f, 0x1.921fb6p+1f, 0x1.921fb6p+2f, 0x1.62e43p+6f,
+    -0x1.9fe368p+6f, 0x1.5p+7f, -0x1.2cp+7f, 0x1.fffffep-1f, 0x1.000002p+0f,
+    0x1.6a09e6p-1f, 0x1.a8279ap-2f, 0x1.3504f4p+1f, 0x1.000002p-1f, 0x1.fffffep-2f,
+    1e30f, -1e30f, 1e4f, -1e4f, 3.0f, 0.1f, 88.7f, -103.9f, 128.0f, -150.0f,
+};
+
+/* the function's own domain, for the uniform share of the sample */
+static void domain(const char *f, float *lo, float *hi)
+{
+    *lo = -4, *hi = 4;
+    if (!strcmp(f, "asin") || !strcmp(f, "acos"))
+        *lo = -1, *hi = 1;
+    else if (!strcmp(f, "exp") || !strcmp(f, "exp2"))
+        *lo = -150, *hi = 130;
+    else if (!strcmp(f, "log") || !strcmp(f, "log2"))
+        *lo = 0, *hi = 4;
+    else if (!strcmp(f, "sin") || !strcmp(f, "cos") || !strcmp(f, "tan"))
+        *lo = -1e4, *hi = 1e4;
+}
+
+static void fill(const char *f, float *x, size_t n, int which)
+{
+    float lo, hi;
+    domain(f, &lo, &hi);
+    size_t ns = sizeof special / sizeof special[0];
+    for (size_t i = 0; i < n; i++) {
+        uint32_t r = next32();
+        if (i < ns * ns)   /* every special value, and for atan2 every pair of them */
+            x[i] = which ? special[i % ns] : special[(i / ns) % ns];
+        else if (i % 3 == 0)   /* any bit pattern: every exponent, NaN payloads */
+            x[i] = bits(r);
+        else if (i % 3 == 1)
+            x[i] = lo + (hi - lo) * (float)(r >> 8) * 0x1p-24f;
+        else   /* small neighbourhoods of the specials (seams, thresholds) */
+            x[i] = bits(asu(special[r % ns]) + (r >> 26) - 32);
+    }
+}
+
+/* ---- the comparison ---- */
+static const char *funcs[] = {"log", "log2", "exp", "exp2", "sin", "cos", "tan",
+                              "asin", "acos", "atan", "atan2"};
+static const char *levels[] = {"arch_x86_64_v4", "arch_x86_64_v3", "default"};
+static int can_run(int l)
+{
+    return l == 0 ? __builtin_cpu_supports("x86-64-v4") : l == 1 ? __builtin_cpu_supports("x86-64-v3") : 1;
+}
+
+static int first_diff(const float *a, const float *b, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (memcmp(&a[i], &b[i], sizeof(float)))
+            return (int)i;
+    return -1;
+}
+
+/* compares every clone of pf_<f>f<sfx> and pf_<f>f<sfx>_array with the
+   dispatched scalar form; returns the number of clones compared */
+static int check_one(const char *f, const char *sfx, const float *x, const float *y,
+                     float *ref, float *out)
+{
+    char name[96], cname[128];
+    snprintf(name, sizeof name, "pf_%sf%s", f, sfx);
+    int two = !strcmp(f, "atan2");
+    void *s = dlsym(lib, name);
+    if (!s) {
+        print_message("%s not in the library\n", name);
+        return -1;
+    }
+    for (size_t i = 0; i < NIN; i++)
+        ref[i] = two ? ((fn2)s)(y[i], x[i]) : ((fn1)s)(x[i]);
+    int compared = 0;
+    for (int l = 0; l < 3; l++) {
+        if (!can_run(l))
+            continue;
+        for (int arr = 0; arr <= 1; arr++) {
+            snprintf(cname, sizeof cname, "%s%s.%s", name, arr ? "_array" : "", levels[l]);
+            void *c = sym_addr(cname);
+            if (!c) {
+                print_message("%s: no such clone\n", cname);
+                return -1;
+            }
+            memset(out, 0, NIN * sizeof *out);
+            if (arr && two)
+                ((arr2)c)(y, x, out, NIN);
+            else if (arr)
+                ((arr1)c)(x, out, NIN);
+            else
+                for (size_t i = 0; i < NIN; i++)
+                    out[i] = two ? ((fn2)c)(y[i], x[i]) : ((fn1)c)(x[i]);
+            int d = first_diff(ref, out, NIN);
+            if (d >= 0) {
+                print_message("%s differs from %s at x = %a (%08x)%s%a: %a vs %a\n", cname, name,
+                              (double)x[d], asu(x[d]),
+                              two ? ", y = " : "", two ? (double)y[d] : 0.0, (double)out[d],
+                              (double)ref[d]);
+                return -1;
+            }
+            compared++;
+        }
+    }
+    return compared;
+}
+
+static void test_clones_identical(void **state)
+{
+    (void)state;
+    if (!syms || !sym_addr("pf_logf.default")) {
+        print_message("libpfmath.so has no clone symbols (stripped, or no target_clones)\n");
+        skip();
+    }
+    float *x = malloc(NIN * sizeof *x), *y = malloc(NIN * sizeof *y);
+    float *ref = malloc(NIN * sizeof *ref), *out = malloc(NIN * sizeof *out);
+    assert_non_null(x), assert_non_null(y), assert_non_null(ref), assert_non_null(out);
+    int bad = 0, total = 0;
+    for (size_t k = 0; k < sizeof funcs / sizeof funcs[0]; k++) {
+        fill(funcs[k], x, NIN, 1);
+        fill(funcs[k], y, NIN, 0);
+        for (int fast = 0; fast <= 1; fast++) {
+            int c = check_one(funcs[k], fast ? "_fast" : "", x, y, ref, out);
+            if (c < 0)
+                bad++;
+            else
+                total += c;
+        }
+    }
+    print_message("%d clones compared on %d inputs each\n", total, NIN);
+    free(x), free(y), free(ref), free(out);
+    assert_int_equal(bad, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_clones_identical),
+    };
+    return cmocka_run_group_tests(tests, setup, NULL);
+}
