@@ -140,7 +140,11 @@ static inline float pf_expf_inline(float x)
     float s2 = pf_asfloat((zb << 23) - e1);
     float res = y * s1 * s2;
     res = x > 100.0f ? (float)INFINITY : res;
-    return x < -110.0f ? 0.0f : res;
+    res = x < -110.0f ? 0.0f : res;
+    /* NaN fails both tests above; returning x + x (the input quieted) keeps
+       every clone's bits equal: the arithmetic's own NaN takes its sign from
+       whichever operand order a clone's fmaf picked */
+    return x != x ? x + x : res;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
