@@ -192,18 +192,23 @@ static int extra_trig_double(char *buf, size_t n)
     return len;
 }
 
-/* Fast variants: pi/2 in three float parts (24 bits each, the last rounded);
-   with FMA, fma(-m, P1, x) is exact for |x| >= 1 (a multiple of 2^-23 below
-   2) and each later step rounds once, so for |x| < 2^17 r is right to about
-   2^-23 relative even next to a multiple of pi/2 (the smallest |r| there,
-   2^-27.9, is far above m (pi/2 - P1 - P2 - P3) < 2^-55). */
-#define FAST_PARTS 3
+/* Fast variants: pi/2 in float parts of 24 bits (the last rounded); with
+   FMA, fma(-m, P1, x) is exact for |x| >= 1 (a multiple of 2^-23 below 2)
+   and each later step rounds once.  For |x| < 2^17 (m < 2^17):
+   - sin, cos: two parts, r within 2^-24 + m (pi/2 - P1 - P2) < 2^-23
+     absolute, far inside the absolute allowance 2^-11 of the fast bound
+     max(2^-10 relative, 2^-11 absolute), which is all the zeros of sin and
+     cos need;
+   - tan: three parts, r right to about 2^-23 relative even next to a
+     multiple of pi/2 (the smallest |r| there, 2^-27.9, is far above
+     m (pi/2 - P1 - P2 - P3) < 2^-55), which the poles need: there the bound
+     is relative and tan = -1/r (1 + O(r^2)). */
 #define FAST_LOG2 17
-static int extra_trig_float(char *buf, size_t n)
+static int extra_trig_float(char *buf, size_t n, int nparts)
 {
-    double part[FAST_PARTS];
-    int bits[FAST_PARTS - 1] = {24, 24};
-    pio2_split(FAST_PARTS, bits, 24, part);
+    double part[3];
+    int bits[2] = {24, 24};
+    pio2_split(nparts, bits, 24, part);
     int len = snprintf(buf, n,
                        "/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c):\n"
                        "   2/pi rounded to float; pi/2 = sum PF_TRIG_PIO2F[i] (Cody-Waite with\n"
@@ -211,8 +216,8 @@ static int extra_trig_float(char *buf, size_t n)
                        "static const float PF_TRIG_2OPIF = %af;\n"
                        "#define PF_TRIG_NPARTS %d\n"
                        "static const float PF_TRIG_PIO2F[PF_TRIG_NPARTS] = {",
-                       FAST_LOG2, twoopi(24, 0), FAST_PARTS);
-    for (int i = 0; i < FAST_PARTS && len >= 0 && (size_t)len < n; i++)
+                       FAST_LOG2, twoopi(24, 0), nparts);
+    for (int i = 0; i < nparts && len >= 0 && (size_t)len < n; i++)
         len += snprintf(buf + len, n - (size_t)len, "%s%af", i ? ", " : "", part[i]);
     if (len >= 0 && (size_t)len < n)
         len += snprintf(buf + len, n - (size_t)len,
@@ -222,6 +227,8 @@ static int extra_trig_float(char *buf, size_t n)
         len += extra_ph(buf + len, n - (size_t)len);
     return len;
 }
+static int extra_sincos_float(char *buf, size_t n) { return extra_trig_float(buf, n, 2); }
+static int extra_tan_float(char *buf, size_t n) { return extra_trig_float(buf, n, 3); }
 
 /* Error model of the exact variants (double evaluation): the reduction and
    Horner's rule in double add under 2^-48 relative (the reduction's 2^-49
@@ -275,7 +282,7 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
      .reduction_text = red RED_FAST, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,      \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = SIN_FAST_CON,                \
      .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .kscale = phase,                  \
-     .extra = extra_trig_float}
+     .extra = extra_sincos_float}
 
 const pf_spec pf_specs_trig[] = {
     ROW_SIN_EXACT("sin", "0", SIN_RED),
@@ -290,6 +297,6 @@ const pf_spec pf_specs_trig[] = {
     {.func = "tan", .reduction = "pio2", .variant = "fast", .tmpl = "tan_pio2_fast", .arity = 1,
      .reduction_text = TAN_RED RED_FAST, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = TAN_FAST_CON,
-     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_trig_float},
+     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_tan_float},
     {0},
 };

@@ -95,8 +95,8 @@ static const float pf_sinf_fast_C[3] = {
    2/pi rounded to float; pi/2 = sum PF_TRIG_PIO2F[i] (Cody-Waite with
    FMA), 24-bit parts, the last rounded; for |x| < 2^17. */
 static const float PF_TRIG_2OPIF = 0x1.45f306p-1f;
-#define PF_TRIG_NPARTS 3
-static const float PF_TRIG_PIO2F[PF_TRIG_NPARTS] = {0x1.921fb4p+0f, 0x1.4442dp-24f, 0x1.84698ap-48f};
+#define PF_TRIG_NPARTS 2
+static const float PF_TRIG_PIO2F[PF_TRIG_NPARTS] = {0x1.921fb4p+0f, 0x1.4442d2p-24f};
 static const uint32_t PF_TRIG_CW_LIMIT = 0x48000000u; /* bits of 2^17 */
 /* Payne-Hanek for the rare large |x|: r = f * PF_TRIG_PIO2_2M62, f the signed
    62-bit fraction of |x| * 2/pi */
@@ -120,18 +120,22 @@ static const uint32_t PF_TRIG_2OPI_BITS[40] = {
    The polynomial matches sin's value and slope at r = pi/2, so the folds at
    x + s pi/2 = (k + 1/2) pi are continuous with a continuous slope.  Two
    paths, chosen per input the same way in the scalar and the array form:
-   - Cody-Waite with FMA on x itself (signed), three 24-bit parts of pi/2,
-     for |x| < 2^17: r right to about 2^-23 relative even next to the zeros;
+   - Cody-Waite with FMA on x itself (signed), two 24-bit parts of pi/2,
+     for |x| < 2^17: r within 2^-23 absolute, far inside the bound's 2^-11;
    - Payne-Hanek (|x| 2/pi mod 4 in 2.62 fixed point) for |x| >= 2^17, inf,
      NaN (and cos's |x| < 2^-12, where cos x rounds to 1): the array form
      redoes only the blocks holding such a lane. */
 static inline float pf_sinf_fast_eval(float r)
 {
-    float p = r * pf_horner_fma(r * r, pf_sinf_fast_C, 3);
+    /* on |r|, so that p >= 0 and one minimum clamps it; sin is odd */
+    uint32_t rb = pf_asuint(r);
+    float ra = pf_asfloat(rb & 0x7fffffffu);
+    float p = ra * pf_horner_fma(ra * ra, pf_sinf_fast_C, 3);
     /* p(pi/2) = 1 holds to the rounding of the coefficients and of Horner's
        rule (a few ulps either way): clamp so |f| <= 1 always */
-    p = p < 1.0f ? p : 1.0f;
-    return p > -1.0f ? p : -1.0f;
+    uint32_t pb = pf_asuint(p);
+    pb = pb < 0x3f800000u ? pb : 0x3f800000u; /* p >= 0: an integer minimum on the bits */
+    return pf_asfloat(pb ^ (rb & 0x80000000u));
 }
 
 /* e = the even integer nearest x 2/pi + s (the shifter 1.5 2^24 has an ulp
@@ -183,20 +187,21 @@ static __attribute__((noinline)) float pf_sinf_fast_rare(float x)
     return pf_asfloat(pf_asuint(p) ^ sign);
 }
 
-/* |x| >= 2^17, inf, NaN, and for cos |x| < 2^-12: one unsigned compare,
-   (|x| - lo) wraps below lo */
-static inline int pf_sinf_fast_is_rare(uint32_t ix)
-{
-    const uint32_t lo = 0 ? 0x39800000u : 0;
-    return (ix & 0x7fffffffu) - lo >= PF_TRIG_CW_LIMIT - lo;
-}
+/* Rare: |x| >= 2^17, inf, NaN, and for cos |x| < 2^-12.  The key is
+   2|x| - 2 lo in bits (the sign shifted out; below lo it wraps to the top),
+   what the array form's scan takes the maximum of. */
+#define pf_sinf_fast_RARE_LO (0 ? 0x39800000u : 0)
+static inline uint32_t pf_sinf_fast_rare_key(uint32_t ix) { return (ix << 1) - (pf_sinf_fast_RARE_LO << 1); }
+#define pf_sinf_fast_RARE_KEY ((PF_TRIG_CW_LIMIT - pf_sinf_fast_RARE_LO) << 1)
+static inline int pf_sinf_fast_is_rare(uint32_t ix) { return pf_sinf_fast_rare_key(ix) >= pf_sinf_fast_RARE_KEY; }
 
 static inline float pf_sinf_fast_inline(float x)
 {
     return pf_sinf_fast_is_rare(pf_asuint(x)) ? pf_sinf_fast_rare(x) : pf_sinf_fast_cw(x);
 }
 
-/* Array form, per block of 128: a vectorized scan for rare lanes, then the
+/* Array form, per block of 128: a vectorized scan for rare lanes (the
+   largest key: two operations a vector), then the
    branch-free Cody-Waite loop (vectorized) or, for a block holding a rare
    lane, the scalar form on each element.  Both compute the same function of
    x, so the array is bit-identical to the scalar form; each block reads x[i]
@@ -210,10 +215,12 @@ void pf_sinf_fast_array(const float *restrict x, float *restrict y, size_t n)
         size_t nb = n - i0 < 128 ? n - i0 : 128;
         const float *xb = x + i0;
         float *yb = y + i0;
-        uint32_t rare = 0;
-        for (size_t i = 0; i < nb; i++)
-            rare |= (uint32_t)pf_sinf_fast_is_rare(pf_asuint(xb[i]));
-        if (!rare) {
+        uint32_t key = 0;
+        for (size_t i = 0; i < nb; i++) {
+            uint32_t k = pf_sinf_fast_rare_key(pf_asuint(xb[i]));
+            key = key > k ? key : k;
+        }
+        if (key < pf_sinf_fast_RARE_KEY) {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif

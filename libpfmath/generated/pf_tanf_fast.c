@@ -174,14 +174,19 @@ static __attribute__((noinline)) float pf_tanf_fast_rare(float x)
     return pf_asfloat(pf_asuint(v) ^ (ix & 0x80000000u));
 }
 
-static inline int pf_tanf_fast_is_rare(uint32_t ix) { return (ix & 0x7fffffffu) >= PF_TRIG_CW_LIMIT; }
+/* Rare: |x| >= 2^17, inf, NaN.  The key 2|x| (in bits, the sign shifted
+   out) is what the array form's scan takes the maximum of. */
+static inline uint32_t pf_tanf_fast_rare_key(uint32_t ix) { return ix << 1; }
+#define pf_tanf_fast_RARE_KEY (PF_TRIG_CW_LIMIT << 1)
+static inline int pf_tanf_fast_is_rare(uint32_t ix) { return pf_tanf_fast_rare_key(ix) >= pf_tanf_fast_RARE_KEY; }
 
 static inline float pf_tanf_fast_inline(float x)
 {
     return pf_tanf_fast_is_rare(pf_asuint(x)) ? pf_tanf_fast_rare(x) : pf_tanf_fast_cw(x);
 }
 
-/* Array form, per block of 128: a vectorized scan for rare lanes, then the
+/* Array form, per block of 128: a vectorized scan for rare lanes (the
+   largest key: two operations a vector), then the
    branch-free Cody-Waite loop (vectorized) or, for a block holding a rare
    lane, the scalar form on each element.  Both compute the same function of
    x, so the array is bit-identical to the scalar form; each block reads x[i]
@@ -195,10 +200,12 @@ void pf_tanf_fast_array(const float *restrict x, float *restrict y, size_t n)
         size_t nb = n - i0 < 128 ? n - i0 : 128;
         const float *xb = x + i0;
         float *yb = y + i0;
-        uint32_t rare = 0;
-        for (size_t i = 0; i < nb; i++)
-            rare |= (uint32_t)pf_tanf_fast_is_rare(pf_asuint(xb[i]));
-        if (!rare) {
+        uint32_t key = 0;
+        for (size_t i = 0; i < nb; i++) {
+            uint32_t k = pf_tanf_fast_rare_key(pf_asuint(xb[i]));
+            key = key > k ? key : k;
+        }
+        if (key < pf_tanf_fast_RARE_KEY) {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
