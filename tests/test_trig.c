@@ -407,27 +407,40 @@ static void test_fast_seams(void **st)
 }
 
 /* ---- array forms ---- */
+/* Three mixes, so each of the array form's block paths runs: half random
+   bits (most blocks hold many rare lanes: both paths, selected), every
+   37th lane rare (a few per block: Cody-Waite, then the rare lanes one by
+   one) and none rare but specials at the start; also in place (y == x). */
 static void test_arrays_match_scalar(void **st)
 {
     (void)st;
     enum { N = 4099 };
-    static float x[N], y[N];
-    uint64_t s = 5;
-    for (int i = 0; i < N; i++) {
-        s = s * 6364136223846793005ull + 1442695040888963407ull;
-        uint32_t b = (uint32_t)(s >> 32);
-        /* half of them in the range where most calls land */
-        x[i] = i & 1 ? asf(b) : ((float)(b >> 8) * 0x1p-24f - 0.5f) * 2000;
-    }
-    x[0] = INFINITY, x[1] = -0.0f, x[2] = NAN, x[3] = 1e22f, x[4] = FLT_MAX;
+    static float x[N], y[N], z[N];
     void (*arr[6])(const float *, float *, size_t) = {pf_sinf_array, pf_sinf_fast_array, pf_cosf_array,
                                                        pf_cosf_fast_array, pf_tanf_array, pf_tanf_fast_array};
     float (*sc[6])(float) = {pf_sinf, pf_sinf_fast, pf_cosf, pf_cosf_fast, pf_tanf, pf_tanf_fast};
-    for (int f = 0; f < 6; f++) {
-        arr[f](x, y, N);
+    for (int mix = 0; mix < 3; mix++) {
+        uint64_t s = 5 + (uint64_t)mix;
         for (int i = 0; i < N; i++) {
-            float z = sc[f](x[i]);
-            assert_true(memcmp(&z, &y[i], 4) == 0 || (isnan(z) && isnan(y[i])));
+            s = s * 6364136223846793005ull + 1442695040888963407ull;
+            uint32_t b = (uint32_t)(s >> 32);
+            float small = ((float)(b >> 8) * 0x1p-24f - 0.5f) * 2000;
+            int rare = mix == 0 ? i & 1 : mix == 1 ? i % 37 == 5 : 0;
+            x[i] = rare ? asf(b) : small;
+        }
+        if (mix != 2)
+            x[0] = INFINITY, x[1] = -0.0f, x[2] = NAN, x[3] = 1e22f, x[4] = FLT_MAX;
+        else
+            x[0] = 0.0f, x[1] = -0.0f, x[2] = 0x1p-140f;
+        for (int f = 0; f < 6; f++) {
+            arr[f](x, y, N);
+            memcpy(z, x, sizeof z);
+            arr[f](z, z, N); /* in place */
+            for (int i = 0; i < N; i++) {
+                float w = sc[f](x[i]);
+                assert_true(memcmp(&w, &y[i], 4) == 0 || (isnan(w) && isnan(y[i])));
+                assert_true(memcmp(&w, &z[i], 4) == 0 || (isnan(w) && isnan(z[i])));
+            }
         }
     }
 }

@@ -123,8 +123,8 @@ static const uint32_t PF_TRIG_2OPI_BITS[40] = {
    - Cody-Waite with FMA on x itself (signed), two 24-bit parts of pi/2,
      for |x| < 2^17: r within 2^-23 absolute, far inside the bound's 2^-11;
    - Payne-Hanek (|x| 2/pi mod 4 in 2.62 fixed point) for |x| >= 2^17, inf,
-     NaN (and cos's |x| < 2^-12, where cos x rounds to 1): the array form
-     redoes only the blocks holding such a lane. */
+     NaN (and cos's |x| < 2^-12, where cos x rounds to 1): only the array
+     form's blocks holding such a lane compute it. */
 static inline float pf_cosf_fast_eval(float r)
 {
     /* on |r|, so that p >= 0 and one minimum clamps it; sin is odd */
@@ -158,33 +158,45 @@ static inline float pf_cosf_fast_cw(float x)
 
 /* Payne-Hanek: y = |x| 2/pi mod 4 in 2.62 fixed point.  |x| = mx 2^(e-150-(e&7))
    with mx the significand shifted left by e&7 (< 2^31); bits of 2/pi above the
-   window contribute multiples of 4, below it less than 2^-62. */
-static uint64_t pf_cosf_fast_ph_y(uint32_t ia)
+   window contribute multiples of 4, below it less than 2^-62 (error under 2
+   units of 2^-62).  Branch-free, so the array form's loop for blocks holding
+   a rare lane vectorizes it (the three words become gathers): the exponent
+   is clamped so inf/NaN keep a valid index, and the index needs no select in
+   front of the loads (a select there turns them into masked loads, which GCC
+   does not vectorize). */
+static inline uint64_t pf_cosf_fast_ph_y(uint32_t ia)
 {
     uint32_t e = ia >> 23;
+    e = e < 255 ? e : 254;
     uint32_t j = e >> 3, mx = ((ia & 0x007fffffu) | 0x00800000u) << (e & 7);
     uint32_t w0 = PF_TRIG_2OPI_BITS[j], w1 = PF_TRIG_2OPI_BITS[j + 4], w2 = PF_TRIG_2OPI_BITS[j + 8];
     return ((uint64_t)(mx * w0) << 32) + (uint64_t)mx * w1 + (((uint64_t)mx * w2) >> 32);
 }
 
-/* The rare inputs (kept out of line: the array form's vector loop never
-   calls it) */
-static __attribute__((noinline)) float pf_cosf_fast_rare(float x)
+/* f (a signed fixed-point fraction) times 2^-62 pi/2 in double; the int64
+   is converted in two exact 32-bit halves (an int64 conversion does not
+   vectorize without AVX-512DQ), the sum rounds once like (double)f */
+static inline double pf_cosf_fast_ph_r(int64_t f)
+{
+    return ((double)(int32_t)(f >> 32) * 0x1p32 + (double)(uint32_t)f) * PF_TRIG_PIO2_2M62;
+}
+
+/* The rare inputs: |x| >= 2^17, inf, NaN, and for cos |x| < 2^-12 (any
+   input gives a value) */
+static inline float pf_cosf_fast_ph(float x)
 {
     enum { PHASE = 1 };
     uint32_t ix = pf_asuint(x), ia = ix & 0x7fffffffu;
-    if (ia >= 0x7f800000u)
-        return x - x;
-    /* cos x = 1 for |x| < 2^-12 (1 - x^2/2 rounds to 1): C99 F.9.1.5 wants
-       cos(+-0) = 1 exactly, which p(pi/2) in float misses by a few ulps */
-    if (PHASE && ia < 0x39800000u)
-        return 1.0f;
     uint64_t y = pf_cosf_fast_ph_y(ia) + ((uint64_t)PHASE << 62); /* + s: units of pi/2 */
     uint64_t k = (y + (1ull << 62)) >> 63;                   /* round(y / 2) mod 2 */
     int64_t f = (int64_t)(y - (k << 63));                    /* y - 2k in [-1, 1], 2^62 units */
-    float p = pf_cosf_fast_eval((float)((double)f * PF_TRIG_PIO2_2M62));
+    float p = pf_cosf_fast_eval((float)pf_cosf_fast_ph_r(f));
     uint32_t sign = (uint32_t)k << 31 ^ (PHASE ? 0 : ix & 0x80000000u);
-    return pf_asfloat(pf_asuint(p) ^ sign);
+    float res = pf_asfloat(pf_asuint(p) ^ sign);
+    /* cos x = 1 for |x| < 2^-12 (1 - x^2/2 rounds to 1): C99 F.9.1.5 wants
+       cos(+-0) = 1 exactly, which p(pi/2) in float misses by a few ulps */
+    res = PHASE && ia < 0x39800000u ? 1.0f : res;
+    return ia < 0x7f800000u ? res : x - x;
 }
 
 /* Rare: |x| >= 2^17, inf, NaN, and for cos |x| < 2^-12.  The key is
@@ -195,17 +207,30 @@ static inline uint32_t pf_cosf_fast_rare_key(uint32_t ix) { return (ix << 1) - (
 #define pf_cosf_fast_RARE_KEY ((PF_TRIG_CW_LIMIT - pf_cosf_fast_RARE_LO) << 1)
 static inline int pf_cosf_fast_is_rare(uint32_t ix) { return pf_cosf_fast_rare_key(ix) >= pf_cosf_fast_RARE_KEY; }
 
+/* The scalar form: a branch, the rare side hinted as such */
 static inline float pf_cosf_fast_inline(float x)
 {
-    return pf_cosf_fast_is_rare(pf_asuint(x)) ? pf_cosf_fast_rare(x) : pf_cosf_fast_cw(x);
+    return __builtin_expect(pf_cosf_fast_is_rare(pf_asuint(x)), 0) ? pf_cosf_fast_ph(x) : pf_cosf_fast_cw(x);
+}
+
+/* Payne-Hanek on one lane, out of line so the fix-up loop below stays
+   scalar, and cloned like its callers (so fma is one instruction there) */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#endif
+static __attribute__((noinline)) float pf_cosf_fast_ph_lane(float x)
+{
+    return pf_cosf_fast_ph(x);
 }
 
 /* Array form, per block of 128: a vectorized scan for rare lanes (the
-   largest key: two operations a vector), then the
-   branch-free Cody-Waite loop (vectorized) or, for a block holding a rare
-   lane, the scalar form on each element.  Both compute the same function of
-   x, so the array is bit-identical to the scalar form; each block reads x[i]
-   before writing y[i], so in-place calls stay right. */
+   largest key: two operations a vector); a block without one runs the
+   branch-free Cody-Waite loop.  A block with a few rare lanes (at most 16)
+   runs that loop too, on a copy of x (in-place calls), and redoes the rare
+   lanes one by one; one with more computes both paths for every lane and
+   selects (vectorized, the table reads as gathers).  Every lane takes the
+   same path by the same test as the scalar form, so the array is
+   bit-identical to it. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
@@ -226,9 +251,30 @@ void pf_cosf_fast_array(const float *restrict x, float *restrict y, size_t n)
 #endif
             for (size_t i = 0; i < nb; i++)
                 yb[i] = pf_cosf_fast_cw(xb[i]);
-        } else {
+            continue;
+        }
+        uint32_t count = 0;
+        for (size_t i = 0; i < nb; i++)
+            count += pf_cosf_fast_is_rare(pf_asuint(xb[i]));
+        if (count <= 16) {
+            float xc[128];
+            memcpy(xc, xb, nb * sizeof *xc);
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
             for (size_t i = 0; i < nb; i++)
-                yb[i] = pf_cosf_fast_inline(xb[i]);
+                yb[i] = pf_cosf_fast_cw(xc[i]);
+            for (size_t i = 0; i < nb; i++)
+                if (pf_cosf_fast_is_rare(pf_asuint(xc[i])))
+                    yb[i] = pf_cosf_fast_ph_lane(xc[i]);
+        } else {
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+            for (size_t i = 0; i < nb; i++) {
+                float xi = xb[i], c = pf_cosf_fast_cw(xi), p = pf_cosf_fast_ph(xi);
+                yb[i] = pf_cosf_fast_is_rare(pf_asuint(xi)) ? p : c;
+            }
         }
     }
 }

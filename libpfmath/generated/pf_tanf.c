@@ -130,7 +130,7 @@ static const uint32_t PF_TRIG_2OPI_BITS[40] = {
      fmas, for the common case; the array form runs it branch-free on whole
      vectors;
    - Payne-Hanek (|x| 2/pi mod 4 in 2.62 fixed point) for |x| >= 2^28, inf
-     and NaN: the array form redoes only the blocks holding such a lane.
+     and NaN: only the array form's blocks holding such a lane compute it.
    Either way r is right to 2^-49 relative or better for every float
    (docs/trig.md). */
 static inline uint64_t pf_asuint64(double x) { uint64_t u; memcpy(&u, &x, sizeof u); return u; }
@@ -165,28 +165,39 @@ static inline float pf_tanf_cw(float x)
 /* Payne-Hanek: y = |x| 2/pi mod 4 in 2.62 fixed point.  |x| = mx 2^(e-150-(e&7))
    with mx the significand shifted left by e&7 (< 2^31); bits of 2/pi above the
    window contribute multiples of 4, below it less than 2^-62 (error under 2
-   units of 2^-62). */
-static uint64_t pf_tanf_ph_y(uint32_t ia)
+   units of 2^-62).  Branch-free, so the array form's loop for blocks holding
+   a rare lane vectorizes it (the three words become gathers): the exponent
+   is clamped so inf/NaN keep a valid index, and the index needs no select in
+   front of the loads (a select there turns them into masked loads, which GCC
+   does not vectorize). */
+static inline uint64_t pf_tanf_ph_y(uint32_t ia)
 {
     uint32_t e = ia >> 23;
+    e = e < 255 ? e : 254;
     uint32_t j = e >> 3, mx = ((ia & 0x007fffffu) | 0x00800000u) << (e & 7);
     uint32_t w0 = PF_TRIG_2OPI_BITS[j], w1 = PF_TRIG_2OPI_BITS[j + 4], w2 = PF_TRIG_2OPI_BITS[j + 8];
     return ((uint64_t)(mx * w0) << 32) + (uint64_t)mx * w1 + (((uint64_t)mx * w2) >> 32);
 }
 
-/* The rare inputs: |x| >= 2^28, inf, NaN (kept out of line: the array form's
-   vector loop never calls it) */
-static __attribute__((noinline)) float pf_tanf_rare(float x)
+/* f (a signed fixed-point fraction) times 2^-62 pi/2 in double; the int64
+   is converted in two exact 32-bit halves (an int64 conversion does not
+   vectorize without AVX-512DQ), the sum rounds once like (double)f */
+static inline double pf_tanf_ph_r(int64_t f)
+{
+    return ((double)(int32_t)(f >> 32) * 0x1p32 + (double)(uint32_t)f) * PF_TRIG_PIO2_2M62;
+}
+
+/* The rare inputs: |x| >= 2^28, inf, NaN (any input gives a value) */
+static inline float pf_tanf_ph(float x)
 {
     uint32_t ix = pf_asuint(x), ia = ix & 0x7fffffffu;
-    if (ia >= 0x7f800000u)
-        return x - x;
     uint64_t y = pf_tanf_ph_y(ia);
     uint64_t n = (y + (1ull << 61)) >> 62;  /* round(y) mod 4 */
     int64_t f = (int64_t)(y - (n << 62));   /* y - n in [-1/2, 1/2], 2^62 units */
-    double p = pf_tanf_poly((double)f * PF_TRIG_PIO2_2M62);
+    double p = pf_tanf_poly(pf_tanf_ph_r(f));
     double v = n & 1 ? -1 / p : p;          /* p != 0: no float is a multiple of pi/2 */
-    return pf_asfloat(pf_asuint((float)v) ^ (ix & 0x80000000u));
+    float res = pf_asfloat(pf_asuint((float)v) ^ (ix & 0x80000000u));
+    return ia < 0x7f800000u ? res : x - x;
 }
 
 /* Rare: |x| >= 2^28, inf, NaN.  The key 2|x| (in bits, the sign shifted
@@ -195,17 +206,30 @@ static inline uint32_t pf_tanf_rare_key(uint32_t ix) { return ix << 1; }
 #define pf_tanf_RARE_KEY (PF_TRIG_CW_LIMIT << 1)
 static inline int pf_tanf_is_rare(uint32_t ix) { return pf_tanf_rare_key(ix) >= pf_tanf_RARE_KEY; }
 
+/* The scalar form: a branch, the rare side hinted as such */
 static inline float pf_tanf_inline(float x)
 {
-    return pf_tanf_is_rare(pf_asuint(x)) ? pf_tanf_rare(x) : pf_tanf_cw(x);
+    return __builtin_expect(pf_tanf_is_rare(pf_asuint(x)), 0) ? pf_tanf_ph(x) : pf_tanf_cw(x);
+}
+
+/* Payne-Hanek on one lane, out of line so the fix-up loop below stays
+   scalar, and cloned like its callers (so fma is one instruction there) */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#endif
+static __attribute__((noinline)) float pf_tanf_ph_lane(float x)
+{
+    return pf_tanf_ph(x);
 }
 
 /* Array form, per block of 128: a vectorized scan for rare lanes (the
-   largest key: two operations a vector), then the
-   branch-free Cody-Waite loop (vectorized) or, for a block holding a rare
-   lane, the scalar form on each element.  Both compute the same function of
-   x, so the array is bit-identical to the scalar form; each block reads x[i]
-   before writing y[i], so in-place calls stay right. */
+   largest key: two operations a vector); a block without one runs the
+   branch-free Cody-Waite loop.  A block with a few rare lanes (at most 16)
+   runs that loop too, on a copy of x (in-place calls), and redoes the rare
+   lanes one by one; one with more computes both paths for every lane and
+   selects (vectorized, the table reads as gathers).  Every lane takes the
+   same path by the same test as the scalar form, so the array is
+   bit-identical to it. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
@@ -226,9 +250,30 @@ void pf_tanf_array(const float *restrict x, float *restrict y, size_t n)
 #endif
             for (size_t i = 0; i < nb; i++)
                 yb[i] = pf_tanf_cw(xb[i]);
-        } else {
+            continue;
+        }
+        uint32_t count = 0;
+        for (size_t i = 0; i < nb; i++)
+            count += pf_tanf_is_rare(pf_asuint(xb[i]));
+        if (count <= 16) {
+            float xc[128];
+            memcpy(xc, xb, nb * sizeof *xc);
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
             for (size_t i = 0; i < nb; i++)
-                yb[i] = pf_tanf_inline(xb[i]);
+                yb[i] = pf_tanf_cw(xc[i]);
+            for (size_t i = 0; i < nb; i++)
+                if (pf_tanf_is_rare(pf_asuint(xc[i])))
+                    yb[i] = pf_tanf_ph_lane(xc[i]);
+        } else {
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+            for (size_t i = 0; i < nb; i++) {
+                float xi = xb[i], c = pf_tanf_cw(xi), p = pf_tanf_ph(xi);
+                yb[i] = pf_tanf_is_rare(pf_asuint(xi)) ? p : c;
+            }
         }
     }
 }
