@@ -13,27 +13,25 @@
  * r = 0 the relative error of r is that of the result, and r is exact to
  * far more bits than float needs (below).
  *
- * Exact variants (double evaluation, float coefficients):
- *   |x| < 2^20: Cody-Waite, r = (|x| - m P1) - m P2 in double with
- *     pi/2 = P1 + P2 + O(2^-86), P1 of 33 bits so m P1 and |x| - m P1 are
- *     exact for |m| < 2^20; the error |m| 2^-86 < 2^-66 is below 2^-38 of the
- *     smallest |r| of any float there (2^-28.5 in units of pi/2, found by an
- *     exhaustive search: docs/trig.md).
- *   |x| >= 2^20 (every float up to 3.4e38): Payne-Hanek, |x| * 2/pi mod 4 in
- *     64-bit fixed point (62 fraction bits) from a 96-bit window of the bits
- *     of 2/pi selected by the exponent (3 words of a 40-word table); the
- *     error, under 2 units of 2^-62, is below 2^-31 of the smallest |r| of
- *     any float (2^-29.86 in units of pi/2, at 0x1.f37c8ap+95).
- *   The bits of 2/pi and the split of pi/2 come from MPFR here (the `extra`
- *   callbacks), never typed by hand.
- * Fast variants (float evaluation): Cody-Waite in float, pi/2 split into
- *   six parts, five of 7 bits so that m * part is exact for |m| < 2^17 and the
- *   chain of subtractions is exact while r is small; the last carries the
- *   rest.  Within |x| <= 2^17 the reduction error is below 2^-44 absolute,
- *   2^-16 relative to the smallest |r| of any float there (2^-27.9, next to a
- *   multiple of pi/2), so the relative error stays the polynomial's even at
- *   the zeros of sin, cos, tan and the poles of tan.  Beyond 2^17, r is
- *   clamped, so the result stays finite (and within [-1, 1] for sin, cos). */
+ * Two paths per input, chosen by the same test in the scalar and the array
+ * form (the array form computes Payne-Hanek only in blocks holding such an
+ * input; gen/templates/sin_pi*.c.in, tan_pio2*.c.in):
+ * Exact variants (double evaluation with fma, float coefficients):
+ *   |x| < 2^28: Cody-Waite with FMA, pi/2 = P1 + P2 + O(2^-107), 53-bit
+ *     parts: fma(-m, P1, x) is exact, the second fma rounds once; r is right
+ *     to 2^-49 of the smallest |r| of any float (2^-29.86 in units of pi/2,
+ *     found by an exhaustive search: docs/trig.md).
+ *   |x| >= 2^28 (every float up to 3.4e38), inf, NaN: Payne-Hanek, |x| 2/pi
+ *     mod 4 in 64-bit fixed point (62 fraction bits) from a 96-bit window of
+ *     the bits of 2/pi selected by the exponent (3 words of a 40-word
+ *     table); the error, under 2 units of 2^-62, is below 2^-31 of the
+ *     smallest |r| of any float.
+ *   The bits of 2/pi and the splits of pi/2 come from MPFR here (the
+ *   `extra` callbacks), never typed by hand.
+ * Fast variants (float evaluation with fmaf): Cody-Waite with FMA in float
+ *   for |x| < 2^17 (two 24-bit parts of pi/2 for sin and cos, three for tan:
+ *   see extra_trig_float), Payne-Hanek beyond as above; the bound
+ *   max(2^-10 relative, 2^-11 absolute) holds for every finite float. */
 #include "funcs.h"
 
 #include <stdio.h>
@@ -256,8 +254,8 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
 #define SIN_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 0); sin x = (-1)^k sin r"
 #define COS_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 1); cos x = sin(x + pi/2) = (-1)^k sin r"
 #define TAN_RED "x = n pi/2 + r, r in [-pi/4, pi/4]; tan x = tan r (n even), -1/tan r (n odd)"
-#define RED_EXACT ", Cody-Waite with FMA in double |x| < 2^28 (vector pass), Payne-Hanek beyond (rare lanes, second pass)"
-#define RED_FAST ", Cody-Waite with FMA in float |x| < 2^17 (vector pass), Payne-Hanek beyond (rare lanes, second pass)"
+#define RED_EXACT ", Cody-Waite with FMA in double |x| < 2^28, Payne-Hanek beyond (array: only in blocks holding such an x)"
+#define RED_FAST ", Cody-Waite with FMA in float |x| < 2^17, Payne-Hanek beyond (array: only in blocks holding such an x)"
 
 #define CON_SLOPE1 {FIT_CON_DERIV, 0, "p'(0) = 1"}
 #define SIN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO2, "p(pi/2) = 1"}, {FIT_CON_DERIV, PIO2, "p'(pi/2) = 0"}}
