@@ -13,27 +13,25 @@
  * r = 0 the relative error of r is that of the result, and r is exact to
  * far more bits than float needs (below).
  *
- * Exact variants (double evaluation, float coefficients):
- *   |x| < 2^20: Cody-Waite, r = (|x| - m P1) - m P2 in double with
- *     pi/2 = P1 + P2 + O(2^-86), P1 of 33 bits so m P1 and |x| - m P1 are
- *     exact for |m| < 2^20; the error |m| 2^-86 < 2^-66 is below 2^-38 of the
- *     smallest |r| of any float there (2^-28.5 in units of pi/2, found by an
- *     exhaustive search: docs/trig.md).
- *   |x| >= 2^20 (every float up to 3.4e38): Payne-Hanek, |x| * 2/pi mod 4 in
- *     64-bit fixed point (62 fraction bits) from a 96-bit window of the bits
- *     of 2/pi selected by the exponent (3 words of a 40-word table); the
- *     error, under 2 units of 2^-62, is below 2^-31 of the smallest |r| of
- *     any float (2^-29.86 in units of pi/2, at 0x1.f37c8ap+95).
- *   The bits of 2/pi and the split of pi/2 come from MPFR here (the `extra`
- *   callbacks), never typed by hand.
- * Fast variants (float evaluation): Cody-Waite in float, pi/2 split into
- *   six parts, five of 7 bits so that m * part is exact for |m| < 2^17 and the
- *   chain of subtractions is exact while r is small; the last carries the
- *   rest.  Within |x| <= 2^17 the reduction error is below 2^-44 absolute,
- *   2^-16 relative to the smallest |r| of any float there (2^-27.9, next to a
- *   multiple of pi/2), so the relative error stays the polynomial's even at
- *   the zeros of sin, cos, tan and the poles of tan.  Beyond 2^17, r is
- *   clamped, so the result stays finite (and within [-1, 1] for sin, cos). */
+ * Two paths per input, chosen by the same test in the scalar and the array
+ * form (the array form computes Payne-Hanek only in blocks holding such an
+ * input; gen/templates/sin_pi*.c.in, tan_pio2*.c.in):
+ * Exact variants (double evaluation with fma, float coefficients):
+ *   |x| < 2^28: Cody-Waite with FMA, pi/2 = P1 + P2 + O(2^-107), 53-bit
+ *     parts: fma(-m, P1, x) is exact, the second fma rounds once; r is right
+ *     to 2^-49 of the smallest |r| of any float (2^-29.86 in units of pi/2,
+ *     found by an exhaustive search: docs/trig.md).
+ *   |x| >= 2^28 (every float up to 3.4e38), inf, NaN: Payne-Hanek, |x| 2/pi
+ *     mod 4 in 64-bit fixed point (62 fraction bits) from a 96-bit window of
+ *     the bits of 2/pi selected by the exponent (3 words of a 40-word
+ *     table); the error, under 2 units of 2^-62, is below 2^-31 of the
+ *     smallest |r| of any float.
+ *   The bits of 2/pi and the splits of pi/2 come from MPFR here (the
+ *   `extra` callbacks), never typed by hand.
+ * Fast variants (float evaluation with fmaf): Cody-Waite with FMA in float
+ *   for |x| < 2^17 (two 24-bit parts of pi/2 for sin and cos, three for tan:
+ *   see extra_trig_float), Payne-Hanek beyond as above; the bound
+ *   max(2^-10 relative, 2^-11 absolute) holds for every finite float. */
 #include "funcs.h"
 
 #include <stdio.h>
@@ -138,34 +136,24 @@ static void twoopi_words(uint32_t *w)
     }
 }
 
-/* Cody-Waite bound of the exact variants: |x| < 2^CW_LOG2, |m| < 2^CW_LOG2 */
-#define CW_LOG2 20
-
-static int extra_trig_double(char *buf, size_t n)
+/* Payne-Hanek constants, shared by every variant (the exact ones use them
+   for |x| >= 2^CW_LOG2, the fast ones for |x| >= 2^FAST_LOG2): the result
+   r = f * PIO2_2M62 for f the signed 62-bit fraction of |x| * 2/pi, and the
+   bits of 2/pi from MPFR. */
+static int extra_ph(char *buf, size_t n)
 {
-    double part[2];
-    int bits[1] = {53 - CW_LOG2};
-    pio2_split(2, bits, 53, part);
     uint32_t w[PH_WORDS];
     twoopi_words(w);
     int len = snprintf(
         buf, n,
-        "/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c).\n"
-        "   Cody-Waite for |x| < 2^%d: pi/2 = PIO2_1 + PIO2_2 + O(2^-86), PIO2_1 of %d\n"
-        "   significant bits so m * PIO2_1 is exact for |m| < 2^%d. */\n"
-        "static const double PF_TRIG_2OPI = %a;          /* 2/pi */\n"
-        "static const double PF_TRIG_PIO2_1 = %a;\n"
-        "static const double PF_TRIG_PIO2_2 = %a;\n"
-        "static const uint32_t PF_TRIG_CW_LIMIT = 0x%08xu; /* bits of 2^%d */\n"
-        "/* Payne-Hanek for larger |x|: the result r = f * PIO2_2M62, f the signed\n"
+        "/* Payne-Hanek for the rare large |x|: r = f * PF_TRIG_PIO2_2M62, f the signed\n"
         "   62-bit fraction of |x| * 2/pi */\n"
         "static const double PF_TRIG_PIO2_2M62 = %a;     /* pi/2 * 2^-62 */\n"
         "/* Bits of 2/pi = sum b_i 2^-i: word j holds b_(8j-151) .. b_(8j-120), b_i = 0\n"
         "   for i < 1.  A float of biased exponent e takes words e>>3, +4, +8: a 96-bit\n"
         "   window starting 2 bits above the units of |x| * 2/pi. */\n"
         "static const uint32_t PF_TRIG_2OPI_BITS[%d] = {",
-        CW_LOG2, 53 - CW_LOG2, CW_LOG2, twoopi(53, 0), part[0], part[1],
-        (unsigned)((127 + CW_LOG2) << 23), CW_LOG2, pio2_scaled(-62), PH_WORDS);
+        pio2_scaled(-62), PH_WORDS);
     for (int j = 0; j < PH_WORDS && len >= 0 && (size_t)len < n; j++)
         len += snprintf(buf + len, n - (size_t)len, "%s0x%08xu,", j % 6 ? " " : "\n    ", w[j]);
     if (len >= 0 && (size_t)len < n)
@@ -173,43 +161,91 @@ static int extra_trig_double(char *buf, size_t n)
     return len;
 }
 
-/* Fast variants: pi/2 in float parts of 7 significant bits (|m| < 2^17, so
-   m * part is exact) and a last part of 24 bits.  Six parts leave r within
-   about 2^-44 absolute for |x| <= 2^17, where the smallest |r| of any float is
-   2^-27.9 (next to a multiple of pi/2): r is then right to 2^-16
-   relative, so the result keeps the polynomial's relative error even next to
-   the zeros of sin, cos, tan and the poles of tan.  Three parts would do for
-   2^-20 absolute, but leave the relative error near the zeros unbounded. */
-#define FAST_PARTS 6
-static int extra_trig_float(char *buf, size_t n, int nparts, int rmax_scale)
+/* Cody-Waite bound of the exact variants: |x| < 2^CW_LOG2.  With FMA,
+   fma(-m, PIO2_1, x) is exact for every m (a multiple of 2^-52 below 2 in
+   magnitude); the second step rounds once (2^-53 relative) and pi/2 - PIO2_1
+   - PIO2_2 = O(2^-107), so r's error is below 2^-53 |r| + 2^(CW_LOG2-107),
+   2^-49 of the smallest |r| of any float (2^-29.86 of pi/2).  The limit
+   keeps x 2/pi's own rounding (2^-54 |x| 2/pi, for m) below 2^-26, so r
+   leaves the polynomial's domain by at most that. */
+#define CW_LOG2 28
+
+static int extra_trig_double(char *buf, size_t n)
 {
-    double part[8];
-    int bits[7] = {7, 7, 7, 7, 7, 7, 7};
+    double part[2];
+    int bits[1] = {53};
+    pio2_split(2, bits, 53, part);
+    int len = snprintf(
+        buf, n,
+        "/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c).\n"
+        "   Cody-Waite with FMA for |x| < 2^%d: pi/2 = PIO2_1 + PIO2_2 + O(2^-107),\n"
+        "   fma(-m, PIO2_1, x) exact, fma(-m, PIO2_2, .) rounded once. */\n"
+        "static const double PF_TRIG_2OPI = %a;          /* 2/pi */\n"
+        "static const double PF_TRIG_PIO2_1 = %a;\n"
+        "static const double PF_TRIG_PIO2_2 = %a;\n"
+        "static const uint32_t PF_TRIG_CW_LIMIT = 0x%08xu; /* bits of 2^%d */\n",
+        CW_LOG2, twoopi(53, 0), part[0], part[1], (unsigned)((127 + CW_LOG2) << 23), CW_LOG2);
+    if (len >= 0 && (size_t)len < n)
+        len += extra_ph(buf + len, n - (size_t)len);
+    return len;
+}
+
+/* Fast variants: pi/2 in float parts of 24 bits (the last rounded); with
+   FMA, fma(-m, P1, x) is exact for |x| >= 1 (a multiple of 2^-23 below 2)
+   and each later step rounds once.  For |x| < 2^17 (m < 2^17):
+   - sin, cos: two parts, r within 2^-24 + m (pi/2 - P1 - P2) < 2^-23
+     absolute, far inside the absolute allowance 2^-11 of the fast bound
+     max(2^-10 relative, 2^-11 absolute), which is all the zeros of sin and
+     cos need;
+   - tan: three parts, r right to about 2^-23 relative even next to a
+     multiple of pi/2 (the smallest |r| there, 2^-27.9, is far above
+     m (pi/2 - P1 - P2 - P3) < 2^-55), which the poles need: there the bound
+     is relative and tan = -1/r (1 + O(r^2)). */
+#define FAST_LOG2 17
+static int extra_trig_float(char *buf, size_t n, int nparts)
+{
+    double part[3];
+    int bits[2] = {24, 24};
     pio2_split(nparts, bits, 24, part);
     int len = snprintf(buf, n,
                        "/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c):\n"
-                       "   2/pi rounded to float; pi/2 = sum PF_TRIG_PIO2F[i] (Cody-Waite), each\n"
-                       "   part but the last of 7 significant bits, so m * part is exact for\n"
-                       "   |m| < 2^17; the last part is the rest rounded to float. */\n"
+                       "   2/pi rounded to float; pi/2 = sum PF_TRIG_PIO2F[i] (Cody-Waite with\n"
+                       "   FMA), 24-bit parts, the last rounded; for |x| < 2^%d. */\n"
                        "static const float PF_TRIG_2OPIF = %af;\n"
                        "#define PF_TRIG_NPARTS %d\n"
                        "static const float PF_TRIG_PIO2F[PF_TRIG_NPARTS] = {",
-                       twoopi(24, 0), nparts);
+                       FAST_LOG2, twoopi(24, 0), nparts);
     for (int i = 0; i < nparts && len >= 0 && (size_t)len < n; i++)
         len += snprintf(buf + len, n - (size_t)len, "%s%af", i ? ", " : "", part[i]);
     if (len >= 0 && (size_t)len < n)
         len += snprintf(buf + len, n - (size_t)len,
-                        "};\n/* pi/%d + 1/16: r exceeds the domain's end pi/%d by the rounding of\n"
-                        "   x * 2/pi in float, under 0.02 for |x| <= 2^17 (the polynomial,\n"
-                        "   matched in value and slope there, extends smoothly); beyond 2^17 r is\n"
-                        "   clamped to +-PF_TRIG_RMAX so the result stays finite */\n"
-                        "static const float PF_TRIG_RMAX = %af;\n\n",
-                        2 << -rmax_scale, 2 << -rmax_scale, (double)(float)(pio2_scaled(rmax_scale) + 0.0625));
+                        "};\nstatic const uint32_t PF_TRIG_CW_LIMIT = 0x%08xu; /* bits of 2^%d */\n",
+                        (unsigned)((127 + FAST_LOG2) << 23), FAST_LOG2);
+    if (len >= 0 && (size_t)len < n)
+        len += extra_ph(buf + len, n - (size_t)len);
     return len;
 }
+static int extra_sincos_float(char *buf, size_t n) { return extra_trig_float(buf, n, 2); }
+static int extra_tan_float(char *buf, size_t n) { return extra_trig_float(buf, n, 3); }
 
-static int extra_sincos_float(char *buf, size_t n) { return extra_trig_float(buf, n, FAST_PARTS, 0); }
-static int extra_tan_float(char *buf, size_t n) { return extra_trig_float(buf, n, FAST_PARTS, -1); }
+/* Error model of the exact variants (double evaluation): the reduction and
+   Horner's rule in double add under 2^-48 relative (the reduction's 2^-49
+   above, each fma 2^-53 on terms that do not cancel), -1/p (tan) one more
+   2^-53; the result is then rounded to float once.  So the error is at most
+   0.5 ULP + (fit error + 2^-48) 2^24 ULP (an ulp of y is >= |y| 2^-24). */
+static int model_double(const fit_poly *p, int order, pf_scheme *sc)
+{
+    (void)order;
+    sc->ncomp = 0;
+    sc->bound_ulp = 0.5 + (p->max_err + 0x1p-48) * 0x1p24;
+    snprintf(sc->text, sizeof sc->text,
+             "reduction and Horner in double with fma (float coefficients), one rounding to float");
+    if (sc->bound_ulp > 1.0) {
+        snprintf(sc->text, sizeof sc->text, "fit error %.3g leaves %.3f ULP > 1", p->max_err, sc->bound_ulp);
+        return -1;
+    }
+    return 0;
+}
 
 /* ---- rows ---- */
 #define PIO2 1.5707963267948966 /* the nearest double to pi/2 (below it) */
@@ -218,31 +254,32 @@ static int extra_tan_float(char *buf, size_t n) { return extra_trig_float(buf, n
 #define SIN_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 0); sin x = (-1)^k sin r"
 #define COS_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 1); cos x = sin(x + pi/2) = (-1)^k sin r"
 #define TAN_RED "x = n pi/2 + r, r in [-pi/4, pi/4]; tan x = tan r (n even), -1/tan r (n odd)"
-#define RED_EXACT ", Cody-Waite |x| < 2^20, Payne-Hanek beyond"
-#define RED_FAST ", float Cody-Waite (bound for |x| <= 2^17)"
+#define RED_EXACT ", Cody-Waite with FMA in double |x| < 2^28, Payne-Hanek beyond (array: only in blocks holding such an x)"
+#define RED_FAST ", Cody-Waite with FMA in float |x| < 2^17, Payne-Hanek beyond (array: only in blocks holding such an x)"
 
 #define CON_SLOPE1 {FIT_CON_DERIV, 0, "p'(0) = 1"}
 #define SIN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO2, "p(pi/2) = 1"}, {FIT_CON_DERIV, PIO2, "p'(pi/2) = 0"}}
 #define TAN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO4, "p(pi/4) = 1"}, {FIT_CON_DERIV, PIO4, "p'(pi/4) = 2"}}
 
-/* exact orders: the smallest odd orders whose float-coefficient polynomial is
-   within 2^-29 relative (then <= 0.5 + 2^-29 2^24 = 0.53 ULP after the final
-   rounding): sin 11 reaches 2^-31.0 (9: only 2^-27.3), tan 15 reaches 2^-29.55
-   (13: only 2^-25.7).  Exhaustive sweeps: docs/trig.md. */
-#define SIN_EXACT_ORDER 11
-#define TAN_EXACT_ORDER 15
+/* exact orders: the smallest odd orders whose float-coefficient polynomial
+   keeps the model's bound (model_double: 0.5 + (fit error + 2^-48) 2^24 ULP)
+   within 1 ULP with room for the sweep: sin 9 reaches 2^-27.3 (0.60 ULP;
+   7: 2^-22.0, over 1 ULP), tan 13 reaches 2^-25.7 (0.81 ULP; 11: 2^-21.9).
+   Exhaustive sweeps: docs/trig.md. */
+#define SIN_EXACT_ORDER 9
+#define TAN_EXACT_ORDER 13
 
 #define ROW_SIN_EXACT(fn, phase, red)                                                             \
     {.func = fn, .reduction = "pi", .variant = "exact", .tmpl = "sin_pi", .arity = 1,             \
      .reduction_text = red RED_EXACT, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,     \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
      .default_order = SIN_EXACT_ORDER, .real = "double", .kscale = phase, .ulp_bound = 1.0,      \
-     .extra = extra_trig_double}
+     .extra = extra_trig_double, .model = model_double}
 #define ROW_SIN_FAST(fn, phase, red)                                                              \
     {.func = fn, .reduction = "pi", .variant = "fast", .tmpl = "sin_pi_fast", .arity = 1,         \
      .reduction_text = red RED_FAST, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,      \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = SIN_FAST_CON,                \
-     .default_order = 0, .fast_target = 0x1p-10, .real = "float", .kscale = phase,                \
+     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .kscale = phase,                  \
      .extra = extra_sincos_float}
 
 const pf_spec pf_specs_trig[] = {
@@ -254,10 +291,10 @@ const pf_spec pf_specs_trig[] = {
      .reduction_text = TAN_RED RED_EXACT, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},
      .default_order = TAN_EXACT_ORDER, .real = "double", .ulp_bound = 1.0,
-     .extra = extra_trig_double},
+     .extra = extra_trig_double, .model = model_double},
     {.func = "tan", .reduction = "pio2", .variant = "fast", .tmpl = "tan_pio2_fast", .arity = 1,
      .reduction_text = TAN_RED RED_FAST, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = TAN_FAST_CON,
-     .default_order = 0, .fast_target = 0x1p-10, .real = "float", .extra = extra_tan_float},
+     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_tan_float},
     {0},
 };
