@@ -11,7 +11,7 @@
 #include "compile.h"
 #include "pfmath.h"
 #include "sweep.h"
-#include "testutil.h"
+#include "tu_exec.h"
 
 #include <dlfcn.h>
 #include <float.h>
@@ -317,7 +317,7 @@ static void test_emitted_matches_library(void **st)
         snprintf(path, sizeof path, "/tmp/pf-test-atrig-%ld.c", (long)getpid());
         snprintf(a, sizeof a, "--func %s --no-sweep -o %s", fn[k], path);
         tu_run_result *r = malloc(sizeof *r);
-        tu_run("pfmathgen", a, r);
+        tu_runs("pfmathgen", a, r);
         assert_int_equal(r->status, 0);
         free(r);
         void *h = pf_compile_load_file(path, err, sizeof err);

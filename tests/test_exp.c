@@ -11,7 +11,7 @@
 #include "compile.h"
 #include "pfmath.h"
 #include "sweep.h"
-#include "testutil.h"
+#include "tu_exec.h"
 
 #include <dlfcn.h>
 #include <float.h>
@@ -26,7 +26,7 @@ static void *emit_and_load(const char *args, const char *sym, void **fn)
     snprintf(path, sizeof path, "/tmp/pf-test-exp-%d.c", (int)getpid());
     snprintf(a, sizeof a, "%s -o %s", args, path);
     tu_run_result *r = malloc(sizeof *r);
-    tu_run("pfmathgen", a, r);
+    tu_runs("pfmathgen", a, r);
     if (r->status != 0)
         print_message("pfmathgen %s: %s\n", a, r->err);
     assert_int_equal(r->status, 0);
@@ -296,7 +296,7 @@ static const char *MODEL_ARGS[] = {"--func exp --no-sweep -o /dev/null", "--func
 static double model_bound(const char *args)
 {
     tu_run_result *r = malloc(sizeof *r);
-    tu_run("pfmathgen", args, r);
+    tu_runs("pfmathgen", args, r);
     assert_int_equal(r->status, 0);
     const char *p = strstr(r->err, "error model  at most ");
     assert_non_null(p);

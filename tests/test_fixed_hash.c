@@ -19,6 +19,7 @@
 
 #include "pffixed.h"
 #include "sweep_fixed.h"
+#include "tu_exec.h"
 
 #include <dlfcn.h>
 #include <limits.h>
@@ -92,14 +93,27 @@ static uint64_t fnv(uint64_t h, int64_t v)
 
 static void *build(const char *src, const char *compiler, const char *flags, const char *so)
 {
-    const char *cc = *compiler ? compiler : getenv("CC");
-    char cmd[3 * PATH_MAX];
-    snprintf(cmd, sizeof cmd, "%s -std=c17 -Wall -Wextra -Werror %s -fPIC -shared -o '%s' '%s' 2>&1",
-             cc && *cc ? cc : "cc", flags, so, src);
-    if (system(cmd) != 0) {
-        print_message("failed: %s\n", cmd);
+    tu_argv *a = calloc(1, sizeof *a);
+    tu_run_result *r = malloc(sizeof *r);
+    assert_non_null(a);
+    assert_non_null(r);
+    if (*compiler)
+        tu_argv_add(a, compiler);
+    else
+        tu_argv_cc(a);
+    tu_argv_words(a, "-std=c17 -Wall -Wextra -Werror");
+    tu_argv_words(a, flags);
+    tu_argv_words(a, "-fPIC -shared -o");
+    tu_argv_add(a, so);
+    tu_argv_add(a, src);
+    tu_execvp_in(NULL, a->v, r);
+    int st = r->status;
+    if (st != 0)
+        print_message("failed (exit %d): %s %s %s\n%s%s", st, a->v[0], flags, src, r->out, r->err);
+    free(a);
+    free(r);
+    if (st != 0)
         return NULL;
-    }
     void *h = dlopen(so, RTLD_NOW | RTLD_LOCAL);
     unlink(so);
     return h;
@@ -127,7 +141,11 @@ static void test_flags(void **st)
 {
     (void)st;
     assert_int_equal(find_root(), 0);
-    int have_clang = system("clang --version >/dev/null 2>&1") == 0;
+    tu_run_result *cr = malloc(sizeof *cr);
+    assert_non_null(cr);
+    tu_runl_cmd(cr, "clang", "--version", NULL); /* output kept from the log */
+    int have_clang = cr->status == 0;
+    free(cr);
     if (!have_clang)
         print_message("clang not found: gcc builds only\n");
     char dir[] = "/tmp/pf-fxhash-XXXXXX";
@@ -238,7 +256,7 @@ static void test_lanes16(void **st)
     int bad = 0, n16 = 0;
     for (int i = 0; i < NFNS; i++)
         for (int fast = 0; fast <= 1; fast++) {
-            char src[PATH_MAX + 64], as[PATH_MAX], sym[112], cmd[3 * PATH_MAX];
+            char src[PATH_MAX + 64], as[PATH_MAX], sym[112];
             snprintf(src, sizeof src, "%s/libpfmath/generated/pf_fx_%s%s.c", root, fns[i].stem, fast ? "_fast" : "");
             char *c = slurp(src);
             assert_non_null(c);
@@ -250,9 +268,20 @@ static void test_lanes16(void **st)
             }
             n16++;
             snprintf(as, sizeof as, "%s/f.s", dir);
-            snprintf(cmd, sizeof cmd, "%s -std=c17 -O3 -march=x86-64-v3 -S -o '%s' '%s'",
-                     getenv("CC") && *getenv("CC") ? getenv("CC") : "cc", as, src);
-            assert_int_equal(system(cmd), 0);
+            tu_argv *av = calloc(1, sizeof *av);
+            tu_run_result *r = malloc(sizeof *r);
+            assert_non_null(av);
+            assert_non_null(r);
+            tu_argv_cc(av);
+            tu_argv_words(av, "-std=c17 -O3 -march=x86-64-v3 -S -o");
+            tu_argv_add(av, as);
+            tu_argv_add(av, src);
+            tu_execvp_in(NULL, av->v, r);
+            if (r->status != 0)
+                print_message("%s -S %s: exit %d\n%s%s", av->v[0], src, r->status, r->out, r->err);
+            assert_int_equal(r->status, 0);
+            free(av);
+            free(r);
             char *a = slurp(as);
             assert_non_null(a);
             snprintf(sym, sizeof sym, "pf_%s%s_array:", fns[i].stem, fast ? "_fast" : "");

@@ -10,7 +10,7 @@
 
 #include "compile.h"
 #include "sweep_fixed.h"
-#include "testutil.h"
+#include "tu_exec.h"
 
 #include <dlfcn.h>
 #include <sys/stat.h>
@@ -22,7 +22,7 @@ static int run_gen(const char *args, const char *out)
 {
     char a[1024];
     snprintf(a, sizeof a, "%s -o %s", args, out);
-    tu_run("pfmathgen", a, &R);
+    tu_runs("pfmathgen", a, &R);
     if (R.status != 0)
         print_message("pfmathgen %s -> %d: %s\n", a, R.status, R.err);
     return R.status;
@@ -38,9 +38,7 @@ static int setup(void **st)
 static int teardown(void **st)
 {
     (void)st;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    return system(cmd) == 0 ? 0 : -1;
+    return tu_rm_tree(dir) == 0 ? 0 : -1;
 }
 
 static void test_sin_example(void **st)
@@ -98,7 +96,7 @@ static void test_sin_example(void **st)
     char a[512];
     snprintf(a, sizeof a, "--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --source %s --name my_sin --max-lsb 1",
              out);
-    tu_run("pfsweep", a, &R);
+    tu_runs("pfsweep", a, &R);
     print_message("%s", R.out);
     assert_int_equal(R.status, 0);
     assert_non_null(strstr(R.out, "count=65536 over_fast=0 mismatch=0"));
@@ -109,12 +107,12 @@ static void test_sin_example(void **st)
     /* a bound it does not meet: status 1 */
     snprintf(a, sizeof a, "--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --source %s --name my_sin --max-lsb 0.5",
              out);
-    tu_run("pfsweep", a, &R);
+    tu_runs("pfsweep", a, &R);
     assert_int_equal(R.status, 1);
     /* bad usage: status 2 */
-    tu_run("pfsweep", "--func sin --type 'fixed<15,12' --source x.c", &R);
+    tu_runs("pfsweep", "--func sin --type 'fixed<15,12' --source x.c", &R);
     assert_int_equal(R.status, 2);
-    tu_run("pfsweep", "--func tan --type 'fixed<15,12>'", &R);
+    tu_runs("pfsweep", "--func tan --type 'fixed<15,12>'", &R);
     assert_int_equal(R.status, 2);
     free(src);
 }
@@ -144,7 +142,7 @@ static void expect_error(const char *args)
     snprintf(out, sizeof out, "%s/bad.c", dir);
     unlink(out);
     snprintf(a, sizeof a, "%s -o %s", args, out);
-    tu_run("pfmathgen", a, &R);
+    tu_runs("pfmathgen", a, &R);
     print_message("pfmathgen %s -> %d: %s", args, R.status, R.err);
     assert_int_equal(R.status, 2);
     assert_int_equal(tu_count_lines(R.err), 1);
@@ -192,13 +190,13 @@ static void test_fast_variant(void **st)
     for (int i = 0; i < 2; i++) {
         char a[512];
         snprintf(a, sizeof a, "%s --variant fast --json", types[i]);
-        tu_run("pfmathgen", a, &R);
+        tu_runs("pfmathgen", a, &R);
         assert_int_equal(R.status, 0);
         int of = json_int(R.out, "\"order\": ");
         assert_int_equal(json_int(R.out, "\"over_fast\": "), 0);
         assert_non_null(strstr(R.out, "\"exhaustive\": true"));
         snprintf(a, sizeof a, "%s --json", types[i]);
-        tu_run("pfmathgen", a, &R);
+        tu_runs("pfmathgen", a, &R);
         assert_int_equal(R.status, 0);
         int oe = json_int(R.out, "\"order\": ");
         print_message("%s: fast order %d, exact order %d\n", types[i], of, oe);

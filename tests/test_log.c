@@ -9,7 +9,7 @@
 #include "compile.h"
 #include "pfmath.h"
 #include "sweep.h"
-#include "testutil.h"
+#include "tu_exec.h"
 
 #include <dlfcn.h>
 #include <math.h>
@@ -21,7 +21,7 @@ static void *emit_and_load(const char *args, const char *sym, void **fn)
     char a[512], err[512];
     snprintf(a, sizeof a, "%s -o /tmp/pf-test-log.c", args);
     tu_run_result *r = malloc(sizeof *r);
-    tu_run("pfmathgen", a, r);
+    tu_runs("pfmathgen", a, r);
     assert_int_equal(r->status, 0);
     free(r);
     void *h = pf_compile_load_file("/tmp/pf-test-log.c", err, sizeof err);
@@ -178,7 +178,7 @@ static const char *MODEL_ARGS[] = {"--func log --no-sweep -o /dev/null", "--func
 static double model_bound(const char *args)
 {
     tu_run_result *r = malloc(sizeof *r);
-    tu_run("pfmathgen", args, r);
+    tu_runs("pfmathgen", args, r);
     assert_int_equal(r->status, 0);
     const char *p = strstr(r->err, "error model  at most ");
     assert_non_null(p);

@@ -15,7 +15,7 @@
 #include "fixedtype.h"
 #include "pfnoise.h"
 #include "pfref_noise.h"
-#include "testutil.h"
+#include "tu_exec.h"
 
 #include <dlfcn.h>
 #include <math.h>
@@ -72,7 +72,7 @@ static int gen(const char *args, const char *path)
     char a[1024];
     unlink(path);
     snprintf(a, sizeof a, "%s -o %s", args, path);
-    tu_run("pfmathgen", a, &R);
+    tu_runs("pfmathgen", a, &R);
     if (R.status != 0)
         print_message("pfmathgen %s: exit %d\n%s", a, R.status, R.err);
     return R.status;
@@ -83,9 +83,21 @@ static int gen(const char *args, const char *path)
  * not depend on the flags, and compiles ten times faster) */
 static void *load(const char *c, const char *so, const char *opt)
 {
-    char cmd[1024];
-    snprintf(cmd, sizeof cmd, "cc -std=c17 %s -Wall -Wextra -Werror -fPIC -shared -o %s %s 2>&1", opt, so, c);
-    assert_int_equal(system(cmd), 0);
+    tu_argv *a = calloc(1, sizeof *a);
+    tu_run_result *r = malloc(sizeof *r);
+    assert_non_null(a);
+    assert_non_null(r);
+    tu_argv_words(a, "cc -std=c17");
+    tu_argv_words(a, opt);
+    tu_argv_words(a, "-Wall -Wextra -Werror -fPIC -shared -o");
+    tu_argv_add(a, so);
+    tu_argv_add(a, c);
+    tu_execvp_in(NULL, a->v, r);
+    if (r->status != 0)
+        print_message("cc %s %s: exit %d\n%s%s", opt, c, r->status, r->out, r->err);
+    assert_int_equal(r->status, 0);
+    free(a);
+    free(r);
     void *h = dlopen(so, RTLD_NOW | RTLD_LOCAL);
     assert_non_null(h);
     return h;
@@ -365,7 +377,7 @@ static void test_cli_errors(void **st)
     gen("--func noise4 --type 'fixed<31,16>' --out-type 'fixed<31,31>'", "/tmp/pf-nzg-bad.c");
     assert_non_null(strstr(R.err, "2^-32"));
     /* --help lists noise */
-    tu_run("pfmathgen", "--func noise3 --type 'fixed<31,16>' --help", &R);
+    tu_runs("pfmathgen", "--func noise3 --type 'fixed<31,16>' --help", &R);
     assert_int_equal(R.status, 0);
     assert_non_null(strstr(R.out, "noise1, noise2, noise3, noise4"));
 }

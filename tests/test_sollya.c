@@ -10,7 +10,7 @@
 #include <stddef.h>
 #include <cmocka.h>
 
-#include "testutil.h"
+#include "tu_exec.h"
 
 #include <fcntl.h>
 #include <math.h>
@@ -143,7 +143,7 @@ static void test_minimax_vs_fpminimax(void **st)
                  strcmp(c->args, "") ? 10 : 0);
         if (!strcmp(c->args, ""))
             snprintf(args, sizeof args, "--func %s --no-sweep --json", c->func);
-        tu_run("pfmathgen", args, &R);
+        tu_runs("pfmathgen", args, &R);
         assert_int_equal(R.status, 0);
         double ours = json_num(R.out, "max_rel_error"), lsq = json_num(R.out, "lsq_max_rel_error");
         int order = (int)json_num(R.out, "order");
@@ -184,7 +184,7 @@ static void test_target_float_vs_guessdegree(void **st)
         if (strcmp(c->args, ""))
             continue;
         snprintf(args, sizeof args, "--func %s --no-sweep --json --target float", c->func);
-        tu_run("pfmathgen", args, &R);
+        tu_runs("pfmathgen", args, &R);
         assert_int_equal(R.status, 0);
         int order = (int)json_num(R.out, "order");
         assert_true(json_num(R.out, "max_rel_error") <= 0x1p-24);

@@ -12,7 +12,7 @@
 #include "compile.h"
 #include "pfmath.h"
 #include "sweep.h"
-#include "testutil.h"
+#include "tu_exec.h"
 
 #include <dlfcn.h>
 #include <float.h>
@@ -162,7 +162,7 @@ static void *emit_and_load(const char *args, const char *sym, void **fn)
     char a[512], err[512];
     snprintf(a, sizeof a, "%s -o /tmp/pf-test-trig.c", args);
     tu_run_result *r = malloc(sizeof *r);
-    tu_run("pfmathgen", a, r);
+    tu_runs("pfmathgen", a, r);
     assert_int_equal(r->status, 0);
     free(r);
     void *h = pf_compile_load_file("/tmp/pf-test-trig.c", err, sizeof err);

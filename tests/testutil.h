@@ -35,31 +35,6 @@ typedef struct {
     char err[1 << 14];   /* stderr (truncated) */
 } tu_run_result;
 
-/* Runs "prog args" through the shell; captures stdout and stderr. */
-static inline void tu_run(const char *prog, const char *args, tu_run_result *r)
-{
-    char path[PATH_MAX], cmd[PATH_MAX + 2048], eo[64] = "/tmp/pftest.XXXXXX";
-    tu_prog_path(prog, path, sizeof path);
-    int fd = mkstemp(eo);
-    close(fd);
-    snprintf(cmd, sizeof cmd, "'%s' %s 2>'%s'", path, args, eo);
-    FILE *p = popen(cmd, "r");
-    size_t n = p ? fread(r->out, 1, sizeof r->out - 1, p) : 0;
-    r->out[n] = 0;
-    if (p) {
-        while (fgetc(p) != EOF) {
-        }
-    }
-    int st = p ? pclose(p) : -1;
-    r->status = st >= 0 && WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    FILE *f = fopen(eo, "r");
-    n = f ? fread(r->err, 1, sizeof r->err - 1, f) : 0;
-    r->err[n] = 0;
-    if (f)
-        fclose(f);
-    unlink(eo);
-}
-
 static inline int tu_count_lines(const char *s)
 {
     int n = 0;

@@ -83,7 +83,101 @@ static inline void tu_runl(tu_run_result *r, const char *prog, ...)
     tu_runv(prog, v, r);
 }
 
-/* removes a scratch tree this test made (no shell: nftw, depth first) */
+/* An argument vector built without a shell: tu_argv_words splits a string
+ * into words at blanks, where a single-quoted span belongs to its word with
+ * the quotes dropped ("--type 'unsigned fixed<16,14>'" gives two words);
+ * nothing else is special (no expansion, no escapes, no redirection), so
+ * what a test writes is what the program gets.  tu_argv_add appends one
+ * word as is (a path that may hold blanks or quotes). */
+typedef struct {
+    const char *v[128];
+    int n;
+    char buf[8192];
+    size_t used;
+} tu_argv;
+
+static inline void tu_argv_add(tu_argv *a, const char *w)
+{
+    size_t k = strlen(w) + 1;
+    if (a->n >= 127 || a->used + k > sizeof a->buf) {
+        fprintf(stderr, "tu_argv: too many or too long words\n");
+        abort();
+    }
+    memcpy(a->buf + a->used, w, k);
+    a->v[a->n++] = a->buf + a->used;
+    a->v[a->n] = NULL;
+    a->used += k;
+}
+
+static inline void tu_argv_words(tu_argv *a, const char *s)
+{
+    char w[1024];
+    size_t k = 0;
+    int inword = 0, quoted = 0;
+    for (;; s++) {
+        if (!*s || (!quoted && strchr(" \t\n", *s))) {
+            if (quoted) {
+                fprintf(stderr, "tu_argv: unbalanced quote\n");
+                abort();
+            }
+            if (inword) {
+                w[k] = 0;
+                tu_argv_add(a, w);
+            }
+            k = 0;
+            inword = 0;
+            if (!*s)
+                return;
+            continue;
+        }
+        inword = 1;
+        if (*s == '\'') {
+            quoted = !quoted;
+            continue;
+        }
+        if (k + 1 >= sizeof w) {
+            fprintf(stderr, "tu_argv: word too long\n");
+            abort();
+        }
+        w[k++] = *s;
+    }
+}
+
+/* $CC split on blanks as gen/subproc.c does (unset or blank: cc) */
+static inline void tu_argv_cc(tu_argv *a)
+{
+    const char *cc = getenv("CC");
+    tu_argv_words(a, cc && cc[strspn(cc, " \t")] ? cc : "cc");
+}
+
+/* build/<...>/<prog> with args split as tu_argv_words does: the tests'
+ * fixed option strings ("--func sin --type 'fixed<15,12>' -o /tmp/x.c") */
+static inline void tu_runs(const char *prog, const char *args, tu_run_result *r)
+{
+    tu_argv *a = calloc(1, sizeof *a);
+    tu_argv_words(a, args);
+    tu_runv(prog, a->v, r);
+    free(a);
+}
+
+/* tu_runl_cmd(&r, "cc", "-c", path, NULL): argv[0] searched in PATH (a
+ * system program, not one of ours), output captured */
+static inline void tu_runl_cmd(tu_run_result *r, const char *cmd, ...)
+{
+    const char *v[64];
+    int n = 0;
+    v[n++] = cmd;
+    va_list ap;
+    va_start(ap, cmd);
+    for (const char *a; n < 63 && (a = va_arg(ap, const char *));)
+        v[n++] = a;
+    va_end(ap);
+    v[n] = NULL;
+    tu_execvp_in(NULL, v, r);
+}
+
+/* removes a scratch tree this test made (no shell: nftw, depth first);
+ * 0 when every entry went */
 #include <ftw.h>
 static inline int tu_rm_cb(const char *p, const struct stat *sb, int flag, struct FTW *f)
 {
@@ -92,9 +186,9 @@ static inline int tu_rm_cb(const char *p, const struct stat *sb, int flag, struc
     (void)f;
     return remove(p);
 }
-static inline void tu_rm_tree(const char *dir)
+static inline int tu_rm_tree(const char *dir)
 {
-    nftw(dir, tu_rm_cb, 16, FTW_DEPTH | FTW_PHYS);
+    return nftw(dir, tu_rm_cb, 16, FTW_DEPTH | FTW_PHYS);
 }
 
 #endif
