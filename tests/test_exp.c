@@ -12,6 +12,7 @@
 #include "pfmath.h"
 #include "sweep.h"
 #include "tu_exec.h"
+#include "tu_model.h"
 
 #include <dlfcn.h>
 #include <float.h>
@@ -289,33 +290,10 @@ static const char *MODEL_ARGS[] = {"--func exp --no-sweep -o /dev/null", "--func
 #define NMODEL 2
 #define MODEL_LOW "--func exp --order 5 --no-sweep -o /dev/null"
 
-/* The library's exact variants are emitted at the default order, where the
- * spec's error model bounds every rounding of the float scheme: that bound
- * must be within 1 ULP (the exhaustive sweep, `make sweep`, confirms it; a
- * lower order is stated above 1 ULP, not emitted silently as exact). */
-static double model_bound(const char *args)
-{
-    tu_run_result *r = malloc(sizeof *r);
-    tu_runs("pfmathgen", args, r);
-    assert_int_equal(r->status, 0);
-    const char *p = strstr(r->err, "error model  at most ");
-    assert_non_null(p);
-    double b = atof(p + strlen("error model  at most "));
-    int above = strstr(r->err, "above 1 ULP") != NULL;
-    free(r);
-    print_message("%s: error model %.3f ULP\n", args, b);
-    return above ? -b : b;
-}
-
 static void test_error_model(void **st)
 {
     (void)st;
-    for (int i = 0; i < NMODEL; i++) {
-        double b = model_bound(MODEL_ARGS[i]);
-        assert_true(b > 0.5 && b <= 1.0);
-    }
-    /* an order too low is reported above 1 ULP */
-    assert_true(model_bound(MODEL_LOW) < -1.0);
+    tu_check_models(MODEL_ARGS, NMODEL, MODEL_LOW);
 }
 
 int main(void)
