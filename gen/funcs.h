@@ -51,6 +51,10 @@ typedef struct {
        function's error in ULP (fit error plus every rounding).  Returns 0, or
        -1 with a message in sc->text when no scheme meets ulp_bound. */
     int (*model)(const fit_poly *p, int order, struct pf_scheme *sc);
+    /* Optional templates (names without .in): head, emitted between the
+       extra text and the body (helpers several templates share); tail, in
+       place of tail_unary.c / tail_binary.c (the scalar and array forms). */
+    const char *head, *tail;
 } pf_spec;
 
 typedef struct pf_scheme {

@@ -271,12 +271,14 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
 
 #define ROW_SIN_EXACT(fn, phase, red)                                                             \
     {.func = fn, .reduction = "pi", .variant = "exact", .tmpl = "sin_pi", .arity = 1,             \
+     .head = "trig_ph.h", .tail = "tail_twopath.c",                                               \
      .reduction_text = red RED_EXACT, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,     \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
      .default_order = SIN_EXACT_ORDER, .real = "double", .kscale = phase, .ulp_bound = 1.0,      \
      .extra = extra_trig_double, .model = model_double}
 #define ROW_SIN_FAST(fn, phase, red)                                                              \
     {.func = fn, .reduction = "pi", .variant = "fast", .tmpl = "sin_pi_fast", .arity = 1,         \
+     .head = "trig_ph.h", .tail = "tail_twopath.c",                                               \
      .reduction_text = red RED_FAST, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,      \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = SIN_FAST_CON,                \
      .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .kscale = phase,                  \
@@ -288,11 +290,13 @@ const pf_spec pf_specs_trig[] = {
     ROW_SIN_EXACT("cos", "1", COS_RED),
     ROW_SIN_FAST("cos", "1", COS_RED),
     {.func = "tan", .reduction = "pio2", .variant = "exact", .tmpl = "tan_pio2", .arity = 1,
+     .head = "trig_ph.h", .tail = "tail_twopath.c",
      .reduction_text = TAN_RED RED_EXACT, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},
      .default_order = TAN_EXACT_ORDER, .real = "double", .ulp_bound = 1.0,
      .extra = extra_trig_double, .model = model_double},
     {.func = "tan", .reduction = "pio2", .variant = "fast", .tmpl = "tan_pio2_fast", .arity = 1,
+     .head = "trig_ph.h", .tail = "tail_twopath.c",
      .reduction_text = TAN_RED RED_FAST, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = TAN_FAST_CON,
      .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_tan_float},

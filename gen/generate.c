@@ -179,8 +179,10 @@ static void emit(sbuf *b, const pf_gen_result *r, const char *command)
                         "KSCALE", s->kscale ? s->kscale : "1", "PSCALE", s->pscale ? s->pscale : "1", NULL};
     char tname[128];
     snprintf(tname, sizeof tname, "%s.c", s->tmpl);
+    if (s->head)
+        substitute(b, template_text(s->head), kv);
     substitute(b, template_text(tname), kv);
-    substitute(b, template_text(s->arity == 2 ? "tail_binary.c" : "tail_unary.c"), kv);
+    substitute(b, template_text(s->tail ? s->tail : s->arity == 2 ? "tail_binary.c" : "tail_unary.c"), kv);
 }
 
 static int fit_order(const pf_spec *s, int order, int minimax, int errkind, fit_poly *real,

@@ -120,6 +120,32 @@ static const uint32_t PF_TRIG_2OPI_BITS[40] = {
     0x6295993cu, 0x95993c43u, 0x993c4390u, 0x3c439041u,
 };
 
+/* Shared by the trig templates (emitted before the body: gen/funcs.h, head). */
+/* Payne-Hanek: y = |x| 2/pi mod 4 in 2.62 fixed point.  |x| = mx 2^(e-150-(e&7))
+   with mx the significand shifted left by e&7 (< 2^31); bits of 2/pi above the
+   window contribute multiples of 4, below it less than 2^-62 (error under 2
+   units of 2^-62).  Branch-free, so the array form's loop for blocks holding
+   a rare lane vectorizes it (the three words become gathers): the exponent
+   is clamped so inf/NaN keep a valid index, and the index needs no select in
+   front of the loads (a select there turns them into masked loads, which GCC
+   does not vectorize). */
+static inline uint64_t pf_tanf_ph_y(uint32_t ia)
+{
+    uint32_t e = ia >> 23;
+    e = e < 255 ? e : 254;
+    uint32_t j = e >> 3, mx = ((ia & 0x007fffffu) | 0x00800000u) << (e & 7);
+    uint32_t w0 = PF_TRIG_2OPI_BITS[j], w1 = PF_TRIG_2OPI_BITS[j + 4], w2 = PF_TRIG_2OPI_BITS[j + 8];
+    return ((uint64_t)(mx * w0) << 32) + (uint64_t)mx * w1 + (((uint64_t)mx * w2) >> 32);
+}
+
+/* f (a signed fixed-point fraction) times 2^-62 pi/2 in double; the int64
+   is converted in two exact 32-bit halves (an int64 conversion does not
+   vectorize without AVX-512DQ), the sum rounds once like (double)f */
+static inline double pf_tanf_ph_r(int64_t f)
+{
+    return ((double)(int32_t)(f >> 32) * 0x1p32 + (double)(uint32_t)f) * PF_TRIG_PIO2_2M62;
+}
+
 /* tan, exact: x = n pi/2 + r, r in [-pi/4, pi/4], tan x = tan r (n even) or
    -1/tan r (n odd, the cotangent identity), from one odd polynomial,
    evaluated in double with fma (correctly rounded on every target, so every
@@ -162,31 +188,6 @@ static inline float pf_tanf_cw(float x)
     return (float)v;
 }
 
-/* Payne-Hanek: y = |x| 2/pi mod 4 in 2.62 fixed point.  |x| = mx 2^(e-150-(e&7))
-   with mx the significand shifted left by e&7 (< 2^31); bits of 2/pi above the
-   window contribute multiples of 4, below it less than 2^-62 (error under 2
-   units of 2^-62).  Branch-free, so the array form's loop for blocks holding
-   a rare lane vectorizes it (the three words become gathers): the exponent
-   is clamped so inf/NaN keep a valid index, and the index needs no select in
-   front of the loads (a select there turns them into masked loads, which GCC
-   does not vectorize). */
-static inline uint64_t pf_tanf_ph_y(uint32_t ia)
-{
-    uint32_t e = ia >> 23;
-    e = e < 255 ? e : 254;
-    uint32_t j = e >> 3, mx = ((ia & 0x007fffffu) | 0x00800000u) << (e & 7);
-    uint32_t w0 = PF_TRIG_2OPI_BITS[j], w1 = PF_TRIG_2OPI_BITS[j + 4], w2 = PF_TRIG_2OPI_BITS[j + 8];
-    return ((uint64_t)(mx * w0) << 32) + (uint64_t)mx * w1 + (((uint64_t)mx * w2) >> 32);
-}
-
-/* f (a signed fixed-point fraction) times 2^-62 pi/2 in double; the int64
-   is converted in two exact 32-bit halves (an int64 conversion does not
-   vectorize without AVX-512DQ), the sum rounds once like (double)f */
-static inline double pf_tanf_ph_r(int64_t f)
-{
-    return ((double)(int32_t)(f >> 32) * 0x1p32 + (double)(uint32_t)f) * PF_TRIG_PIO2_2M62;
-}
-
 /* The rare inputs: |x| >= 2^28, inf, NaN (any input gives a value) */
 static inline float pf_tanf_ph(float x)
 {
@@ -210,6 +211,19 @@ static inline int pf_tanf_is_rare(uint32_t ix) { return pf_tanf_rare_key(ix) >= 
 static inline float pf_tanf_inline(float x)
 {
     return __builtin_expect(pf_tanf_is_rare(pf_asuint(x)), 0) ? pf_tanf_ph(x) : pf_tanf_cw(x);
+}
+/* Tail of the trig templates: the scalar form, and the array form that
+   takes the rare (Payne-Hanek) path only for the lanes that need it.  The
+   body defines pf_tanf_cw, pf_tanf_ph, pf_tanf_rare_key, pf_tanf_RARE_KEY,
+   pf_tanf_is_rare and pf_tanf_inline. */
+/* The scalar form is cloned too, so that fmaf is one instruction where the
+   CPU has FMA (the result is the same on every clone). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#endif
+float pf_tanf(float x)
+{
+    return pf_tanf_inline(x);
 }
 
 /* Payne-Hanek on one lane, out of line so the fix-up loop below stays
@@ -276,33 +290,4 @@ void pf_tanf_array(const float *restrict x, float *restrict y, size_t n)
             }
         }
     }
-}
-
-/* The shared tail (tail_unary.c.in) that follows defines the one-pass array
-   form as well; this macro turns that definition into an unused static
-   function, so the two-pass form above is the one exported. */
-#define pf_tanf_array(x, y, n) pf_tanf_array_onepass_(x, y, n); static PF_UNUSED void pf_tanf_array_onepass(x, y, n)
-
-/* The scalar form is cloned too, so that fmaf is one instruction where the
-   CPU has FMA (the result is the same on every clone). */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#endif
-float pf_tanf(float x)
-{
-    return pf_tanf_inline(x);
-}
-
-/* Array form: the body above is branch-free, so this loop vectorizes; one
-   clone per x86-64 level, the widest the CPU has is picked at load time. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#endif
-void pf_tanf_array(const float *restrict x, float *restrict y, size_t n)
-{
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC ivdep
-#endif
-    for (size_t i = 0; i < n; i++)
-        y[i] = pf_tanf_inline(x[i]);
 }
