@@ -9,6 +9,8 @@
  *    which make regen and tests/check-regen*.sh run) equal the C
  *    preprocessor's reading of the same rows;
  *  - ref/ knows each row's function under that name and arity;
+ *  - a fixed row's name is pfmathgen's default name for its function and
+ *    types, and its storage tags are the types' storage;
  *  - libpfmath.so exports every row's four symbols. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -16,6 +18,8 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include "fixedgen.h"
+#include "fixedtype.h"
 #include "funcset.h"
 #include "pfmath.h"
 #include "pfmath_fixed.h"
@@ -48,10 +52,11 @@ static const frow frows[] = {
 typedef struct {
     const char *name, *func, *in, *out;
     pf_func id;
+    const char *in_st, *out_st;
 } xrow;
 static const xrow xrows[] = {
 #define PF_FIXED(n, f, id, ist, isg, isz, ie, ost, osg, osz, oe, lsb, lo, hi)                                  \
-    {#n, #f, PF_FS_TYPE(isg, isz, ie), PF_FS_TYPE(osg, osz, oe), id},
+    {#n, #f, PF_FS_TYPE(isg, isz, ie), PF_FS_TYPE(osg, osz, oe), id, #ist, #ost},
 #include "functions.def"
 };
 #define NX ((int)(sizeof xrows / sizeof xrows[0]))
@@ -265,6 +270,35 @@ static void test_ref_names(void **st)
     }
 }
 
+/* a fixed row's name is the one pfmathgen gives by default (make regen-fixed
+   passes no --name), and its storage tags are its types' storage */
+static void test_fixed_names(void **st)
+{
+    (void)st;
+    int bad = 0;
+    for (int i = 0; i < NX; i++) {
+        pf_type t[2];
+        char err[200], nm[128], want[128], tag[8];
+        const char *ty[2] = {xrows[i].in, xrows[i].out}, *stv[2] = {xrows[i].in_st, xrows[i].out_st};
+        for (int k = 0; k < 2; k++) {
+            assert_int_equal(pf_type_parse(ty[k], &t[k], err, sizeof err), 0);
+            snprintf(tag, sizeof tag, "%c%d", t[k].is_signed ? 'i' : 'u', t[k].storage_bits);
+            if (strcmp(tag, stv[k])) {
+                print_message("pf_%s: %s is stored in %s, the row says %s\n", xrows[i].name, ty[k], tag, stv[k]);
+                bad++;
+            }
+        }
+        pf_fixed_default_name(xrows[i].func, &t[0], &t[1], 0, nm, sizeof nm);
+        snprintf(want, sizeof want, "pf_%s", xrows[i].name);
+        if (strcmp(nm, want)) {
+            print_message("row %s: pfmathgen names --func %s --type '%s' --out-type '%s' %s\n", xrows[i].name,
+                          xrows[i].func, xrows[i].in, xrows[i].out, nm);
+            bad++;
+        }
+    }
+    assert_int_equal(bad, 0);
+}
+
 static void test_library_exports(void **st)
 {
     (void)st;
@@ -291,7 +325,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_declarations), cmocka_unit_test(test_headers),
         cmocka_unit_test(test_generated_dir), cmocka_unit_test(test_make_lists),
-        cmocka_unit_test(test_ref_names),     cmocka_unit_test(test_library_exports),
+        cmocka_unit_test(test_ref_names),     cmocka_unit_test(test_fixed_names),
+        cmocka_unit_test(test_library_exports),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
