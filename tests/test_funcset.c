@@ -8,7 +8,8 @@
  *  - make's LIB_GEN and FX_LIB (mk/funcset.awk's reading of the table,
  *    which make regen and tests/check-regen*.sh run) equal the C
  *    preprocessor's reading of the same rows;
- *  - ref/ knows each row's function under that name and arity;
+ *  - ref/ knows each row's function under that name and arity, and no
+ *    row's exact bound is wider than the headers' 1 ULP / 1 LSB;
  *  - a fixed row's name is pfmathgen's default name for its function and
  *    types, and its storage tags are the types' storage;
  *  - libpfmath.so exports every row's four symbols. */
@@ -42,9 +43,10 @@ typedef struct {
     const char *name;
     pf_func id;
     int arity;
+    double exact_ulp;
 } frow;
 static const frow frows[] = {
-#define PF_FLOAT(n, id, ar, u, lo, hi) {#n, id, ar},
+#define PF_FLOAT(n, id, ar, u, lo, hi) {#n, id, ar, u},
 #include "functions.def"
 };
 #define NF ((int)(sizeof frows / sizeof frows[0]))
@@ -53,10 +55,11 @@ typedef struct {
     const char *name, *func, *in, *out;
     pf_func id;
     const char *in_st, *out_st;
+    double exact_lsb;
 } xrow;
 static const xrow xrows[] = {
 #define PF_FIXED(n, f, id, ist, isg, isz, ie, ost, osg, osz, oe, lsb, lo, hi)                                  \
-    {#n, #f, PF_FS_TYPE(isg, isz, ie), PF_FS_TYPE(osg, osz, oe), id, #ist, #ost},
+    {#n, #f, PF_FS_TYPE(isg, isz, ie), PF_FS_TYPE(osg, osz, oe), id, #ist, #ost, lsb},
 #include "functions.def"
 };
 #define NX ((int)(sizeof xrows / sizeof xrows[0]))
@@ -261,10 +264,14 @@ static void test_ref_names(void **st)
 {
     (void)st;
     for (int i = 0; i < NF; i++) {
+        /* the headers' promise: exact is within 1 ULP (1 LSB) everywhere; a
+           row may tighten the bound make sweep checks, never widen it */
+        assert_true(frows[i].exact_ulp > 0 && frows[i].exact_ulp <= 1.0);
         assert_string_equal(pfref_name(frows[i].id), frows[i].name);
         assert_int_equal(pfref_arity(frows[i].id), frows[i].arity);
     }
     for (int i = 0; i < NX; i++) {
+        assert_true(xrows[i].exact_lsb > 0 && xrows[i].exact_lsb <= 1.0);
         assert_string_equal(pfref_name(xrows[i].id), xrows[i].func);
         assert_int_equal(pfref_arity(xrows[i].id), 1);
     }
