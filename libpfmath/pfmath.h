@@ -26,6 +26,7 @@ extern "C" {
     float f(float y, float x);                                                 \
     void f##_array(const float *y, const float *x, float *out, size_t n);
 
+/* one line per PF_FLOAT row of functions.def (tests/test_funcset checks) */
 PF_DECLARE1(pf_sinf)   PF_DECLARE1(pf_sinf_fast)
 PF_DECLARE1(pf_cosf)   PF_DECLARE1(pf_cosf_fast)
 PF_DECLARE1(pf_tanf)   PF_DECLARE1(pf_tanf_fast)

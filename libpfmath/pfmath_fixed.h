@@ -31,6 +31,8 @@
 extern "C" {
 #endif
 
+/* one block per PF_FIXED row of functions.def (tests/test_funcset checks) */
+
 /* sin: fixed<15,12> -> fixed<15,14> */
 int16_t pf_sin_q12_q14(int16_t x);
 void pf_sin_q12_q14_array(const int16_t *x, int16_t *y, size_t n);

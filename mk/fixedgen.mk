@@ -22,21 +22,16 @@ $(BUILD)/tests/test_fixedgen: $(BUILD)/pfmathgen $(BUILD)/pfsweep
 # exhaustively against MPFR (test_fixedgen_funcs).
 TESTS += $(BUILD)/tests/test_fixedgen_funcs
 
-# The library's default fixed-point set: NAME/FUNC/INPUT/OUTPUT, each giving
+# The library's default fixed-point set, the PF_FIXED rows of
+# libpfmath/functions.def as NAME/FUNC/INPUT/OUTPUT, each giving
 # libpfmath/generated/pf_fx_NAME.c (pf_NAME, exact) and pf_fx_NAME_fast.c
 # (pf_NAME_fast), written by exactly
 #   pfmathgen --func FUNC --type 'INPUT' --out-type 'OUTPUT' [--variant fast] \
 #             -o libpfmath/generated/pf_fx_NAME[_fast].c
 # from the repository root (`make regen-fixed`; tests/check-regen-fixed.sh
 # re-runs the commands and compares).  Declarations: libpfmath/pfmath_fixed.h.
-FX_LIB := sin_q12_q14/sin/fixed<15,12>/fixed<15,14> cos_q12_q14/cos/fixed<15,12>/fixed<15,14> \
-          exp_q11_uq8/exp/fixed<15,11>/ufixed<16,8> exp2_q11_uq8/exp2/fixed<15,11>/ufixed<16,8> \
-          log_uq8_q11/log/ufixed<16,8>/fixed<15,11> log2_uq8_q11/log2/ufixed<16,8>/fixed<15,11> \
-          sqrt_uq8_uq12/sqrt/ufixed<16,8>/ufixed<16,12> \
-          sin_q16/sin/fixed<31,16>/fixed<31,16> cos_q16/cos/fixed<31,16>/fixed<31,16> \
-          exp_q16/exp/fixed<31,16>/fixed<31,16> exp2_q16/exp2/fixed<31,16>/fixed<31,16> \
-          log_q16/log/fixed<31,16>/fixed<31,16> log2_q16/log2/fixed<31,16>/fixed<31,16> \
-          sqrt_q16/sqrt/fixed<31,16>/fixed<31,16>
+# (funcset: mk/lib.mk; recursive, as that file is read after this one)
+FX_LIB = $(call funcset,fx_lib)
 FX_LIB_QUOTED = $(foreach e,$(FX_LIB),'$(e)')
 
 .PHONY: regen-fixed
@@ -52,7 +47,7 @@ regen-fixed: $(BUILD)/pfmathgen
 	done
 
 TESTS += $(BUILD)/tests/check-regen-fixed
-$(BUILD)/tests/check-regen-fixed: tests/check-regen-fixed.sh $(BUILD)/pfmathgen mk/fixedgen.mk
+$(BUILD)/tests/check-regen-fixed: tests/check-regen-fixed.sh $(BUILD)/pfmathgen mk/fixedgen.mk libpfmath/functions.def mk/funcset.awk
 	@mkdir -p $(dir $@)
 	sed -e 's|@PFMATHGEN@|$(abspath $(BUILD)/pfmathgen)|' -e "s|@FXLIB@|$(FX_LIB_QUOTED)|" $< > $@ && chmod +x $@
 # The library's set: sweeps, saturation, exact values (test_fixed_lib).
@@ -62,16 +57,16 @@ TESTS += $(BUILD)/tests/test_fixed_lib
 TESTS += $(BUILD)/tests/test_fixed_hash
 
 # make sweep: the default fixed-point set over every input (2^32 for the
-# Q16.16 functions: minutes each); exact below 1 LSB, fast within
+# Q16.16 functions: minutes each); exact below its row's exact_lsb (1), fast within
 # max(2^-10 relative, 4 LSB) or pfsweep exits 1.  Writes build/sweep-fixed.md.
 .PHONY: sweep-fixed
 sweep: sweep-fixed
 sweep-fixed: $(BUILD)/pfsweep $(BUILD)/libpfmath.so
 	@echo "| function | input -> output | max LSB | mean LSB | worst input (stored) | inputs |" > $(BUILD)/sweep-fixed.md
 	@echo "|---|---|---|---|---|---|" >> $(BUILD)/sweep-fixed.md
-	@set -e; for e in $(FX_LIB_QUOTED); do \
-	  n=$${e%%/*}; r=$${e#*/}; f=$${r%%/*}; r=$${r#*/}; in=$${r%%/*}; out=$${r#*/}; \
-	  for v in exact fast; do s=""; b="--max-lsb 1"; [ $$v = fast ] && s=_fast && b=""; \
+	@set -e; for e in $(foreach e,$(call funcset,fx_sweep),'$(e)'); do \
+	  n=$${e%%/*}; r=$${e#*/}; f=$${r%%/*}; r=$${r#*/}; in=$${r%%/*}; r=$${r#*/}; out=$${r%%/*}; lsb=$${r#*/}; \
+	  for v in exact fast; do s=""; b="--max-lsb $$lsb"; [ $$v = fast ] && s=_fast && b=""; \
 	    $(BUILD)/pfsweep --func $$f --type "$$in" --out-type "$$out" --variant $$v --all $$b \
 	      > $(BUILD)/sweep-fixed-$$n$$s.txt; \
 	    tail -1 $(BUILD)/sweep-fixed-$$n$$s.txt; \

@@ -1,6 +1,6 @@
 # trig family: sin, cos, tan (gen/funcs_trig.c, gen/templates/sin_pi*.c.in,
 # tan_pio2*.c.in).  Library sources libpfmath/generated/pf_{sin,cos,tan}f*.c.
-LIB_GEN += sin:exact sin:fast cos:exact cos:fast tan:exact tan:fast
+# (listed in libpfmath/functions.def, read by mk/lib.mk into LIB_GEN)
 
 TESTS += $(BUILD)/tests/test_trig
 $(BUILD)/tests/test_trig: $(BUILD)/pfmathgen

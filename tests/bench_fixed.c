@@ -11,8 +11,10 @@
  * Times are the thread's CPU time (so other load on the machine does not
  * count).  Usage: bench_fixed [repetitions]  (default 100); each figure is the fastest
  * of 7 rounds of `repetitions` passes.  Prints a Markdown table. */
+#include "funcset.h"
 #include "pfmath.h"
 #include "pfmath_fixed.h"
+#include "pfref.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -55,7 +57,7 @@ static double time_it(runner r, const void *fn, const void *x, void *y, int reps
    element, as a caller without the array form would write it) and array
    calls */
 #define RUNNERS(tag, IT, OT)                                                                   \
-    __attribute__((noinline)) static void sc_##tag(const void *fn, const void *x, void *y, size_t n) \
+    __attribute__((noinline, unused)) static void sc_##tag(const void *fn, const void *x, void *y, size_t n) \
     {                                                                                          \
         OT (*f)(IT);                                                                           \
         memcpy(&f, fn, sizeof f);                                                              \
@@ -64,17 +66,19 @@ static double time_it(runner r, const void *fn, const void *x, void *y, int reps
         for (size_t i = 0; i < n; i++)                                                         \
             b[i] = f(a[i]);                                                                    \
     }                                                                                          \
-    static void ar_##tag(const void *fn, const void *x, void *y, size_t n)                     \
+    __attribute__((unused)) static void ar_##tag(const void *fn, const void *x, void *y, size_t n) \
     {                                                                                          \
         void (*f)(const IT *, OT *, size_t);                                                   \
         memcpy(&f, fn, sizeof f);                                                              \
         f(x, y, n);                                                                            \
     }
-RUNNERS(i16i16, int16_t, int16_t)
-RUNNERS(i16u16, int16_t, uint16_t)
-RUNNERS(u16i16, uint16_t, int16_t)
-RUNNERS(u16u16, uint16_t, uint16_t)
-RUNNERS(i32i32, int32_t, int32_t)
+/* every storage pair a PF_FIXED row can name (unused ones are fine) */
+#define RUNNERS_FROM(i) RUNNERS(i##i16, PF_FS_CTYPE(i), int16_t) RUNNERS(i##u16, PF_FS_CTYPE(i), uint16_t) \
+                        RUNNERS(i##i32, PF_FS_CTYPE(i), int32_t) RUNNERS(i##u32, PF_FS_CTYPE(i), uint32_t)
+RUNNERS_FROM(i16)
+RUNNERS_FROM(u16)
+RUNNERS_FROM(i32)
+RUNNERS_FROM(u32)
 RUNNERS(ff, float, float)
 
 static float libm_sqrtf(float x) { return sqrtf(x); }
@@ -88,37 +92,58 @@ static void libm_sqrtf_array(const float *restrict x, float *restrict y, size_t 
 }
 
 typedef struct {
-    const char *fn, *types;
+    const char *fn;
     int bits, in_signed, in_exp;
     double lo, hi; /* 32-bit inputs: domain of the real values */
     runner sc, ar;
     void (*fx)(void), (*fxa)(void), (*fxf)(void), (*fxfa)(void);
-    float (*fe)(float), (*ff)(float);
-    void (*fea)(const float *, float *, size_t), (*ffa)(const float *, float *, size_t);
+    pf_func id;
 } row;
 
-#define FX(nm) (void (*)(void))nm, (void (*)(void))nm##_array, (void (*)(void))nm##_fast, \
-               (void (*)(void))nm##_fast_array
-#define FL(g) pf_##g##f, pf_##g##f_fast, pf_##g##f_array, pf_##g##f_fast_array
-
+#define FX(nm) (void (*)(void))pf_##nm, (void (*)(void))pf_##nm##_array, (void (*)(void))pf_##nm##_fast, \
+               (void (*)(void))pf_##nm##_fast_array
+/* the PF_FIXED rows of libpfmath/functions.def */
 static const row rows[] = {
-    {"sin", "fixed<15,12> -> fixed<15,14>", 16, 1, 12, 0, 0, sc_i16i16, ar_i16i16, FX(pf_sin_q12_q14), FL(sin)},
-    {"cos", "fixed<15,12> -> fixed<15,14>", 16, 1, 12, 0, 0, sc_i16i16, ar_i16i16, FX(pf_cos_q12_q14), FL(cos)},
-    {"exp", "fixed<15,11> -> ufixed<16,8>", 16, 1, 11, 0, 0, sc_i16u16, ar_i16u16, FX(pf_exp_q11_uq8), FL(exp)},
-    {"exp2", "fixed<15,11> -> ufixed<16,8>", 16, 1, 11, 0, 0, sc_i16u16, ar_i16u16, FX(pf_exp2_q11_uq8), FL(exp2)},
-    {"log", "ufixed<16,8> -> fixed<15,11>", 16, 0, 8, 0, 0, sc_u16i16, ar_u16i16, FX(pf_log_uq8_q11), FL(log)},
-    {"log2", "ufixed<16,8> -> fixed<15,11>", 16, 0, 8, 0, 0, sc_u16i16, ar_u16i16, FX(pf_log2_uq8_q11), FL(log2)},
-    {"sqrt", "ufixed<16,8> -> ufixed<16,12>", 16, 0, 8, 0, 0, sc_u16u16, ar_u16u16, FX(pf_sqrt_uq8_uq12),
-     libm_sqrtf, libm_sqrtf, libm_sqrtf_array, libm_sqrtf_array},
-    {"sin", "fixed<31,16>", 32, 1, 16, -100, 100, sc_i32i32, ar_i32i32, FX(pf_sin_q16), FL(sin)},
-    {"cos", "fixed<31,16>", 32, 1, 16, -100, 100, sc_i32i32, ar_i32i32, FX(pf_cos_q16), FL(cos)},
-    {"exp", "fixed<31,16>", 32, 1, 16, -11, 10.3, sc_i32i32, ar_i32i32, FX(pf_exp_q16), FL(exp)},
-    {"exp2", "fixed<31,16>", 32, 1, 16, -16, 14.9, sc_i32i32, ar_i32i32, FX(pf_exp2_q16), FL(exp2)},
-    {"log", "fixed<31,16>", 32, 1, 16, 0x1p-16, 32767, sc_i32i32, ar_i32i32, FX(pf_log_q16), FL(log)},
-    {"log2", "fixed<31,16>", 32, 1, 16, 0x1p-16, 32767, sc_i32i32, ar_i32i32, FX(pf_log2_q16), FL(log2)},
-    {"sqrt", "fixed<31,16>", 32, 1, 16, 0, 32767, sc_i32i32, ar_i32i32, FX(pf_sqrt_q16), libm_sqrtf,
-     libm_sqrtf, libm_sqrtf_array, libm_sqrtf_array},
+#define PF_FIXED(n, f, id, ist, isg, isz, ie, ost, osg, osz, oe, lsb, lo, hi)                                  \
+    {#f, PF_FS_BITS(ist), isg, ie, lo, hi, sc_##ist##ost, ar_##ist##ost, FX(n), id},
+#include "functions.def"
 };
+/* "fixed<15,12> -> fixed<15,14>" ("fixed<31,16>" when both agree, below) */
+static const char *row_types[] = {
+#define PF_FIXED(n, f, id, ist, isg, isz, ie, ost, osg, osz, oe, lsb, lo, hi)                                  \
+    PF_FS_TYPE(isg, isz, ie) " -> " PF_FS_TYPE(osg, osz, oe),
+#include "functions.def"
+};
+
+/* the float peers of a fixed-point function: pfmath's exact and fast float
+   variants (the PF_FLOAT rows); sqrt has none, libm's sqrtf stands in */
+typedef struct {
+    float (*fe)(float), (*ff)(float);
+    void (*fea)(const float *, float *, size_t), (*ffa)(const float *, float *, size_t);
+} peers;
+static int float_peers(pf_func id, peers *p)
+{
+    static const struct {
+        pf_func id;
+        int arity;
+        peers p;
+    } fl[] = {
+#define FL1(g) {pf_##g##f, pf_##g##f_fast, pf_##g##f_array, pf_##g##f_fast_array}
+#define FL2(g) {NULL, NULL, NULL, NULL}
+#define PF_FLOAT(n, fid, ar, u, lo, hi) {fid, ar, FL##ar(n)},
+#include "functions.def"
+    };
+    for (size_t i = 0; i < sizeof fl / sizeof fl[0]; i++)
+        if (fl[i].id == id && fl[i].arity == 1) {
+            *p = fl[i].p;
+            return 0;
+        }
+    if (id == PF_SQRT) {
+        *p = (peers){libm_sqrtf, libm_sqrtf, libm_sqrtf_array, libm_sqrtf_array};
+        return 0;
+    }
+    return -1;
+}
 
 static uint64_t rng = 0x2545f4914f6cdd1dull;
 static uint64_t next(void)
@@ -169,11 +194,22 @@ int main(int argc, char **argv)
         t[1] = time_it(w->ar, &w->fxa, x, yi, reps);
         t[2] = time_it(w->sc, &w->fxf, x, yi, reps);
         t[3] = time_it(w->ar, &w->fxfa, x, yi, reps);
-        t[4] = time_it(sc_ff, &w->fe, xf, yf, reps);
-        t[5] = time_it(ar_ff, &w->fea, xf, yf, reps);
-        t[6] = time_it(sc_ff, &w->ff, xf, yf, reps);
-        t[7] = time_it(ar_ff, &w->ffa, xf, yf, reps);
-        printf("| %s | %s |", w->fn, w->types);
+        peers p;
+        if (float_peers(w->id, &p) == 0) {
+            t[4] = time_it(sc_ff, &p.fe, xf, yf, reps);
+            t[5] = time_it(ar_ff, &p.fea, xf, yf, reps);
+            t[6] = time_it(sc_ff, &p.ff, xf, yf, reps);
+            t[7] = time_it(ar_ff, &p.ffa, xf, yf, reps);
+        } else
+            t[4] = t[5] = t[6] = t[7] = NAN; /* no float version to compare with */
+        char types[96];
+        const char *ty = row_types[r], *arrow = strstr(ty, " -> ");
+        size_t k = arrow ? (size_t)(arrow - ty) : strlen(ty);
+        if (arrow && strlen(arrow + 4) == k && !strncmp(ty, arrow + 4, k))
+            snprintf(types, sizeof types, "%.*s", (int)k, ty);
+        else
+            snprintf(types, sizeof types, "%s", ty);
+        printf("| %s | %s |", w->fn, types);
         for (int k = 0; k < 8; k++)
             printf(" %.2f |", t[k]);
         printf(" %.2f | %.2f |\n", t[7] / t[3], t[5] / t[1]);

@@ -5,29 +5,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define PI 3.14159265358979323846
-
-/* The domains of issue 7: sin/cos/tan where the reduction is one step and
-   where it is not, exp/exp2 over everything that neither overflows nor
-   underflows to subnormal, log/log2 log-uniform over 60 decades.  asin and
-   acos over their whole domain; atan log-symmetric so that both sides of
-   the |x| = 1 fold get half the inputs; atan2 on the unit square (it only
-   depends on y/x and the quadrant). */
+/* The domains of issue 7: the PF_BENCH rows of libpfmath/functions.def
+   (sin/cos/tan where the reduction is one step and where it is not, and so
+   on; the table says why each). */
 static const pfb_domain domains[] = {
-    {PF_SIN, "pi", "[-pi, pi]", PFB_UNIFORM, -PI, PI, 0, 0, 0},
-    {PF_SIN, "1e4", "[-1e4, 1e4]", PFB_UNIFORM, -1e4, 1e4, 0, 0, 0},
-    {PF_COS, "pi", "[-pi, pi]", PFB_UNIFORM, -PI, PI, 0, 0, 0},
-    {PF_COS, "1e4", "[-1e4, 1e4]", PFB_UNIFORM, -1e4, 1e4, 0, 0, 0},
-    {PF_TAN, "pi", "[-pi, pi]", PFB_UNIFORM, -PI, PI, 0, 0, 0},
-    {PF_TAN, "1e4", "[-1e4, 1e4]", PFB_UNIFORM, -1e4, 1e4, 0, 0, 0},
-    {PF_ASIN, "1", "[-1, 1]", PFB_UNIFORM, -1, 1, 0, 0, 0},
-    {PF_ACOS, "1", "[-1, 1]", PFB_UNIFORM, -1, 1, 0, 0, 0},
-    {PF_ATAN, "1e3", "+-[1e-3, 1e3] log-uniform", PFB_LOGSYM, 1e-3, 1e3, 0, 0, 0},
-    {PF_ATAN2, "sq", "y, x in [-1, 1]", PFB_UNIFORM, -1, 1, PFB_UNIFORM, -1, 1},
-    {PF_EXP, "87", "[-87, 88]", PFB_UNIFORM, -87, 88, 0, 0, 0},
-    {PF_EXP2, "126", "[-126, 127]", PFB_UNIFORM, -126, 127, 0, 0, 0},
-    {PF_LOG, "1e30", "[1e-30, 1e30] log-uniform", PFB_LOGUNIFORM, 1e-30, 1e30, 0, 0, 0},
-    {PF_LOG2, "1e30", "[1e-30, 1e30] log-uniform", PFB_LOGUNIFORM, 1e-30, 1e30, 0, 0, 0},
+#define PF_BENCH(n, id, tag, desc, dist, lo, hi, dist2, lo2, hi2)                                             \
+    {id, tag, desc, PFB_##dist, lo, hi, PFB_##dist2, lo2, hi2},
+#include "functions.def"
 };
 
 const pfb_domain *pfb_domains(int *n)

@@ -11,6 +11,7 @@
  * on) and called directly, each only when the CPU has that level.  A
  * stripped library, or one built by another compiler, has no such symbols:
  * then the row is the dispatched array form, labelled "dispatch". */
+#include "funcset.h"
 #include "pfbench.h"
 
 #include <dlfcn.h>
@@ -87,7 +88,10 @@ int pfb_ours_open(const char *lib, char *err, size_t errlen)
         lib_base = (uintptr_t)lm->l_addr;
     map_symtab(lib);
     /* trust the table only if it places an exported function where dlsym does */
-    const char *probe[] = {"pf_logf", "pf_log2f", "pf_expf", "pf_sinf"};
+    const char *probe[] = {
+#define PF_FLOAT(n, id, ar, u, lo, hi) "pf_" #n "f",
+#include "functions.def"
+    };
     for (size_t i = 0; i < sizeof probe / sizeof probe[0] && symtab; i++) {
         void *p = dlsym(lib_h, probe[i]);
         /* the scalar forms are target_clones too (an IFUNC symbol): dlsym
@@ -182,25 +186,17 @@ void pfb_loop2(pf_fn2 f, const float *y, const float *x, float *out, size_t n)
 }
 
 /* ---- fixed point ----
- * Issue 5's default set.  The symbol names are this bench's guess at the
- * library's naming (pf_<f>_<in>_<out>, stored-integer in and out, array
- * form <sym>_array(const IN *x, OUT *y, size_t n)); edit the names here when
- * the fixed-point functions land.  Until a symbol exists its row is absent. */
+ * The library's fixed-point set: the PF_FIXED rows of libpfmath/functions.def
+ * (pf_<name>, stored integers in and out, array form <sym>_array(const IN *x,
+ * OUT *y, size_t n)).  A row whose symbol the library lacks is absent. */
+#define PFB_ST_i16 PFB_I16
+#define PFB_ST_u16 PFB_U16
+#define PFB_ST_i32 PFB_I32
+#define PFB_ST_u32 PFB_U32
 static const pfb_fixed_row fixed_rows[] = {
-    {PF_SIN, "pf_sin_q12_q14", "fixed<15,12>", "fixed<15,14>", PFB_I16, PFB_I16, 12, 14, -3.14159265358979, 3.14159265358979},
-    {PF_COS, "pf_cos_q12_q14", "fixed<15,12>", "fixed<15,14>", PFB_I16, PFB_I16, 12, 14, -3.14159265358979, 3.14159265358979},
-    {PF_EXP, "pf_exp_q11_uq8", "fixed<15,11>", "ufixed<16,8>", PFB_I16, PFB_U16, 11, 8, -16, 5.5},
-    {PF_EXP2, "pf_exp2_q11_uq8", "fixed<15,11>", "ufixed<16,8>", PFB_I16, PFB_U16, 11, 8, -16, 8},
-    {PF_LOG, "pf_log_uq8_q11", "ufixed<16,8>", "fixed<15,11>", PFB_U16, PFB_I16, 8, 11, 0x1p-8, 256},
-    {PF_LOG2, "pf_log2_uq8_q11", "ufixed<16,8>", "fixed<15,11>", PFB_U16, PFB_I16, 8, 11, 0x1p-8, 256},
-    {PF_SQRT, "pf_sqrt_uq8_uq12", "ufixed<16,8>", "ufixed<16,12>", PFB_U16, PFB_U16, 8, 12, 0, 256},
-    {PF_SIN, "pf_sin_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, -1e4, 1e4},
-    {PF_COS, "pf_cos_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, -1e4, 1e4},
-    {PF_EXP, "pf_exp_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, -11, 10.3},
-    {PF_EXP2, "pf_exp2_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, -16, 14.9},
-    {PF_LOG, "pf_log_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, 0x1p-16, 32767},
-    {PF_LOG2, "pf_log2_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, 0x1p-16, 32767},
-    {PF_SQRT, "pf_sqrt_q16", "fixed<31,16>", "fixed<31,16>", PFB_I32, PFB_I32, 16, 16, 0, 32767},
+#define PF_FIXED(n, f, id, ist, isg, isz, ie, ost, osg, osz, oe, lsb, lo, hi)                                  \
+    {id, "pf_" #n, PF_FS_TYPE(isg, isz, ie), PF_FS_TYPE(osg, osz, oe), PFB_ST_##ist, PFB_ST_##ost, ie, oe, lo, hi},
+#include "functions.def"
 };
 
 const pfb_fixed_row *pfb_fixed_rows(int *n)

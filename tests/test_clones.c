@@ -144,24 +144,21 @@ static const float special[] = {
     1e30f, -1e30f, 1e4f, -1e4f, 3.0f, 0.1f, 88.7f, -103.9f, 128.0f, -150.0f,
 };
 
-/* the function's own domain, for the uniform share of the sample */
-static void domain(const char *f, float *lo, float *hi)
-{
-    *lo = -4, *hi = 4;
-    if (!strcmp(f, "asin") || !strcmp(f, "acos"))
-        *lo = -1, *hi = 1;
-    else if (!strcmp(f, "exp") || !strcmp(f, "exp2"))
-        *lo = -150, *hi = 130;
-    else if (!strcmp(f, "log") || !strcmp(f, "log2"))
-        *lo = 0, *hi = 4;
-    else if (!strcmp(f, "sin") || !strcmp(f, "cos") || !strcmp(f, "tan"))
-        *lo = -1e4, *hi = 1e4;
-}
-
-static void fill(const char *f, float *x, size_t n, int which)
-{
+/* the library's float functions: the PF_FLOAT rows of libpfmath/functions.def,
+   with the domain of the uniform share of the sample */
+typedef struct {
+    const char *name;
+    int arity;
     float lo, hi;
-    domain(f, &lo, &hi);
+} func_row;
+static const func_row funcs[] = {
+#define PF_FLOAT(n, id, ar, u, lo, hi) {#n, ar, lo, hi},
+#include "functions.def"
+};
+
+static void fill(const func_row *f, float *x, size_t n, int which)
+{
+    float lo = f->lo, hi = f->hi;
     size_t ns = sizeof special / sizeof special[0];
     for (size_t i = 0; i < n; i++) {
         uint32_t r = next32();
@@ -177,8 +174,6 @@ static void fill(const char *f, float *x, size_t n, int which)
 }
 
 /* ---- the comparison ---- */
-static const char *funcs[] = {"log", "log2", "exp", "exp2", "sin", "cos", "tan",
-                              "asin", "acos", "atan", "atan2"};
 static const char *levels[] = {"arch_x86_64_v4", "arch_x86_64_v3", "default"};
 static int can_run(int l)
 {
@@ -195,12 +190,12 @@ static int first_diff(const float *a, const float *b, size_t n)
 
 /* compares every clone of pf_<f>f<sfx> and pf_<f>f<sfx>_array with the
    dispatched scalar form; returns the number of clones compared */
-static int check_one(const char *f, const char *sfx, const float *x, const float *y,
+static int check_one(const func_row *f, const char *sfx, const float *x, const float *y,
                      float *ref, float *out)
 {
     char name[96], cname[128];
-    snprintf(name, sizeof name, "pf_%sf%s", f, sfx);
-    int two = !strcmp(f, "atan2");
+    snprintf(name, sizeof name, "pf_%sf%s", f->name, sfx);
+    int two = f->arity == 2;
     void *s = dlsym(lib, name);
     if (!s) {
         print_message("%s not in the library\n", name);
@@ -253,10 +248,10 @@ static void test_clones_identical(void **state)
     assert_non_null(x), assert_non_null(y), assert_non_null(ref), assert_non_null(out);
     int bad = 0, total = 0;
     for (size_t k = 0; k < sizeof funcs / sizeof funcs[0]; k++) {
-        fill(funcs[k], x, NIN, 1);
-        fill(funcs[k], y, NIN, 0);
+        fill(&funcs[k], x, NIN, 1);
+        fill(&funcs[k], y, NIN, 0);
         for (int fast = 0; fast <= 1; fast++) {
-            int c = check_one(funcs[k], fast ? "_fast" : "", x, y, ref, out);
+            int c = check_one(&funcs[k], fast ? "_fast" : "", x, y, ref, out);
             if (c < 0)
                 bad++;
             else
