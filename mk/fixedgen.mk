@@ -8,10 +8,10 @@ FIT_SRCS += fit/round_fixed.c
 REF_SRCS += ref/sweep_fixed.c
 $(BUILD)/obj/ref/sweep_fixed.o: ALL_CFLAGS += -fopenmp
 
-# gen/fixed_*.c go into libpfgen.a next to gen.mk's sources ($^ there).
-FIXEDGEN_SRCS := $(sort $(wildcard gen/fixed_*.c))
+# gen/fixed/*.c go into libpfgen.a next to gen.mk's sources ($^ there).
+FIXEDGEN_SRCS := $(sort $(wildcard gen/fixed/*.c))
 $(BUILD)/libpfgen.a: $(FIXEDGEN_SRCS:%.c=$(BUILD)/obj/%.o)
-$(BUILD)/obj/gen/fixed_core.o: $(BUILD)/include/pf_templates.h
+$(BUILD)/obj/gen/fixed/fixed_core.o: $(BUILD)/include/pf_templates.h
 # pfsweep's fixed-point half parses types (fit/fixedtype.c)
 $(BUILD)/pfsweep: $(BUILD)/libpffit.a
 
