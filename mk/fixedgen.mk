@@ -1,5 +1,5 @@
 # Generated fixed-point functions (issue 5, second half): pfmathgen with
-# fixed<size,exp> types (gen/fixedgen.c, gen/fixed_*.c, templates
+# fixed<size,exp> types (gen/fixed/fixedgen.c, gen/fixed/fixed_*.c, templates
 # gen/templates/fx_*.c.in), the fixed-point sweep (ref/sweep_fixed.c,
 # pfsweep --type/--out-type in tests/pfsweep_fixed.c), the per-step
 # coefficient rounding (fit/round_fixed.c) and the library's default set

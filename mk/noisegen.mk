@@ -1,6 +1,6 @@
 # Gradient noise for any fixed-point type pair (issue 6's generator half):
 # pfmathgen --func noise1..noise4|noise --type T --out-type U
-# (gen/fixed_noise.c, picked up by fixedgen.mk's gen/fixed_*.c), the exact
+# (gen/noise/fixed_noise.c, put into libpfgen.a below), the exact
 # MPFR reference ref/pfref_noise.c, and tests/test_noisegen.c.  See
 # docs/fixed.md, "Noise for any type pair".
 REF_SRCS += ref/pfref_noise.c

@@ -1,4 +1,4 @@
-/* Internals of the fixed-point generator (gen/fixed_*.c): one generation's
+/* Internals of the fixed-point generator (gen/fixed/fixed_*.c): one generation's
  * state, the per-function hooks, and the shared helpers. */
 #ifndef PF_FIXED_INTERNAL_H
 #define PF_FIXED_INTERNAL_H
@@ -119,13 +119,13 @@ struct fx_gen {
     char sweep_desc[200];
 };
 
-/* the functions (gen/fixed_trig.c, fixed_exp.c, fixed_log.c, fixed_sqrt.c) */
+/* the functions (gen/fixed/fixed_trig.c, fixed_exp.c, fixed_log.c, fixed_sqrt.c) */
 extern const fx_func fx_func_sin, fx_func_cos, fx_func_exp, fx_func_exp2, fx_func_log, fx_func_log2,
     fx_func_sqrt;
 const fx_func *fx_func_find(const char *name);
 const char *fx_func_list(void);
 
-/* ---- helpers (gen/fixed_core.c) ---- */
+/* ---- helpers (gen/fixed/fixed_core.c) ---- */
 double fx_lsb(const fx_gen *G);                 /* output lsb 2^-Eo */
 /* does the error model R |f| + A meet the variant's bound? */
 int fx_within(const fx_gen *G, double R, double A);
@@ -155,14 +155,14 @@ void fx_formats_text(const fx_gen *G, char *buf, size_t n);
 /* largest value of the output type, as a double */
 double fx_out_max(const fx_gen *G);
 
-/* the fixed-point front end's --help text (gen/fixedgen.c) */
+/* the fixed-point front end's --help text (gen/fixed/fixedgen.c) */
 const char *fx_usage_text(void);
 
-/* gradient noise (gen/fixed_noise.c): fx_noise_is("noise3") etc.; the
- * generator is pf_run_noise (gen/request.h) */
+/* gradient noise (gen/noise/fixed_noise.c): fx_noise_is("noise3") etc.; the
+ * generator is pf_run_noise (gen/front/request.h) */
 int fx_noise_is(const char *func);
 
-/* the whole generation (gen/fixed_core.c) */
+/* the whole generation (gen/fixed/fixed_core.c) */
 int fx_generate(fx_gen *G, int sweep, char *err, size_t errlen);
 void fx_report_text(FILE *o, const fx_gen *G);
 void fx_report_json(FILE *o, const fx_gen *G);

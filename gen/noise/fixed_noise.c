@@ -784,7 +784,7 @@ int fx_noise_is(const char *func)
                                                 !func[6])));
 }
 
-/* The noise generator for one request checked by gen/request.c (types,
+/* The noise generator for one request checked by gen/front/request.c (types,
  * variant, exp range, name length). */
 int pf_run_noise(const pf_request *rq, FILE *rep, char **src, size_t *len, char *err, size_t errlen)
 {
