@@ -11,7 +11,6 @@ $(BUILD)/obj/ref/sweep_fixed.o: ALL_CFLAGS += -fopenmp
 # gen/fixed/*.c go into libpfgen.a next to gen.mk's sources ($^ there).
 FIXEDGEN_SRCS := $(sort $(wildcard gen/fixed/*.c))
 $(BUILD)/libpfgen.a: $(FIXEDGEN_SRCS:%.c=$(BUILD)/obj/%.o)
-$(BUILD)/obj/gen/fixed/fixed_core.o: $(BUILD)/include/pf_templates.h
 # pfsweep's fixed-point half parses types (fit/fixedtype.c)
 $(BUILD)/pfsweep: $(BUILD)/libpffit.a
 

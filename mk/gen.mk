@@ -14,7 +14,7 @@ $(BUILD)/include/pf_templates.h: gen/emit/embed-templates.sh $(GEN_TEMPLATES)
 	@mkdir -p $(dir $@)
 	bash gen/emit/embed-templates.sh $@ $(GEN_TEMPLATES)
 
-$(BUILD)/obj/gen/float/generate.o: $(BUILD)/include/pf_templates.h
+$(BUILD)/obj/gen/emit/emit.o: $(BUILD)/include/pf_templates.h
 
 GEN_OBJS := $(GEN_SRCS:%.c=$(BUILD)/obj/%.o)
 $(BUILD)/libpfgen.a: $(GEN_OBJS)

@@ -4,6 +4,7 @@
 #define PF_FIXED_INTERNAL_H
 
 #include "bitwidth.h"
+#include "emit.h"
 #include "fit.h"
 #include "fixedtype.h"
 #include "pfref.h"
@@ -15,18 +16,12 @@
 #define FX_MAXC (FIT_MAX_ORDER + 1)
 #define FX_MAX_SEARCH 24 /* highest order tried when searching */
 
-/* ---- a growable string ---- */
-typedef struct {
-    char *s;
-    size_t n, cap;
-} fx_buf;
-
-void fx_put(fx_buf *b, const char *s);
-__attribute__((format(printf, 2, 3))) void fx_printf(fx_buf *b, const char *fmt, ...);
-/* the embedded template gen/templates/<name>.in, or NULL */
-const char *fx_template(const char *name);
-/* text with @KEY@ replaced from kv (NULL-terminated key, value pairs) */
-void fx_subst(fx_buf *b, const char *text, const char *const *kv);
+/* the emit kit (gen/emit/emit.h) under the names the fixed-point code uses */
+typedef pf_buf fx_buf;
+#define fx_put pf_put
+#define fx_printf pf_printf
+#define fx_template pf_template
+#define fx_subst pf_subst
 
 typedef struct fx_gen fx_gen;
 
@@ -130,8 +125,8 @@ double fx_lsb(const fx_gen *G);                 /* output lsb 2^-Eo */
 /* does the error model R |f| + A meet the variant's bound? */
 int fx_within(const fx_gen *G, double R, double A);
 int fx_bitlen(uint64_t v);
-/* "INT64_C(-123)" or "-123" for the kernel's word */
-void fx_lit(char *buf, size_t n, int64_t v, int w64);
+/* "INT64_C(-123)" (w64) or "-123" for the kernel's word */
+#define fx_lit(buf, n, v, w64) pf_int_lit(buf, n, v, (w64) ? PF_LIT_INT64 : PF_LIT_PLAIN)
 /* the Horner block: "p = C_m; p = mul(p, x, sh) + C_j; ..." on variable x */
 void fx_emit_horner(fx_gen *G, fx_buf *b, const char *x, const char *indent);
 /* 16-bit lanes: "k[i]" for the constant v (appended to G's table) */
