@@ -300,7 +300,7 @@ void fx_formats_text(const fx_gen *G, char *buf, size_t n)
         snprintf(buf + o, n - o, "; p0 saturated to its format");
 }
 
-static void wrap_text(fx_buf *b, const char *label, const char *text) { pf_prov_wrap(b, label, text, 1); }
+static void wrap_text(pf_buf *b, const char *label, const char *text) { pf_prov_wrap(b, label, text, 1); }
 
 static const char *method_text(const fx_gen *G)
 {
@@ -309,7 +309,7 @@ static const char *method_text(const fx_gen *G)
                           "the lsb of their Horner step (bit-width analysis)");
 }
 
-static void provenance(fx_buf *b, const fx_gen *G)
+static void provenance(pf_buf *b, const fx_gen *G)
 {
     const fx_func *F = G->fn;
     char tmp[2048], a[64], bb[64];
@@ -387,29 +387,29 @@ static void provenance(fx_buf *b, const fx_gen *G)
 
 char *fx_emit(const fx_gen *G, size_t *len)
 {
-    fx_buf b = {0};
+    pf_buf b = {0};
     fx_gen *g = (fx_gen *)G; /* emit() fills the 16-bit constant table */
     g->nk = 0;
-    fx_buf body = {0};
+    pf_buf body = {0};
     G->fn->emit(g, &body); /* first: it may note wider steps for the provenance */
     provenance(&b, G);
-    fx_put(&b, fx_template("fx_common.h"));
+    pf_put(&b, pf_template("fx_common.h"));
     if (G->W == 16)
-        fx_put(&b, fx_template("fx_common16.h"));
-    fx_put(&b, body.s);
+        pf_put(&b, pf_template("fx_common16.h"));
+    pf_put(&b, body.s);
     free(body.s);
     if (G->W == 16) {
-        fx_buf kl = {0};
+        pf_buf kl = {0};
         for (int i = 0; i < G->nk; i++)
-            fx_printf(&kl, "\n    %lld,%*s/* k[%d]: %s */", (long long)G->kval[i], 7 - (int)snprintf(NULL, 0, "%lld", (long long)G->kval[i]), "", i, G->kwhat[i]);
+            pf_printf(&kl, "\n    %lld,%*s/* k[%d]: %s */", (long long)G->kval[i], 7 - (int)snprintf(NULL, 0, "%lld", (long long)G->kval[i]), "", i, G->kwhat[i]);
         char nk[16];
         snprintf(nk, sizeof nk, "%d", G->nk);
         const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "NK", nk, "KLIST", kl.s ? kl.s : "", NULL};
-        fx_subst(&b, fx_template("fx_tail16.c"), kv);
+        pf_subst(&b, pf_template("fx_tail16.c"), kv);
         free(kl.s);
     } else {
         const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, NULL};
-        fx_subst(&b, fx_template("fx_tail.c"), kv);
+        pf_subst(&b, pf_template("fx_tail.c"), kv);
     }
     *len = b.n;
     return b.s;
@@ -634,7 +634,7 @@ const char *fx_k16(fx_gen *G, int64_t v, const char *what)
 }
 
 /* 16-bit Horner: p = mulhrs(p, x >> d) + c, formats from pf_bw_horner_word */
-static void emit_horner16(fx_gen *G, fx_buf *b, const char *x, const char *ind)
+static void emit_horner16(fx_gen *G, pf_buf *b, const char *x, const char *ind)
 {
     int m = G->m, done[16] = {0};
     for (int j = m - 1; j >= 0; j--) {
@@ -642,14 +642,14 @@ static void emit_horner16(fx_gen *G, fx_buf *b, const char *x, const char *ind)
         if (d && !done[d]) {
             char what[64];
             snprintf(what, sizeof what, "2^%d: %s rounded to %d fraction bits", 15 - d, x, 15 - d);
-            fx_printf(b, "%sint16_t %s%d = pf_fx_mulhrs(%s, %s); /* %s rounded to 2^-%d */\n", ind, x, d, x,
+            pf_printf(b, "%sint16_t %s%d = pf_fx_mulhrs(%s, %s); /* %s rounded to 2^-%d */\n", ind, x, d, x,
                       fx_k16(G, (int64_t)1 << (15 - d), what), x, 15 - d);
             done[d] = 1;
         }
     }
     char what[64];
     snprintf(what, sizeof what, "c%d = %.12g", G->deg[m], ldexp((double)G->C[m], -G->E[m]));
-    fx_printf(b, "%sint16_t p = %s; /* %s */\n", ind, fx_k16(G, G->C[m], what), what);
+    pf_printf(b, "%sint16_t p = %s; /* %s */\n", ind, fx_k16(G, G->C[m], what), what);
     for (int j = m - 1; j >= 0; j--) {
         char xv[32];
         if (G->ws[j].xdrop)
@@ -658,10 +658,10 @@ static void emit_horner16(fx_gen *G, fx_buf *b, const char *x, const char *ind)
             snprintf(xv, sizeof xv, "%s", x);
         snprintf(what, sizeof what, "c%d = %.12g", G->deg[j], ldexp((double)G->C[j], -G->E[j]));
         if (G->C[j])
-            fx_printf(b, "%sp = (int16_t)(pf_fx_mulhrs(p, %s) + %s); /* %s, 2^-%d units */\n", ind, xv,
+            pf_printf(b, "%sp = (int16_t)(pf_fx_mulhrs(p, %s) + %s); /* %s, 2^-%d units */\n", ind, xv,
                       fx_k16(G, G->C[j], what), what, G->E[j]);
         else
-            fx_printf(b, "%sp = pf_fx_mulhrs(p, %s); /* %s, 2^-%d units */\n", ind, xv, what, G->E[j]);
+            pf_printf(b, "%sp = pf_fx_mulhrs(p, %s); /* %s, 2^-%d units */\n", ind, xv, what, G->E[j]);
     }
 }
 
@@ -674,37 +674,37 @@ const char *fx_opaque16(fx_gen *G, const char *expr)
     return buf[i];
 }
 
-void fx_emit_return16(const fx_gen *G, fx_buf *b, const char *r, int64_t lo, int64_t hi)
+void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int64_t hi)
 {
     /* r holds values in [lo, hi]: clamp only where the output is narrower
        (no comparison that is always false: -Wtype-limits) */
     int64_t mx = pf_type_max_stored(&G->out), mn = pf_type_min_stored(&G->out);
-    fx_printf(b, "    return (%s)", G->ot);
+    pf_printf(b, "    return (%s)", G->ot);
     if (lo < mn)
-        fx_printf(b, "(%s < %lld ? %lld : ", r, (long long)mn, (long long)mn);
+        pf_printf(b, "(%s < %lld ? %lld : ", r, (long long)mn, (long long)mn);
     if (hi > mx)
-        fx_printf(b, "(%s > %lld ? %lld : ", r, (long long)mx, (long long)mx);
-    fx_put(b, r);
+        pf_printf(b, "(%s > %lld ? %lld : ", r, (long long)mx, (long long)mx);
+    pf_put(b, r);
     if (hi > mx)
-        fx_put(b, ")");
+        pf_put(b, ")");
     if (lo < mn)
-        fx_put(b, ")");
-    fx_put(b, ";");
+        pf_put(b, ")");
+    pf_put(b, ";");
 }
 
-void fx_emit_norm16(fx_buf *b, int nb)
+void fx_emit_norm16(pf_buf *b, int nb)
 {
     /* u = ux 2^(16 - nb), then four (or fewer) stages shift the leading
        one up to bit 15: constant shifts and selects, 16-bit lanes */
-    fx_printf(b, "    uint16_t u = (uint16_t)(ux << %d);\n    int16_t n = %d; /* bitlen(ux) - 1 */\n", 16 - nb, nb - 1);
+    pf_printf(b, "    uint16_t u = (uint16_t)(ux << %d);\n    int16_t n = %d; /* bitlen(ux) - 1 */\n", 16 - nb, nb - 1);
     for (int sh = 8; sh >= 1; sh /= 2)
         if (sh < nb)
-            fx_printf(b, "    n = (int16_t)(u < 0x%xu ? n - %d : n);\n    u = (uint16_t)(u < 0x%xu ? u << %d : u);\n",
+            pf_printf(b, "    n = (int16_t)(u < 0x%xu ? n - %d : n);\n    u = (uint16_t)(u < 0x%xu ? u << %d : u);\n",
                       1u << (16 - sh), sh, 1u << (16 - sh), sh);
-    fx_put(b, "    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */");
+    pf_put(b, "    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */");
 }
 
-void fx_emit_vshift16(fx_buf *b, const char *a, const char *sexpr, int smin, int smax)
+void fx_emit_vshift16(pf_buf *b, const char *a, const char *sexpr, int smin, int smax)
 {
     /* h = floor(a 2^(1 + L - s')) with s' = s + L >= 0 (L lifts negative
        shifts), then r = (h + 1) >> 1 as (h >> 1) + (h & 1): round(a 2^-s),
@@ -712,14 +712,14 @@ void fx_emit_vshift16(fx_buf *b, const char *a, const char *sexpr, int smin, int
        a 2^(1 + L) < 2^32 */
     int L = smin < 0 ? -smin : 0;
     int hi = smax + L;
-    fx_printf(b, "    uint32_t sv = (uint32_t)(%s + %d);\n", sexpr, L);
+    pf_printf(b, "    uint32_t sv = (uint32_t)(%s + %d);\n", sexpr, L);
     if (hi > 31)
-        fx_put(b, "    sv = sv < 31u ? sv : 31u;\n");
-    fx_printf(b, "    uint32_t h = ((uint32_t)%s << %d) >> sv;\n", a, 1 + L);
-    fx_put(b, "    uint32_t r = (h >> 1) + (h & 1u);\n");
+        pf_put(b, "    sv = sv < 31u ? sv : 31u;\n");
+    pf_printf(b, "    uint32_t h = ((uint32_t)%s << %d) >> sv;\n", a, 1 + L);
+    pf_put(b, "    uint32_t r = (h >> 1) + (h & 1u);\n");
 }
 
-void fx_emit_horner(fx_gen *G, fx_buf *b, const char *x, const char *ind)
+void fx_emit_horner(fx_gen *G, pf_buf *b, const char *x, const char *ind)
 {
     if (G->W == 16) {
         emit_horner16(G, b, x, ind);
@@ -733,16 +733,16 @@ void fx_emit_horner(fx_gen *G, fx_buf *b, const char *x, const char *ind)
     for (int j = 0; j <= m; j++)
         pos = pos && G->C[j] >= 0;
     coef_lit(G, l, sizeof l, G->C[m], 0);
-    fx_printf(b, "%s%s p = %s; /* c%d = %.12g */\n", ind, G->wt, l, G->deg[m], ldexp((double)G->C[m], -G->E[m]));
+    pf_printf(b, "%s%s p = %s; /* c%d = %.12g */\n", ind, G->wt, l, G->deg[m], ldexp((double)G->C[m], -G->E[m]));
     for (int j = m - 1; j >= 0; j--) {
         coef_lit(G, l, sizeof l, G->C[j], 1);
         if (!G->C[j])
             l[0] = 0;
         if (G->W == 32)
-            fx_printf(b, "%sp = (int32_t)pf_fx_mul32(p, %s, %d)%s%s; /* c%d = %.12g */\n", ind, x, G->st[j].shift,
+            pf_printf(b, "%sp = (int32_t)pf_fx_mul32(p, %s, %d)%s%s; /* c%d = %.12g */\n", ind, x, G->st[j].shift,
                       l[0] ? " " : "", l, G->deg[j], ldexp((double)G->C[j], -G->E[j]));
         else
-            fx_printf(b, "%sp = pf_fx_mul64%s(p, %s, %d)%s%s; /* c%d = %.12g */\n", ind, pos ? "p" : "", x, G->st[j].shift, l[0] ? " " : "", l, G->deg[j],
+            pf_printf(b, "%sp = pf_fx_mul64%s(p, %s, %d)%s%s; /* c%d = %.12g */\n", ind, pos ? "p" : "", x, G->st[j].shift, l[0] ? " " : "", l, G->deg[j],
                       ldexp((double)G->C[j], -G->E[j]));
     }
     if (G->root_sat) {
@@ -750,6 +750,6 @@ void fx_emit_horner(fx_gen *G, fx_buf *b, const char *x, const char *ind)
         fx_lit(hi, sizeof hi, pf_type_max_stored(&G->pt), G->W == 64);
         fx_lit(lo, sizeof lo, pf_type_min_stored(&G->pt), G->W == 64);
         pf_type_format(&G->pt, t, sizeof t);
-        fx_printf(b, "%sp = p > %s ? %s : p < %s ? %s : p; /* p0 saturated to %s */\n", ind, hi, hi, lo, lo, t);
+        pf_printf(b, "%sp = p > %s ? %s : p < %s ? %s : p; /* p0 saturated to %s */\n", ind, hi, hi, lo, lo, t);
     }
 }

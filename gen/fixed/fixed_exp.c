@@ -233,116 +233,116 @@ static void budget(fx_gen *G)
         G->R = INFINITY;
 }
 
-static void emit16(fx_gen *G, fx_buf *b, int base2)
+static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
-    fx_buf body = {0}, horner = {0};
+    pf_buf body = {0}, horner = {0};
     int Ei = G->in.exp, Ep = G->Ep;
     int64_t omax = pf_type_max_stored(&G->out);
     int full = G->in.storage_bits == 16 && G->in.is_signed;
-    fx_put(&body, "    int16_t xc = (int16_t)x;");
+    pf_put(&body, "    int16_t xc = (int16_t)x;");
     if (G->LOCLAMP)
-        fx_printf(&body, "\n    xc = (int16_t)(xc < %lld ? %lld : xc);", (long long)G->XLO, (long long)G->XLO);
+        pf_printf(&body, "\n    xc = (int16_t)(xc < %lld ? %lld : xc);", (long long)G->XLO, (long long)G->XLO);
     if (G->SAT)
-        fx_printf(&body, "\n    xc = (int16_t)(xc > %lld ? %lld : xc);", (long long)G->XHI, (long long)G->XHI);
-    fx_put(&body, "\n");
+        pf_printf(&body, "\n    xc = (int16_t)(xc > %lld ? %lld : xc);", (long long)G->XHI, (long long)G->XHI);
+    pf_put(&body, "\n");
     long long bias = (long long)(G->K0 << Ei);
     if (base2) {
-        fx_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + %lldu); /* (t + %lld) 2^%d */\n", bias,
+        pf_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + %lldu); /* (t + %lld) 2^%d */\n", bias,
                   (long long)G->K0, Ei);
     } else {
         const char *kb = fx_k16(G, G->B16, "B = round((log2(e) - 1) 2^15)");
         const char *xo = G->LOCLAMP || G->SAT || !full ? fx_opaque16(G, "xc") : "xc";
-        fx_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + (uint16_t)pf_fx_mulhrs(%s, %s) + %lldu); /* (t + %lld) 2^%d, t = x log2(e) */\n",
+        pf_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + (uint16_t)pf_fx_mulhrs(%s, %s) + %lldu); /* (t + %lld) 2^%d, t = x log2(e) */\n",
                   xo, kb, bias, (long long)G->K0, Ei);
     }
-    fx_printf(&body, "    uint16_t kb = (uint16_t)(tb >> %d); /* k + %lld */\n", Ei, (long long)G->K0);
+    pf_printf(&body, "    uint16_t kb = (uint16_t)(tb >> %d); /* k + %lld */\n", Ei, (long long)G->K0);
     {
         char e[64], w[64];
         snprintf(e, sizeof e, "tb & 0x%x", (1u << Ei) - 1);
         snprintf(w, sizeof w, "2^%d: f to 2^-15 units", 15 - Ei);
         const char *k2 = fx_k16(G, (int64_t)1 << (15 - Ei), w);
-        fx_printf(&body, "    int16_t f = (int16_t)((%s) * %s); /* f in [0, 1), 2^-15 units (a product: see the array form) */\n",
+        pf_printf(&body, "    int16_t f = (int16_t)((%s) * %s); /* f in [0, 1), 2^-15 units (a product: see the array form) */\n",
                   e, k2);
     }
-    fx_put(&body, "    /* P(f) ~ 2^f: Horner in 16-bit words, one rounding per step */\n");
+    pf_put(&body, "    /* P(f) ~ 2^f: Horner in 16-bit words, one rounding per step */\n");
     fx_emit_horner(G, &horner, "f", "    ");
-    fx_put(&body, horner.s);
+    pf_put(&body, horner.s);
     /* P 2^k in output units: r = round(P 2^-s), s = Ep - Eo - k */
     int smin = Ep - G->out.exp - (int)G->KHI, smax = Ep - G->out.exp - (int)G->KLO;
     char sexpr[64];
     snprintf(sexpr, sizeof sexpr, "%lld - (int32_t)kb", (long long)(Ep - G->out.exp + G->K0));
-    fx_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
+    pf_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
     fx_emit_vshift16(&body, "(uint16_t)p", sexpr, smin, smax);
     snprintf(G->wide_text, sizeof G->wide_text,
              "the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit per-element "
              "shift; the error model does not need them)");
     /* overflow saturates through a mask: GCC 12 widens the whole loop to
        32-bit lanes for a select between a 16-bit comparison and r */
-    fx_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
+    pf_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
               (unsigned long long)omax);
     if (G->SAT)
-        fx_printf(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x >= %lld)); /* all ones from the first overflowing input */\n"
+        pf_printf(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x >= %lld)); /* all ones from the first overflowing input */\n"
                          "    return (%s)((r16 & ~m) | (%lluu & m));", (long long)G->XSAT, G->ot, (unsigned long long)omax);
     else
-        fx_printf(&body, "    return (%s)r16;", G->ot);
+        pf_printf(&body, "    return (%s)r16;", G->ot);
     char xsat[32], xlo[32];
     snprintf(xsat, sizeof xsat, "%lld", (long long)G->XSAT);
     snprintf(xlo, sizeof xlo, "%lld", (long long)G->XLO);
     const char *kv[] = {"FUNC", base2 ? "exp2" : "exp", "TDEF", base2 ? "x" : "x log2(e)", "XSAT", xsat, "XLO", xlo,
                         "NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};
-    fx_subst(b, fx_template("fx_exp16.c"), kv);
+    pf_subst(b, pf_template("fx_exp16.c"), kv);
     free(body.s);
     free(horner.s);
 }
 
-static void emit(fx_gen *G, fx_buf *b, int base2)
+static void emit(fx_gen *G, pf_buf *b, int base2)
 {
     if (G->W == 16) {
         emit16(G, b, base2);
         return;
     }
-    fx_buf clamp = {0}, split = {0}, horner = {0}, out = {0};
+    pf_buf clamp = {0}, split = {0}, horner = {0}, out = {0};
     int W = G->W, Ei = G->in.exp, Ft = (int)G->FT;
     /* clamp */
-    fx_put(&clamp, "    int64_t xc = x;");
+    pf_put(&clamp, "    int64_t xc = x;");
     if (G->LOCLAMP)
-        fx_printf(&clamp, "\n    xc = xc < %lld ? %lld : xc;", (long long)G->XLO, (long long)G->XLO);
+        pf_printf(&clamp, "\n    xc = xc < %lld ? %lld : xc;", (long long)G->XLO, (long long)G->XLO);
     if (G->SAT)
-        fx_printf(&clamp, "\n    xc = xc > %lld ? %lld : xc;", (long long)G->XHI, (long long)G->XHI);
+        pf_printf(&clamp, "\n    xc = xc > %lld ? %lld : xc;", (long long)G->XHI, (long long)G->XHI);
     /* t 2^Ft, biased by K0 2^Ft so that it is >= 0; kb = k + K0 */
     if (base2 && Ei <= 0) {
-        fx_printf(&split, "    /* x is an integer: k = x, f = 0 */\n    uint64_t kb = (uint64_t)(xc * %lld + %lld);\n",
+        pf_printf(&split, "    /* x is an integer: k = x, f = 0 */\n    uint64_t kb = (uint64_t)(xc * %lld + %lld);\n",
                   (long long)1 << -Ei, (long long)G->K0);
-        fx_printf(&split, "    %s f = 0;", G->wt);
+        pf_printf(&split, "    %s f = 0;", G->wt);
     } else {
         if (base2)
-            fx_printf(&split, "    uint64_t tb = (uint64_t)(xc + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
+            pf_printf(&split, "    uint64_t tb = (uint64_t)(xc + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
                       (long long)(G->K0 << Ft), (long long)G->K0, Ft);
         else if (G->XLO < INT32_MIN || G->XHI > INT32_MAX)
-            fx_printf(&split,
+            pf_printf(&split,
                       "    uint64_t tb = (uint64_t)(xc * INT64_C(%lld) + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
                       (long long)G->CEXP, (long long)(G->K0 << Ft), (long long)G->K0, Ft);
         else if (G->CEXP <= INT32_MAX)
-            fx_printf(&split,
+            pf_printf(&split,
                       "    uint64_t tb = (uint64_t)((int64_t)(int32_t)xc * %lld + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
                       (long long)G->CEXP, (long long)(G->K0 << Ft), (long long)G->K0, Ft);
         else
             /* x C from two 32x32-bit products (C = CH 2^31 + CL), which
                vectorize where a 64x64-bit product does not; the sum is
                in [0, 2^63), so its value mod 2^64 is the value */
-            fx_printf(&split,
+            pf_printf(&split,
                       "    uint64_t tb = ((uint64_t)((int64_t)(int32_t)xc * %lld) << 31) + (uint64_t)((int64_t)(int32_t)xc * %lld)\n"
                       "                  + UINT64_C(%lld); /* (t + %lld) 2^%d, t = x %lld 2^-%d */\n",
                       (long long)(G->CEXP >> 31), (long long)(G->CEXP & 0x7fffffff), (long long)(G->K0 << Ft),
                       (long long)G->K0, Ft, (long long)G->CEXP, (int)G->FT - G->in.exp);
-        fx_printf(&split, "    uint64_t kb = tb >> %d; /* k + %lld */\n", Ft, (long long)G->K0);
-        fx_printf(&split, "    uint64_t fr = tb & UINT64_C(0x%llx); /* f 2^%d */\n",
+        pf_printf(&split, "    uint64_t kb = tb >> %d; /* k + %lld */\n", Ft, (long long)G->K0);
+        pf_printf(&split, "    uint64_t fr = tb & UINT64_C(0x%llx); /* f 2^%d */\n",
                   (unsigned long long)(((uint64_t)1 << Ft) - 1), Ft);
         if (Ft <= W - 1)
-            fx_printf(&split, "    %s f = (%s)(fr << %d); /* f in [0, 1), 2^-%d units */", G->wt, G->wt, W - 1 - Ft,
+            pf_printf(&split, "    %s f = (%s)(fr << %d); /* f in [0, 1), 2^-%d units */", G->wt, G->wt, W - 1 - Ft,
                       W - 1);
         else
-            fx_printf(&split,
+            pf_printf(&split,
                       "    uint64_t f1 = pf_fx_rne_u(fr, %d);\n"
                       "    %s f = (%s)(f1 < UINT64_C(0x%llx) ? f1 : UINT64_C(0x%llx)); /* f in [0, 1), 2^-%d units */",
                       Ft - (W - 1), G->wt, G->wt, (unsigned long long)(((uint64_t)1 << (W - 1)) - 1),
@@ -358,23 +358,23 @@ static void emit(fx_gen *G, fx_buf *b, int base2)
     long long bk = (long long)base + (long long)G->K0; /* sh = bk - kb */
     const char *pcast = "(uint64_t)(p > 0 ? p : 0)";
     if (shmin >= 1) {
-        fx_printf(&out, "    uint64_t sh = %lld - kb;\n", bk);
-        fx_printf(&out, "    uint64_t r = pf_fx_rne_u(%s, %s);\n", pcast, shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
+        pf_printf(&out, "    uint64_t sh = %lld - kb;\n", bk);
+        pf_printf(&out, "    uint64_t r = pf_fx_rne_u(%s, %s);\n", pcast, shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
     } else {
-        fx_printf(&out, "    int64_t sh = %lld - (int64_t)kb;\n", bk);
+        pf_printf(&out, "    int64_t sh = %lld - (int64_t)kb;\n", bk);
         if (shmax <= 0)
-            fx_printf(&out, "    uint64_t r = %s << -sh;\n", pcast);
+            pf_printf(&out, "    uint64_t r = %s << -sh;\n", pcast);
         else
-            fx_printf(&out,
+            pf_printf(&out,
                       "    uint64_t r = sh >= 1 ? pf_fx_rne_u(%s, (uint64_t)(sh < 63 ? sh : 63))\n"
                       "                         : %s << (sh > -62 ? -sh : 62);\n",
                       pcast, pcast);
     }
-    fx_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
+    pf_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
     if (G->SAT)
-        fx_printf(&out, "    return (%s)(x >= %lld ? %lluu : r);", G->ot, (long long)G->XSAT, (unsigned long long)omax);
+        pf_printf(&out, "    return (%s)(x >= %lld ? %lluu : r);", G->ot, (long long)G->XSAT, (unsigned long long)omax);
     else
-        fx_printf(&out, "    return (%s)r;", G->ot);
+        pf_printf(&out, "    return (%s)r;", G->ot);
     char xsat[32], xlo[32], tdef[64];
     snprintf(xsat, sizeof xsat, "%lld", (long long)G->XSAT);
     snprintf(xlo, sizeof xlo, "%lld", (long long)G->XLO);
@@ -382,15 +382,15 @@ static void emit(fx_gen *G, fx_buf *b, int base2)
     const char *kv[] = {"FUNC", base2 ? "exp2" : "exp", "TDEF", tdef, "XSAT", xsat, "XLO", xlo, "NAME", G->name,
                         "IT", G->it, "OT", G->ot, "CLAMP_CODE", clamp.s, "SPLIT_CODE", split.s, "HORNER", horner.s,
                         "OUT_TYPE", G->out_text, "OUT_CODE", out.s, NULL};
-    fx_subst(b, fx_template("fx_exp.c"), kv);
+    pf_subst(b, pf_template("fx_exp.c"), kv);
     free(clamp.s);
     free(split.s);
     free(horner.s);
     free(out.s);
 }
 
-static void emit_exp(fx_gen *G, fx_buf *b) { emit(G, b, 0); }
-static void emit_exp2(fx_gen *G, fx_buf *b) { emit(G, b, 1); }
+static void emit_exp(fx_gen *G, pf_buf *b) { emit(G, b, 0); }
+static void emit_exp2(fx_gen *G, pf_buf *b) { emit(G, b, 1); }
 
 const fx_func fx_func_exp = {
     .name = "exp", .ref = PF_EXP, .tmpl = "fx_exp", .target_text = "2^t", .g = g_exp2, .a = 0, .b = 1,

@@ -16,13 +16,6 @@
 #define FX_MAXC (FIT_MAX_ORDER + 1)
 #define FX_MAX_SEARCH 24 /* highest order tried when searching */
 
-/* the emit kit (gen/emit/emit.h) under the names the fixed-point code uses */
-typedef pf_buf fx_buf;
-#define fx_put pf_put
-#define fx_printf pf_printf
-#define fx_template pf_template
-#define fx_subst pf_subst
-
 typedef struct fx_gen fx_gen;
 
 /* One function's hooks.  prepare() checks the types and sets the reduction
@@ -44,7 +37,7 @@ typedef struct {
     const char *con_text;
     int (*prepare)(fx_gen *G, char *err, size_t errlen);
     void (*budget)(fx_gen *G);
-    void (*emit)(fx_gen *G, fx_buf *body);
+    void (*emit)(fx_gen *G, pf_buf *body);
 } fx_func;
 
 struct fx_gen {
@@ -128,7 +121,7 @@ int fx_bitlen(uint64_t v);
 /* "INT64_C(-123)" (w64) or "-123" for the kernel's word */
 #define fx_lit(buf, n, v, w64) pf_int_lit(buf, n, v, (w64) ? PF_LIT_INT64 : PF_LIT_PLAIN)
 /* the Horner block: "p = C_m; p = mul(p, x, sh) + C_j; ..." on variable x */
-void fx_emit_horner(fx_gen *G, fx_buf *b, const char *x, const char *indent);
+void fx_emit_horner(fx_gen *G, pf_buf *b, const char *x, const char *indent);
 /* 16-bit lanes: "k[i]" for the constant v (appended to G's table) */
 const char *fx_k16(fx_gen *G, int64_t v, const char *what);
 /* bound on max |P_k(x)| over [0, 1] for the partial Horner sums of the
@@ -138,13 +131,13 @@ void fx_partial_max(const double *a, int m, double *pmax);
    expr's range from GCC (see fx_tail16.c.in) */
 const char *fx_opaque16(fx_gen *G, const char *expr);
 /* 16-bit lanes: "return (OT)r" with r in [lo, hi] clamped to the output */
-void fx_emit_return16(const fx_gen *G, fx_buf *b, const char *r, int64_t lo, int64_t hi);
+void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int64_t hi);
 /* 16-bit lanes: a staged normalization of ux (unsigned, nb significant
    bits at most) to u with bit 15 set and n = bitlen - 1, for log/sqrt */
-void fx_emit_norm16(fx_buf *b, int nb);
+void fx_emit_norm16(pf_buf *b, int nb);
 /* 16-bit lanes: r = round(a 2^-s) (ties up) in 32-bit lanes for the
    variable shift s = sexpr in [smin, smax] (smin may be negative) */
-void fx_emit_vshift16(fx_buf *b, const char *a, const char *sexpr, int smin, int smax);
+void fx_emit_vshift16(pf_buf *b, const char *a, const char *sexpr, int smin, int smax);
 /* description of the formats, for the provenance */
 void fx_formats_text(const fx_gen *G, char *buf, size_t n);
 /* largest value of the output type, as a double */

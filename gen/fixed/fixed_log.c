@@ -184,9 +184,9 @@ static void budget(fx_gen *G)
     G->A = G->poly_err + G->arith + G->dred + (d < 0 ? ldexp(0.5, -(int)G->EZ) : 0);
 }
 
-static void emit16(fx_gen *G, fx_buf *b, int base2)
+static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
-    fx_buf body = {0}, horner = {0};
+    pf_buf body = {0}, horner = {0};
     int Ei = G->in.exp, Eo = G->out.exp, a = (int)G->A16, Ep = G->Ep;
     int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in));
     int64_t mn = pf_type_min_stored(&G->out);
@@ -198,25 +198,25 @@ static void emit16(fx_gen *G, fx_buf *b, int base2)
         snprintf(sumtxt, sizeof sumtxt, "in an int16_t at 2^-%d%s", a,
                  base2 ? "" : " (e ln2 = round(e 2^a K 2^-15), K = round(ln2 2^15) from MPFR, the rounding "
                               "multiply-high)");
-    fx_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
+    pf_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
     fx_emit_norm16(&body, nb);
-    fx_put(&body, "\n");
+    pf_put(&body, "\n");
     const char *to = fx_opaque16(G, "t");
-    fx_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", to);
-    fx_put(&body, "    /* P(t) ~ ");
-    fx_put(&body, base2 ? "log2(1 + t)" : "log(1 + t)");
-    fx_put(&body, ": Horner in 16-bit words, one rounding per step */\n");
+    pf_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", to);
+    pf_put(&body, "    /* P(t) ~ ");
+    pf_put(&body, base2 ? "log2(1 + t)" : "log(1 + t)");
+    pf_put(&body, ": Horner in 16-bit words, one rounding per step */\n");
     fx_emit_horner(G, &horner, "tq", "    ");
-    fx_put(&body, horner.s);
+    pf_put(&body, horner.s);
     int64_t mx = pf_type_max_stored(&G->out);
     char rc[200];
     if (G->WIDE) {
         int ez = (int)G->EZ32;
-        fx_printf(&body, "    /* e%s + P at 2^-%d in 32-bit lanes (see Lanes above), rounded once */\n",
+        pf_printf(&body, "    /* e%s + P at 2^-%d in 32-bit lanes (see Lanes above), rounded once */\n",
                   base2 ? "" : " ln2", ez);
-        fx_printf(&body, "    int32_t z = (int32_t)(n - %d) * %lld + (int32_t)p * %lld;\n", Ei, (long long)G->KZ32,
+        pf_printf(&body, "    int32_t z = (int32_t)(n - %d) * %lld + (int32_t)p * %lld;\n", Ei, (long long)G->KZ32,
                   (long long)1 << (ez - Ep));
-        fx_printf(&body, "    int32_t r = pf_fx_rsh32(z, %d);\n", ez - Eo);
+        pf_printf(&body, "    int32_t r = pf_fx_rsh32(z, %d);\n", ez - Eo);
         snprintf(rc, sizeof rc, "(int16_t)(r < %lld ? %lld : r > %lld ? %lld : r)", (long long)mn, (long long)mn,
                  (long long)mx, (long long)mx);
         snprintf(G->wide_text, sizeof G->wide_text,
@@ -231,32 +231,32 @@ static void emit16(fx_gen *G, fx_buf *b, int base2)
             snprintf(pa, sizeof pa, "p");
         char w[64];
         snprintf(w, sizeof w, "2^%d: e at 2^-%d", a, a);
-        fx_printf(&body, "    int16_t ea = (int16_t)((n - %d) * %s); /* e 2^%d */\n", Ei, fx_k16(G, (int64_t)1 << a, w), a);
+        pf_printf(&body, "    int16_t ea = (int16_t)((n - %d) * %s); /* e 2^%d */\n", Ei, fx_k16(G, (int64_t)1 << a, w), a);
         if (base2)
-            fx_printf(&body, "    int16_t z = (int16_t)(ea + %s); /* e + P at 2^-%d */\n", pa, a);
+            pf_printf(&body, "    int16_t z = (int16_t)(ea + %s); /* e + P at 2^-%d */\n", pa, a);
         else
-            fx_printf(&body, "    int16_t z = (int16_t)(pf_fx_mulhrs(ea, %s) + %s); /* e ln2 + P at 2^-%d */\n",
+            pf_printf(&body, "    int16_t z = (int16_t)(pf_fx_mulhrs(ea, %s) + %s); /* e ln2 + P at 2^-%d */\n",
                       fx_k16(G, G->K15, "round(ln2 2^15)"), pa, a);
         if (a > Eo)
-            fx_printf(&body, "    int16_t r = pf_fx_rsh16(z, %d); /* rounded once to the output */\n", a - Eo);
+            pf_printf(&body, "    int16_t r = pf_fx_rsh16(z, %d); /* rounded once to the output */\n", a - Eo);
         else
-            fx_put(&body, "    int16_t r = z;\n");
-        fx_put(&body, "    int16_t rc = (int16_t)");
+            pf_put(&body, "    int16_t r = z;\n");
+        pf_put(&body, "    int16_t rc = (int16_t)");
         rc[0] = 0;
         if (mn > -32768)
             snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "(r < %lld ? %lld : ", (long long)mn, (long long)mn);
         if (mx < 32767)
             snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "(r > %lld ? %lld : ", (long long)mx, (long long)mx);
         snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "r%s%s", mx < 32767 ? ")" : "", mn > -32768 ? ")" : "");
-        fx_put(&body, rc);
-        fx_put(&body, ";\n");
+        pf_put(&body, rc);
+        pf_put(&body, ";\n");
         snprintf(rc, sizeof rc, "rc");
     }
     /* x <= 0 through a mask (a select on x makes GCC widen the loop) */
-    fx_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */\n");
+    pf_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */\n");
     if (G->WIDE)
-        fx_printf(&body, "    int16_t rc = %s;\n", rc);
-    fx_printf(&body, "    return (%s)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)%lld & m));", G->ot, (long long)mn);
+        pf_printf(&body, "    int16_t rc = %s;\n", rc);
+    pf_printf(&body, "    return (%s)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)%lld & m));", G->ot, (long long)mn);
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (a staged normalization: constant shifts and "
              "selects), t in [0, 1) the 15 bits below the leading one (exact); %s(x) = e%s + P(t) summed %s, "
@@ -267,26 +267,26 @@ static void emit16(fx_gen *G, fx_buf *b, int base2)
     const char *kv[] = {"FUNC", base2 ? "log2" : "log", "KTEXT", base2 ? "" : "ln2", "PTEXT",
                         base2 ? "log2(1 + t)" : "log(1 + t)", "MINOUT", minout, "NAME", G->name, "IT", G->it, "OT",
                         G->ot, "BODY", body.s, NULL};
-    fx_subst(b, fx_template("fx_log16.c"), kv);
+    pf_subst(b, pf_template("fx_log16.c"), kv);
     free(body.s);
     free(horner.s);
 }
 
-static void emit(fx_gen *G, fx_buf *b, int base2)
+static void emit(fx_gen *G, pf_buf *b, int base2)
 {
     if (G->W == 16) {
         emit16(G, b, base2);
         return;
     }
-    fx_buf norm = {0}, horner = {0}, out = {0};
+    pf_buf norm = {0}, horner = {0}, out = {0};
     int W = G->W, Ei = G->in.exp, Eo = G->out.exp;
     int64_t mx = pf_type_max_stored(&G->out), mn = pf_type_min_stored(&G->out);
-    fx_put(&norm, "    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */\n"
+    pf_put(&norm, "    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */\n"
                   "    int n = pf_fx_bitlen(ux) - 1;\n");
     if (W == 32)
-        fx_put(&norm, "    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */");
+        pf_put(&norm, "    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */");
     else
-        fx_put(&norm, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
+        pf_put(&norm, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
     fx_emit_horner(G, &horner, "t", "    ");
     if (horner.n && horner.s[horner.n - 1] == '\n')
         horner.s[--horner.n] = 0;
@@ -298,30 +298,30 @@ static void emit(fx_gen *G, fx_buf *b, int base2)
         snprintf(pz, sizeof pz, "(int64_t)p");
     else
         snprintf(pz, sizeof pz, "pf_fx_rne(p, %d)", -d);
-    fx_printf(&out, "    /* e %s + P(t) at 2^-%d, exact; one rounding to the output */\n", base2 ? "" : "ln2", (int)G->EZ);
+    pf_printf(&out, "    /* e %s + P(t) at 2^-%d, exact; one rounding to the output */\n", base2 ? "" : "ln2", (int)G->EZ);
     if (base2 || G->KZ <= INT32_MAX)
-        fx_printf(&out, "    int64_t z = (int64_t)(n - %d) * INT64_C(%lld) + %s;\n", Ei, (long long)G->KZ, pz);
+        pf_printf(&out, "    int64_t z = (int64_t)(n - %d) * INT64_C(%lld) + %s;\n", Ei, (long long)G->KZ, pz);
     else /* e K from two 32x32-bit products, which vectorize (K = KH 2^31 + KL) */
-        fx_printf(&out,
+        pf_printf(&out,
                   "    int64_t z = (int64_t)(n - %d) * %lld * INT64_C(2147483648) + (int64_t)(n - %d) * %lld + %s;\n",
                   Ei, (long long)(G->KZ >> 31), Ei, (long long)(G->KZ & 0x7fffffff), pz);
-    fx_printf(&out, "    int64_t r = pf_fx_rne(z, %d);\n", (int)G->EZ - Eo);
-    fx_printf(&out, "    r = r > %lld ? %lld : r < %lld ? %lld : r;\n", (long long)mx, (long long)mx, (long long)mn,
+    pf_printf(&out, "    int64_t r = pf_fx_rne(z, %d);\n", (int)G->EZ - Eo);
+    pf_printf(&out, "    r = r > %lld ? %lld : r < %lld ? %lld : r;\n", (long long)mx, (long long)mx, (long long)mn,
               (long long)mn);
-    fx_printf(&out, "    return (%s)(x > 0 ? r : %lld);", G->ot, (long long)mn);
+    pf_printf(&out, "    return (%s)(x > 0 ? r : %lld);", G->ot, (long long)mn);
     char minout[32];
     snprintf(minout, sizeof minout, "%lld", (long long)mn);
     const char *kv[] = {"FUNC", base2 ? "log2" : "log", "KTEXT", base2 ? "" : "ln2", "PTEXT",
                         base2 ? "log2(1 + t)" : "log(1 + t)", "MINOUT", minout, "NAME", G->name, "IT", G->it, "OT",
                         G->ot, "NORM_CODE", norm.s, "HORNER", horner.s, "OUT_CODE", out.s, NULL};
-    fx_subst(b, fx_template("fx_log.c"), kv);
+    pf_subst(b, pf_template("fx_log.c"), kv);
     free(norm.s);
     free(horner.s);
     free(out.s);
 }
 
-static void emit_log(fx_gen *G, fx_buf *b) { emit(G, b, 0); }
-static void emit_log2(fx_gen *G, fx_buf *b) { emit(G, b, 1); }
+static void emit_log(fx_gen *G, pf_buf *b) { emit(G, b, 0); }
+static void emit_log2(fx_gen *G, pf_buf *b) { emit(G, b, 1); }
 
 const fx_func fx_func_log = {
     .name = "log", .ref = PF_LOG, .tmpl = "fx_log", .target_text = "log(1+t)", .g = g_log1p, .a = 0, .b = 1,

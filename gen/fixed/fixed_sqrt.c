@@ -141,108 +141,108 @@ static void budget(fx_gen *G)
 /* ceil(e / 2) for e = 2 j0 + ..., as in prepare (floor for negative) */
 static int ceil_half(int e) { return e >= 0 ? (e + 1) / 2 : -((-e) / 2); }
 
-static void emit16(fx_gen *G, fx_buf *b)
+static void emit16(fx_gen *G, pf_buf *b)
 {
-    fx_buf body = {0}, horner = {0};
+    pf_buf body = {0}, horner = {0};
     int Ei = G->in.exp, Eo = G->out.exp, Ep = G->Ep;
     int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in));
     int64_t omax = pf_type_max_stored(&G->out);
     int elo = -Ei, ehi = nb - 1 - Ei;
     int jlo = ceil_half(elo), jhi = ceil_half(ehi);
     int j0 = elo < 0 ? (-elo + 1) / 2 : 0; /* e + 2 j0 >= 0 */
-    fx_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
+    pf_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
     fx_emit_norm16(&body, nb);
-    fx_put(&body, "\n");
-    fx_printf(&body, "    uint16_t eb = (uint16_t)(n + %d); /* e + 2 j0 >= 0, e = n - %d, j0 = %d */\n", 2 * j0 - Ei, Ei, j0);
-    fx_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", fx_opaque16(G, "t"));
-    fx_put(&body, "    /* P(t) ~ sqrt(1 + t): Horner in 16-bit words, one rounding per step */\n");
+    pf_put(&body, "\n");
+    pf_printf(&body, "    uint16_t eb = (uint16_t)(n + %d); /* e + 2 j0 >= 0, e = n - %d, j0 = %d */\n", 2 * j0 - Ei, Ei, j0);
+    pf_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", fx_opaque16(G, "t"));
+    pf_put(&body, "    /* P(t) ~ sqrt(1 + t): Horner in 16-bit words, one rounding per step */\n");
     fx_emit_horner(G, &horner, "tq", "    ");
-    fx_put(&body, horner.s);
-    fx_printf(&body, "    int16_t pq = pf_fx_mulhrs(p, %s); /* P / sqrt2 (computed for every element: branch-free) */\n",
+    pf_put(&body, horner.s);
+    pf_printf(&body, "    int16_t pq = pf_fx_mulhrs(p, %s); /* P / sqrt2 (computed for every element: branch-free) */\n",
               fx_k16(G, G->QS15, "round(2^15 / sqrt2)"));
-    fx_put(&body, "    int16_t y = (eb & 1) ? pq : p; /* P, or P / sqrt2 for odd e: sqrt(x) = 2^ceil(e/2) y */\n");
+    pf_put(&body, "    int16_t y = (eb & 1) ? pq : p; /* P, or P / sqrt2 for odd e: sqrt(x) = 2^ceil(e/2) y */\n");
     int smin = Ep - Eo - jhi, smax = Ep - Eo - jlo;
     char sexpr[64];
     snprintf(sexpr, sizeof sexpr, "%d - (int32_t)((eb + 1) >> 1)", Ep - Eo + j0);
-    fx_printf(&body, "    /* y 2^ceil(e/2) rounded once to the output, s = %d - ceil(e/2) in [%d, %d] */\n", Ep - Eo, smin,
+    pf_printf(&body, "    /* y 2^ceil(e/2) rounded once to the output, s = %d - ceil(e/2) in [%d, %d] */\n", Ep - Eo, smin,
               smax);
     fx_emit_vshift16(&body, "(uint16_t)y", sexpr, smin, smax);
     snprintf(G->wide_text, sizeof G->wide_text,
              "the scaling by 2^ceil(e/2) is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit "
              "per-element shift; the error model does not need them)");
-    fx_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
+    pf_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
               (unsigned long long)omax);
-    fx_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x > 0)); /* x <= 0 gives 0, through a mask */\n");
-    fx_printf(&body, "    return (%s)(r16 & m);", G->ot);
+    pf_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x > 0)); /* x <= 0 gives 0, through a mask */\n");
+    pf_printf(&body, "    return (%s)(r16 & m);", G->ot);
     const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};
-    fx_subst(b, fx_template("fx_sqrt16.c"), kv);
+    pf_subst(b, pf_template("fx_sqrt16.c"), kv);
     free(body.s);
     free(horner.s);
 }
 
-static void emit(fx_gen *G, fx_buf *b)
+static void emit(fx_gen *G, pf_buf *b)
 {
     if (G->W == 16) {
         emit16(G, b);
         return;
     }
-    fx_buf norm = {0}, horner = {0}, out = {0};
+    pf_buf norm = {0}, horner = {0}, out = {0};
     int W = G->W, Ei = G->in.exp;
     int64_t omax = pf_type_max_stored(&G->out);
-    fx_put(&norm, "    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */\n"
+    pf_put(&norm, "    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */\n"
                   "    int n = pf_fx_bitlen(ux) - 1;\n");
     if (W == 32)
-        fx_put(&norm, "    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */");
+        pf_put(&norm, "    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */");
     else
-        fx_put(&norm, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
+        pf_put(&norm, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
     fx_emit_horner(G, &horner, "t", "    ");
     if (horner.n && horner.s[horner.n - 1] == '\n')
         horner.s[--horner.n] = 0;
     char qs[64], q1[64];
     fx_lit(qs, sizeof qs, G->QS, W == 64);
     fx_lit(q1, sizeof q1, (int64_t)1 << G->EQ, W == 64);
-    fx_printf(&out, "    uint64_t eb = (uint64_t)(n + %lld); /* e + 2 J0 = n - %d + 2 J0 >= 0, J0 = %lld */\n",
+    pf_printf(&out, "    uint64_t eb = (uint64_t)(n + %lld); /* e + 2 J0 = n - %d + 2 J0 >= 0, J0 = %lld */\n",
               (long long)(2 * G->J0 - Ei), Ei, (long long)G->J0);
-    fx_printf(&out, "    %s q = (eb & 1) ? %s : %s; /* sqrt2 or 1, 2^-%d units */\n", G->wt, qs, q1, (int)G->EQ);
-    fx_printf(&out, "    int64_t y = %s(p, q, %d); /* P q, 2^-%d units */\n", G->mul, (int)G->EQ, G->Ep);
+    pf_printf(&out, "    %s q = (eb & 1) ? %s : %s; /* sqrt2 or 1, 2^-%d units */\n", G->wt, qs, q1, (int)G->EQ);
+    pf_printf(&out, "    int64_t y = %s(p, q, %d); /* P q, 2^-%d units */\n", G->mul, (int)G->EQ, G->Ep);
     int base = G->Ep - G->out.exp;
     int shmin = base - (int)G->JHI, shmax = base - (int)G->JLO;
     long long bj = (long long)base + (long long)G->J0; /* sh = Ep - Eo - floor(e/2) = bj - (eb >> 1) */
     if (shmin >= 1) {
-        fx_printf(&out, "    uint64_t sh = %lld - (eb >> 1);\n", bj);
-        fx_printf(&out, "    uint64_t r = pf_fx_rne_u((uint64_t)y, %s);\n", shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
+        pf_printf(&out, "    uint64_t sh = %lld - (eb >> 1);\n", bj);
+        pf_printf(&out, "    uint64_t r = pf_fx_rne_u((uint64_t)y, %s);\n", shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
     } else {
-        fx_printf(&out, "    int64_t sh = %lld - (int64_t)(eb >> 1);\n", bj);
+        pf_printf(&out, "    int64_t sh = %lld - (int64_t)(eb >> 1);\n", bj);
         if (shmax <= 0)
-            fx_put(&out, "    uint64_t r = (uint64_t)y << -sh;\n");
+            pf_put(&out, "    uint64_t r = (uint64_t)y << -sh;\n");
         else
-            fx_put(&out, "    uint64_t r = sh >= 1 ? pf_fx_rne_u((uint64_t)y, (uint64_t)(sh < 63 ? sh : 63))\n"
+            pf_put(&out, "    uint64_t r = sh >= 1 ? pf_fx_rne_u((uint64_t)y, (uint64_t)(sh < 63 ? sh : 63))\n"
                          "                         : (uint64_t)y << (sh > -62 ? -sh : 62);\n");
     }
-    fx_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
+    pf_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
     if (G->CORR) {
         int gs = (int)G->GSH;
-        fx_put(&out, "    /* correctly rounded: R is right when (2R-1)^2 < 4N < (2R+1)^2, 4N = x 2^G exactly */\n");
+        pf_put(&out, "    /* correctly rounded: R is right when (2R-1)^2 < 4N < (2R+1)^2, 4N = x 2^G exactly */\n");
         /* 2R +- 1 < 2^32 (bo <= 31): squares from 32x32-bit products; when
            everything stays below 2^63 the compares are signed (AVX2 has no
            unsigned 64-bit compare) */
         int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in)), bo = fx_bitlen((uint64_t)omax);
         int sgn = (gs >= 0 ? nb + gs <= 62 && 2 * (bo + 1) <= 62 : 2 * (bo + 1) - gs <= 62);
         const char *ct = sgn ? "int64_t" : "uint64_t";
-        fx_put(&out, "    uint32_t a1 = (uint32_t)(2 * r + 1), a0 = (uint32_t)(2 * r - 1);\n");
+        pf_put(&out, "    uint32_t a1 = (uint32_t)(2 * r + 1), a0 = (uint32_t)(2 * r - 1);\n");
         if (gs >= 0)
-            fx_printf(&out, "    %s n4 = (%s)((uint64_t)ux << %d), hi2 = (%s)((uint64_t)a1 * a1), lo2 = (%s)((uint64_t)a0 * a0);\n",
+            pf_printf(&out, "    %s n4 = (%s)((uint64_t)ux << %d), hi2 = (%s)((uint64_t)a1 * a1), lo2 = (%s)((uint64_t)a0 * a0);\n",
                       ct, ct, gs, ct, ct);
         else
-            fx_printf(&out, "    %s n4 = (%s)ux, hi2 = (%s)((uint64_t)a1 * a1 << %d), lo2 = (%s)((uint64_t)a0 * a0 << %d);\n",
+            pf_printf(&out, "    %s n4 = (%s)ux, hi2 = (%s)((uint64_t)a1 * a1 << %d), lo2 = (%s)((uint64_t)a0 * a0 << %d);\n",
                       ct, ct, ct, -gs, ct, -gs);
-        fx_put(&out, "    r = r + (n4 > hi2 || (n4 == hi2 && (r & 1))) - (r > 0 && (n4 < lo2 || (n4 == lo2 && (r & 1))));\n");
-        fx_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
+        pf_put(&out, "    r = r + (n4 > hi2 || (n4 == hi2 && (r & 1))) - (r > 0 && (n4 < lo2 || (n4 == lo2 && (r & 1))));\n");
+        pf_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
     }
-    fx_printf(&out, "    return (%s)(x > 0 ? r : 0);", G->ot);
+    pf_printf(&out, "    return (%s)(x > 0 ? r : 0);", G->ot);
     const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "NORM_CODE", norm.s, "HORNER", horner.s,
                         "OUT_CODE", out.s, NULL};
-    fx_subst(b, fx_template("fx_sqrt.c"), kv);
+    pf_subst(b, pf_template("fx_sqrt.c"), kv);
     free(norm.s);
     free(horner.s);
     free(out.s);

@@ -224,7 +224,7 @@ static void formats_text(const nz_dim *d, char *buf, size_t n)
 }
 
 /* provenance lines without trailing blanks */
-static void wrap(fx_buf *b, const char *label, const char *text) { pf_prov_wrap(b, label, text, 0); }
+static void wrap(pf_buf *b, const char *label, const char *text) { pf_prov_wrap(b, label, text, 0); }
 
 static const char *coord[4] = {"x", "y", "z", "w"};
 
@@ -254,7 +254,7 @@ static void measured_text(const nz_gen *G, const nz_dim *d, char *buf, size_t n)
                              "points");
 }
 
-static void provenance(fx_buf *b, const nz_gen *G)
+static void provenance(pf_buf *b, const nz_gen *G)
 {
     char tmp[2048], a[64], c[64];
     if (G->nd == 1)
@@ -292,7 +292,7 @@ static void provenance(fx_buf *b, const nz_gen *G)
     for (int i = 0; i < G->nd; i++) {
         const nz_dim *d = &G->d[i];
         double L = ldexp(1.0, -G->Eo);
-        fx_printf(b, " *\n * %s (%dD):\n", d->name, d->n);
+        pf_printf(b, " *\n * %s (%dD):\n", d->name, d->n);
         formats_text(d, tmp, sizeof tmp);
         snprintf(tmp + strlen(tmp), sizeof tmp - strlen(tmp), "; result RNE to 2^-%d, saturated", G->Eo);
         wrap(b, "Method:", tmp);
@@ -308,19 +308,19 @@ static void provenance(fx_buf *b, const nz_gen *G)
             wrap(b, "Measured:", tmp);
         }
     }
-    fx_put(b, " *\n");
+    pf_put(b, " *\n");
     wrap(b, "Arithmetic:",
          "integers only (no floating point, no <math.h>); every rounding to nearest, ties to even; right "
          "shifts only of unsigned values; bit-identical under any compiler flags");
     pf_prov_end_int(b);
 }
 
-static void table(fx_buf *b, const char *name, const uint32_t *v, int n)
+static void table(pf_buf *b, const char *name, const uint32_t *v, int n)
 {
-    fx_printf(b, "static const uint32_t %s[%d] = {", name, n);
+    pf_printf(b, "static const uint32_t %s[%d] = {", name, n);
     for (int i = 0; i < n; i++)
-        fx_printf(b, "%s0x%08x,", i % 6 ? " " : "\n    ", (unsigned)v[i]);
-    fx_put(b, "\n};\n\n");
+        pf_printf(b, "%s0x%08x,", i % 6 ? " " : "\n    ", (unsigned)v[i]);
+    pf_put(b, "\n};\n\n");
 }
 
 /* the shared integer helpers (pf_fx_i64, pf_fx_rne, ...) of every emitted
@@ -329,7 +329,7 @@ static const char vectorize[] = "#if defined(__GNUC__) && !defined(__clang__)\n"
                                 "#pragma GCC optimize(\"tree-vectorize\")\n"
                                 "#endif\n\n";
 
-static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
+static void emit_dim(pf_buf *b, const nz_gen *G, const nz_dim *d)
 {
     const char *N = d->name, *V = d->vt, *IT = G->it;
     int w64 = d->W == 64, F = G->F;
@@ -337,13 +337,13 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
     int uw64 = F > 24;
     const char *UW = uw64 ? "uint64_t" : "uint32_t", *SW = uw64 ? "int64_t" : "int32_t";
     const char *TT = F <= 29 ? "int32_t" : "int64_t";
-    fx_printf(b, "/* ---- %s: %dD, %s words ---- */\n\n", N, d->n, V);
+    pf_printf(b, "/* ---- %s: %dD, %s words ---- */\n\n", N, d->n, V);
     /* fade */
-    fx_printf(b,
+    pf_printf(b,
               "/* f(t) = 6t^5 - 15t^4 + 10t^3, t in ufixed<%d,%d>: Horner with the step formats of the\n"
               "   bit-width analysis; f in fixed<%d,%d> (error <= %.3e) */\n",
               d->T, d->T, d->Ef + 1, d->Ef, d->eps_h);
-    fx_printf(b, "PF_FX_INLINE %s %s_fade(%s t)\n{\n    %s p = %lld;\n", V, N, V, V, (long long)d->C[5]);
+    pf_printf(b, "PF_FX_INLINE %s %s_fade(%s t)\n{\n    %s p = %lld;\n", V, N, V, V, (long long)d->C[5]);
     for (int k = 4; k >= 0; k--) {
         char add[80] = "";
         if (d->C[k]) {
@@ -351,45 +351,45 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
             snprintf(add, sizeof add, " %s %s", d->C[k] < 0 ? "-" : "+", l);
         }
         if (d->st[k].shift == 0)
-            fx_printf(b, "    p = p * t%s;\n", add);
+            pf_printf(b, "    p = p * t%s;\n", add);
         else
-            fx_printf(b, "    p = (%s)pf_fx_rne((int64_t)p * t, %d)%s;\n", V, d->st[k].shift, add);
+            pf_printf(b, "    p = (%s)pf_fx_rne((int64_t)p * t, %d)%s;\n", V, d->st[k].shift, add);
     }
-    fx_put(b, "    return p;\n}\n\n");
+    pf_put(b, "    return p;\n}\n\n");
     /* split */
-    fx_printf(b,
+    pf_printf(b,
               "/* cell floor(x 2^-%d) mod 256; offsets d0 = t, d1 = t - 1 in %d fraction bits; fade f(t) */\n"
               "PF_FX_INLINE uint32_t %s_split(%s x, %s *d0, %s *d1, %s *f)\n{\n",
               F, d->Dd, N, IT, V, V, V);
     if (G->in.is_signed)
-        fx_printf(b, "    %s u = (%s)(%s)x;\n", UW, UW, SW);
+        pf_printf(b, "    %s u = (%s)(%s)x;\n", UW, UW, SW);
     else
-        fx_printf(b, "    %s u = (%s)x;\n", UW, UW);
+        pf_printf(b, "    %s u = (%s)x;\n", UW, UW);
     if (uw64)
-        fx_printf(b, "    %s t = (%s)(u & UINT64_C(0x%llx));\n", TT, TT, (unsigned long long)(((uint64_t)1 << F) - 1));
+        pf_printf(b, "    %s t = (%s)(u & UINT64_C(0x%llx));\n", TT, TT, (unsigned long long)(((uint64_t)1 << F) - 1));
     else
-        fx_printf(b, "    %s t = (%s)(u & 0x%lxu);\n", TT, TT, (unsigned long)(((uint32_t)1 << F) - 1));
+        pf_printf(b, "    %s t = (%s)(u & 0x%lxu);\n", TT, TT, (unsigned long)(((uint32_t)1 << F) - 1));
     lit(l2, sizeof l2, (int64_t)1 << F, 1);
     if (d->Dd >= F) {
         lit(l, sizeof l, (int64_t)1 << (d->Dd - F), w64);
-        fx_printf(b, "    *d0 = (%s)t * %s;\n    *d1 = ((%s)t - %s) * %s;\n", V, l, V, l2, l);
+        pf_printf(b, "    *d0 = (%s)t * %s;\n    *d1 = ((%s)t - %s) * %s;\n", V, l, V, l2, l);
     } else {
-        fx_printf(b, "    *d0 = (%s)pf_fx_rne((int64_t)t, %d);\n", V, F - d->Dd);
-        fx_printf(b, "    *d1 = (%s)pf_fx_rne((int64_t)t - %s, %d);\n", V, l2, F - d->Dd);
+        pf_printf(b, "    *d0 = (%s)pf_fx_rne((int64_t)t, %d);\n", V, F - d->Dd);
+        pf_printf(b, "    *d1 = (%s)pf_fx_rne((int64_t)t - %s, %d);\n", V, l2, F - d->Dd);
     }
     if (d->T == F)
-        fx_printf(b, "    *f = %s_fade((%s)t);\n", N, V);
+        pf_printf(b, "    *f = %s_fade((%s)t);\n", N, V);
     else
-        fx_printf(b, "    *f = %s_fade((%s)pf_fx_rne((int64_t)t, %d));\n", N, V, F - d->T);
-    fx_printf(b, "    return (uint32_t)(u >> %d) & 255u;\n}\n\n", F);
+        pf_printf(b, "    *f = %s_fade((%s)pf_fx_rne((int64_t)t, %d));\n", N, V, F - d->T);
+    pf_printf(b, "    return (uint32_t)(u >> %d) & 255u;\n}\n\n", F);
     /* lerp and gradient */
-    fx_printf(b,
+    pf_printf(b,
               "/* a + f (b - a), one rounding: f has %d fraction bits */\n"
               "PF_FX_INLINE %s %s_lerp(%s f, %s a, %s b)\n{\n"
               "    return a + (%s)pf_fx_rne((int64_t)f * (b - a), %d);\n}\n\n",
               d->Ef, V, N, V, V, V, V, d->Ef);
     if (d->n > 1)
-        fx_printf(b,
+        pf_printf(b,
                   "/* (k - 1) d for the 2-bit gradient field k of code c at bit s */\n"
                   "PF_FX_INLINE %s %s_gd(uint32_t c, int s, %s d)\n{\n"
                   "    return ((%s)((c >> s) & 3u) - 1) * d;\n}\n\n",
@@ -397,11 +397,11 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
     /* core */
     char targs[200];
     args_text(G, d->n, targs, sizeof targs, 0);
-    fx_printf(b, "PF_FX_INLINE %s %s_core(%s)\n{\n", V, N, targs);
+    pf_printf(b, "PF_FX_INLINE %s %s_core(%s)\n{\n", V, N, targs);
     const char *g = d->n == 1 ? "pf_nz_g1" : d->n == 2 ? "pf_nz_g2" : d->n == 3 ? "pf_nz_g3" : "pf_nz_g4";
     switch (d->n) {
     case 1:
-        fx_printf(b,
+        pf_printf(b,
                   "    %s d0, d1, f;\n"
                   "    uint32_t c = %s[%s_split(x, &d0, &d1, &f)];\n"
                   "    /* (k - 8) d with d in %d fraction bits: g d / 4 in %d, %s */\n"
@@ -411,7 +411,7 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
                   V, g, N, d->Dd, d->D, d->Dd >= F ? "exact" : "d rounded once (in the bound)", V, V, V, V, N);
         break;
     case 2:
-        fx_printf(b,
+        pf_printf(b,
                   "    %s x0, x1, u, y0, y1, v;\n"
                   "    uint32_t X = %s_split(x, &x0, &x1, &u), Y = %s_split(y, &y0, &y1, &v);\n"
                   "    uint32_t P = pf_nz_hash[X];\n"
@@ -422,7 +422,7 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
                   V, N, N, g, g, V, N, N, N, N, V, N, N, N, N, N, N, N);
         break;
     case 3:
-        fx_printf(b,
+        pf_printf(b,
                   "    %s x0, x1, u, y0, y1, v, z0, z1, w;\n"
                   "    uint32_t X = %s_split(x, &x0, &x1, &u), Y = %s_split(y, &y0, &y1, &v);\n"
                   "    uint32_t Z = %s_split(z, &z0, &z1, &w);\n"
@@ -432,11 +432,11 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
                   "    uint32_t c00 = %s[(PA & 0xffffu) + Z], c01 = %s[(PA >> 16) + Z];\n"
                   "    uint32_t c10 = %s[(PB & 0xffffu) + Z], c11 = %s[(PB >> 16) + Z];\n",
                   V, N, N, N, g, g, g, g);
-        fx_printf(b,
+        pf_printf(b,
                   "#define LO(c, xx, yy) (%s_gd(c, 0, xx) + %s_gd(c, 2, yy) + %s_gd(c, 4, z0))\n"
                   "#define HI(c, xx, yy) (%s_gd(c, 16, xx) + %s_gd(c, 18, yy) + %s_gd(c, 20, z1))\n",
                   N, N, N, N, N, N);
-        fx_printf(b,
+        pf_printf(b,
                   "    %s n000 = LO(c00, x0, y0), n001 = HI(c00, x0, y0);\n"
                   "    %s n010 = LO(c01, x0, y1), n011 = HI(c01, x0, y1);\n"
                   "    %s n100 = LO(c10, x1, y0), n101 = HI(c10, x1, y0);\n"
@@ -448,7 +448,7 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
                   V, V, V, V, V, N, N, V, N, N, N, N, N);
         break;
     default:
-        fx_printf(b,
+        pf_printf(b,
                   "    %s dx[2], dy[2], dz[2], dw[2], fx, fy, fz, fw;\n"
                   "    uint32_t X = %s_split(x, &dx[0], &dx[1], &fx), Y = %s_split(y, &dy[0], &dy[1], &fy);\n"
                   "    uint32_t Z = %s_split(z, &dz[0], &dz[1], &fz), W = %s_split(w, &dw[0], &dw[1], &fw);\n"
@@ -478,7 +478,7 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
                   "        e[l] = %s_lerp(fz, c2[0][l], c2[1][l]);\n",
                   V, N, N, N, N, V, g, N, N, N, N, N, N, N);
         lit(l, sizeof l, d->c23, w64);
-        fx_printf(b,
+        pf_printf(b,
                   "    /* 2/3 as in the float version: %s = RNE(2/3 2^%d) */\n"
                   "    return (%s)pf_fx_rne((int64_t)%s_lerp(fw, e[0], e[1]) * %s, %d);\n}\n\n",
                   l, d->S, V, N, l, d->S);
@@ -490,28 +490,28 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
         sh = 62; /* |v| < 2^(D+2) <= 2^61: RNE(v 2^-sh) is 0 for every sh >= 62 */
     /* |result| <= 2.01 2^Eo + 1: clamp only where the type is narrower */
     int64_t R = G->Eo >= 0 ? (int64_t)ceil(2.01 * ldexp(1.0, G->Eo)) + 1 : 2;
-    fx_printf(b, "PF_FX_INLINE %s %s_out(%s v)\n{\n    int64_t r = pf_fx_rne((int64_t)v, %d);\n", G->ot, N, V, sh);
+    pf_printf(b, "PF_FX_INLINE %s %s_out(%s v)\n{\n    int64_t r = pf_fx_rne((int64_t)v, %d);\n", G->ot, N, V, sh);
     if (G->omax < R) {
         lit(l, sizeof l, G->omax, 1);
-        fx_printf(b, "    r = r > %s ? %s : r;\n", l, l);
+        pf_printf(b, "    r = r > %s ? %s : r;\n", l, l);
     }
     if (G->omin > -R) {
         lit(l, sizeof l, G->omin, 1);
-        fx_printf(b, "    r = r < %s ? %s : r;\n", l, l);
+        pf_printf(b, "    r = r < %s ? %s : r;\n", l, l);
     }
-    fx_printf(b, "    return (%s)r;\n}\n\n", G->ot);
+    pf_printf(b, "    return (%s)r;\n}\n\n", G->ot);
     char cargs[100] = "";
     size_t o = 0;
     for (int i = 0; i < d->n; i++)
         o += (size_t)snprintf(cargs + o, sizeof cargs - o, "%s%s", i ? ", " : "", coord[i]);
-    fx_printf(b, "%s %s(%s)\n{\n    return %s_out(%s_core(%s));\n}\n\n", G->ot, N, targs, N, N, cargs);
+    pf_printf(b, "%s %s(%s)\n{\n    return %s_out(%s_core(%s));\n}\n\n", G->ot, N, targs, N, N, cargs);
     char aargs[300];
     args_text(G, d->n, aargs, sizeof aargs, 1);
     o = 0;
     char iargs[100] = "";
     for (int i = 0; i < d->n; i++)
         o += (size_t)snprintf(iargs + o, sizeof iargs - o, "%s%s[i]", i ? ", " : "", coord[i]);
-    fx_printf(b,
+    pf_printf(b,
               "/* Array form: branch-free integer code with table loads (gathers), so the loop vectorizes;\n"
               "   one clone per x86-64 level when the baseline lacks AVX2.  Every clone computes the\n"
               "   same bits. */\n"
@@ -527,10 +527,10 @@ static void emit_dim(fx_buf *b, const nz_gen *G, const nz_dim *d)
 
 static char *emit(const nz_gen *G, size_t *len)
 {
-    fx_buf b = {0};
+    pf_buf b = {0};
     provenance(&b, G);
-    fx_put(&b, fx_template("fx_common.h"));
-    fx_put(&b, vectorize);
+    pf_put(&b, pf_template("fx_common.h"));
+    pf_put(&b, vectorize);
     int need[5] = {0};
     for (int i = 0; i < G->nd; i++)
         need[G->d[i].n] = 1;
@@ -547,7 +547,7 @@ static char *emit(const nz_gen *G, size_t *len)
     for (int i = 0; i < G->nd; i++) {
         emit_dim(&b, G, &G->d[i]);
         if (i + 1 < G->nd)
-            fx_put(&b, "\n");
+            pf_put(&b, "\n");
     }
     *len = b.n;
     return b.s;
