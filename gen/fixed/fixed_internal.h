@@ -40,6 +40,50 @@ typedef struct {
     void (*emit)(fx_gen *G, pf_buf *body);
 } fx_func;
 
+/* The reductions' constants, one struct per function family, filled by
+ * its prepare() (gen/fixed/fixed_<family>.c says how each is derived). */
+typedef struct {               /* sin, cos */
+    int64_t c64;               /* kind 1: round(2/pi 2^(62-Ei)) mod 2^64 */
+    int sh;                    /* kind 0: Ei + 1, the shift of x (2/pi 2^31) to 2^-30 */
+    int64_t a16, b16;          /* kind 2, 16-bit lanes: w = x A + mulhrs(x, B) */
+} fx_trig_red;
+
+typedef struct {               /* exp, exp2 */
+    int64_t xlo, xhi;          /* clamp range of the stored input */
+    int64_t xsat;              /* first saturating input, or > max */
+    int64_t cexp;              /* exp: round(log2e 2^(Ft+Ei)) */
+    int64_t klo, khi;          /* range of k = floor(t) */
+    int64_t k0;                /* bias in units of 2^Ft */
+    int ft;                    /* Ft, the fraction bits of t */
+    int loclamp;               /* inputs below xlo exist: clamp them */
+    int sat;                   /* inputs from xsat up exist: saturate them */
+    int64_t b16;               /* 16-bit lanes, exp: round((log2(e) - 1) 2^15) */
+    double dt16;               /* 16-bit lanes: |error of t| */
+} fx_exp_red;
+
+typedef struct {               /* log, log2 */
+    int64_t kz;                /* round(ln2 2^Ez) or 2^Ez */
+    int64_t emax;              /* max |e| */
+    int64_t k15;               /* 16-bit lanes, log: round(ln2 2^15) */
+    int ez;                    /* Ez: e K + P summed at 2^-Ez in 64 bits */
+    int a16;                   /* 16-bit lanes: e K and P summed at 2^-a */
+    double dk16;               /* 16-bit lanes: |error of e K| */
+    int ez32;                  /* 16-bit lanes, wide sum: e K + P at 2^-Ez32 in 32 bits */
+    int64_t kz32;              /* round(ln2 2^Ez32) or 2^Ez32 */
+    int wide;                  /* 16-bit lanes: 1 if the sum is in 32-bit lanes */
+} fx_log_red;
+
+typedef struct {               /* sqrt */
+    int64_t qs;                /* round(sqrt2 2^Eq) */
+    int64_t j0;                /* bias: e + 2 j0 >= 0 */
+    int64_t jlo, jhi;          /* range of j = floor(e / 2) */
+    int eq;                    /* Eq: q = sqrt2 or 1 in 2^-Eq units */
+    int corr;                  /* exact: emit the correction */
+    int gsh;                   /* G = 2 Eo - Ei + 2 */
+    int64_t qs15;              /* 16-bit lanes: round(2^15 / sqrt2) */
+    double dq16;               /* 16-bit lanes: relative error of P / sqrt2 */
+} fx_sqrt_red;
+
 struct fx_gen {
     const fx_func *fn;
     int exact;
@@ -82,11 +126,15 @@ struct fx_gen {
     double bound_lsb;          /* 0.5 + (R fmax + A) / lsb */
     double dred;               /* reduction's own error (function's units) */
 
-    /* function-specific reduction parameters */
+    /* function-specific reduction parameters: kind, and the constants of
+       the function's reduction (the member its prepare() fills) */
     int kind;                  /* reduction variant */
-    int64_t k[16];
-    int s[16];
-    double d[8];
+    union {
+        fx_trig_red trig;
+        fx_exp_red exp;
+        fx_log_red log;
+        fx_sqrt_red sqrt;
+    };
     char red_text[600];
     char sat_text[300];        /* the defined saturations, for the provenance */
     char bound_note[160];      /* appended to the error bound's line */

@@ -27,15 +27,6 @@ static void g_sqrt1p(mpfr_t y, const mpfr_t t, const void *ctx)
     mpfr_clear(a);
 }
 
-#define QS k[0]     /* round(sqrt2 2^Eq) */
-#define J0 k[1]     /* bias: e + 2 J0 >= 0 */
-#define JLO k[2]
-#define JHI k[3]
-#define EQ s[0]
-#define CORR s[1]   /* exact: emit the correction */
-#define GSH s[2]    /* G = 2 Eo - Ei + 2 */
-#define QS15 k[4]   /* 16-bit lanes: round(2^15 / sqrt2) */
-#define DQ16 d[0]   /* 16-bit lanes: relative error of P / sqrt2 */
 
 static int prepare(fx_gen *G, char *err, size_t errlen)
 {
@@ -47,9 +38,9 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
     int64_t imax = pf_type_max_stored(&G->in), omax = pf_type_max_stored(&G->out);
     int nb = fx_bitlen((uint64_t)imax);
     int64_t elo = -Ei, ehi = nb - 1 - Ei;
-    G->JLO = elo >= 0 ? elo / 2 : -((-elo + 1) / 2);
-    G->JHI = ehi >= 0 ? ehi / 2 : -((-ehi + 1) / 2);
-    G->J0 = G->JLO < 0 ? -G->JLO : 0;
+    G->sqrt.jlo = elo >= 0 ? elo / 2 : -((-elo + 1) / 2);
+    G->sqrt.jhi = ehi >= 0 ? ehi / 2 : -((-ehi + 1) / 2);
+    G->sqrt.j0 = G->sqrt.jlo < 0 ? -G->sqrt.jlo : 0;
     if (W == 16) {
         /* 16-bit lanes: the fast variant only (the exact one's correction
            to the correctly rounded result needs exact 32-bit squares) */
@@ -58,16 +49,16 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
             return -2;
         }
     }
-    G->EQ = W == 16 ? 15 : W - 2;
+    G->sqrt.eq = W == 16 ? 15 : W - 2;
     mpfr_t a;
     mpz_t z;
     mpfr_init2(a, 256);
     mpz_init(z);
     mpfr_set_ui(a, 2, MPFR_RNDN);
     mpfr_sqrt(a, a, MPFR_RNDN);
-    mpfr_mul_2si(a, a, G->EQ, MPFR_RNDN);
+    mpfr_mul_2si(a, a, G->sqrt.eq, MPFR_RNDN);
     mpfr_get_z(z, a, MPFR_RNDN);
-    G->QS = (int64_t)mpz_get_si(z);
+    G->sqrt.qs = (int64_t)mpz_get_si(z);
     mpz_clear(z);
     mpfr_clear(a);
     double inmax = ldexp((double)imax, -Ei);
@@ -83,18 +74,18 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
         mpfr_t r;
         mpfr_init2(r, 256);
         mpfr_rint(r, a, MPFR_RNDN);
-        G->QS15 = (int64_t)mpfr_get_si(r, MPFR_RNDN);
+        G->sqrt.qs15 = (int64_t)mpfr_get_si(r, MPFR_RNDN);
         mpfr_sub(r, r, a, MPFR_RNDN);
-        G->DQ16 = fabs(mpfr_get_d(r, MPFR_RNDN)) / mpfr_get_d(a, MPFR_RNDN);
+        G->sqrt.dq16 = fabs(mpfr_get_d(r, MPFR_RNDN)) / mpfr_get_d(a, MPFR_RNDN);
         mpfr_clears(a, r, (mpfr_ptr)0);
     }
     snprintf(G->sat_text, sizeof G->sat_text, "sqrt(x) for x < 0 (undefined) gives 0");
     G->bound_note[0] = 0;
     /* the correction needs exact squares in 64 bits */
     int gs = 2 * Eo - Ei + 2, bo = fx_bitlen((uint64_t)omax);
-    G->GSH = gs;
-    G->CORR = G->exact && bo <= 31 && (gs >= 0 ? nb + gs <= 64 : 2 * (bo + 1) - gs <= 64);
-    if (G->CORR)
+    G->sqrt.gsh = gs;
+    G->sqrt.corr = G->exact && bo <= 31 && (gs >= 0 ? nb + gs <= 64 : 2 * (bo + 1) - gs <= 64);
+    if (G->sqrt.corr)
         snprintf(G->bound_note, sizeof G->bound_note,
                  "the +-1 correction then makes the result correctly rounded (at most 0.5 LSB)");
     if (W == 16) {
@@ -103,14 +94,14 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
                  "selects), t in [0, 1) the 15 bits below the leading one (exact); sqrt(x) = 2^ceil(e/2) P(t) "
                  "(/ sqrt2 if e is odd: P round(2^15/sqrt2) 2^-15 = P %lld 2^-15 by the rounding multiply-high, "
                  "MPFR); x <= 0 -> 0",
-                 Ei, (long long)G->QS15);
+                 Ei, (long long)G->sqrt.qs15);
         return 0;
     }
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (leading-zero count), t in [0, 1) exact; "
              "sqrt(x) = 2^floor(e/2) (sqrt2 if e is odd) P(t), sqrt2 = %lld 2^-%d (MPFR)%s; x <= 0 -> 0",
-             Ei, (long long)G->QS, (int)G->EQ,
-             G->CORR ? "; then corrected by +-1 with exact squares to the correctly rounded result (ties to even)" : "");
+             Ei, (long long)G->sqrt.qs, (int)G->sqrt.eq,
+             G->sqrt.corr ? "; then corrected by +-1 with exact squares to the correctly rounded result (ties to even)" : "");
     return 0;
 }
 
@@ -119,8 +110,8 @@ static void budget16(fx_gen *G)
     /* P >= 1: its absolute Horner error is relative; for odd e, P/sqrt2
        is rounded to P's lsb (relative 2^-(Ep+1) sqrt2) with QS's error */
     G->A = 0;
-    G->R = G->poly_err + G->arith + ldexp(0.5, -G->Ep) * M_SQRT2 + G->DQ16;
-    int smin = G->Ep - G->out.exp - (int)((G->JHI * 2 + 2) / 2);
+    G->R = G->poly_err + G->arith + ldexp(0.5, -G->Ep) * M_SQRT2 + G->sqrt.dq16;
+    int smin = G->Ep - G->out.exp - (int)((G->sqrt.jhi * 2 + 2) / 2);
     if (smin < -14)
         G->R = INFINITY;
 }
@@ -132,9 +123,9 @@ static void budget(fx_gen *G)
         return;
     }
     G->A = 0;
-    G->R = G->poly_err + G->arith + ldexp(0.5, -(int)G->EQ) / M_SQRT2 + ldexp(0.5, -G->Ep);
+    G->R = G->poly_err + G->arith + ldexp(0.5, -(int)G->sqrt.eq) / M_SQRT2 + ldexp(0.5, -G->Ep);
     int base = G->Ep - G->out.exp;
-    if (base - (int)G->JHI < -(62 - (G->Ep + 2)))
+    if (base - (int)G->sqrt.jhi < -(62 - (G->Ep + 2)))
         G->R = INFINITY;
 }
 
@@ -159,7 +150,7 @@ static void emit16(fx_gen *G, pf_buf *b)
     fx_emit_horner(G, &horner, "tq", "    ");
     pf_put(&body, horner.s);
     pf_printf(&body, "    int16_t pq = pf_fx_mulhrs(p, %s); /* P / sqrt2 (computed for every element: branch-free) */\n",
-              fx_k16(G, G->QS15, "round(2^15 / sqrt2)"));
+              fx_k16(G, G->sqrt.qs15, "round(2^15 / sqrt2)"));
     pf_put(&body, "    int16_t y = (eb & 1) ? pq : p; /* P, or P / sqrt2 for odd e: sqrt(x) = 2^ceil(e/2) y */\n");
     int smin = Ep - Eo - jhi, smax = Ep - Eo - jlo;
     char sexpr[64];
@@ -199,15 +190,15 @@ static void emit(fx_gen *G, pf_buf *b)
     if (horner.n && horner.s[horner.n - 1] == '\n')
         horner.s[--horner.n] = 0;
     char qs[64], q1[64];
-    fx_lit(qs, sizeof qs, G->QS, W == 64);
-    fx_lit(q1, sizeof q1, (int64_t)1 << G->EQ, W == 64);
+    fx_lit(qs, sizeof qs, G->sqrt.qs, W == 64);
+    fx_lit(q1, sizeof q1, (int64_t)1 << G->sqrt.eq, W == 64);
     pf_printf(&out, "    uint64_t eb = (uint64_t)(n + %lld); /* e + 2 J0 = n - %d + 2 J0 >= 0, J0 = %lld */\n",
-              (long long)(2 * G->J0 - Ei), Ei, (long long)G->J0);
-    pf_printf(&out, "    %s q = (eb & 1) ? %s : %s; /* sqrt2 or 1, 2^-%d units */\n", G->wt, qs, q1, (int)G->EQ);
-    pf_printf(&out, "    int64_t y = %s(p, q, %d); /* P q, 2^-%d units */\n", G->mul, (int)G->EQ, G->Ep);
+              (long long)(2 * G->sqrt.j0 - Ei), Ei, (long long)G->sqrt.j0);
+    pf_printf(&out, "    %s q = (eb & 1) ? %s : %s; /* sqrt2 or 1, 2^-%d units */\n", G->wt, qs, q1, (int)G->sqrt.eq);
+    pf_printf(&out, "    int64_t y = %s(p, q, %d); /* P q, 2^-%d units */\n", G->mul, (int)G->sqrt.eq, G->Ep);
     int base = G->Ep - G->out.exp;
-    int shmin = base - (int)G->JHI, shmax = base - (int)G->JLO;
-    long long bj = (long long)base + (long long)G->J0; /* sh = Ep - Eo - floor(e/2) = bj - (eb >> 1) */
+    int shmin = base - (int)G->sqrt.jhi, shmax = base - (int)G->sqrt.jlo;
+    long long bj = (long long)base + (long long)G->sqrt.j0; /* sh = Ep - Eo - floor(e/2) = bj - (eb >> 1) */
     if (shmin >= 1) {
         pf_printf(&out, "    uint64_t sh = %lld - (eb >> 1);\n", bj);
         pf_printf(&out, "    uint64_t r = pf_fx_rne_u((uint64_t)y, %s);\n", shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
@@ -220,8 +211,8 @@ static void emit(fx_gen *G, pf_buf *b)
                          "                         : (uint64_t)y << (sh > -62 ? -sh : 62);\n");
     }
     pf_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
-    if (G->CORR) {
-        int gs = (int)G->GSH;
+    if (G->sqrt.corr) {
+        int gs = (int)G->sqrt.gsh;
         pf_put(&out, "    /* correctly rounded: R is right when (2R-1)^2 < 4N < (2R+1)^2, 4N = x 2^G exactly */\n");
         /* 2R +- 1 < 2^32 (bo <= 31): squares from 32x32-bit products; when
            everything stays below 2^63 the compares are signed (AVX2 has no

@@ -71,10 +71,6 @@ static double two_over_pi_err31(void)
     return d; /* in units of 2^-31 */
 }
 
-#define K_C64 k[0]
-#define K_SH s[0]
-#define K_A16 k[1]  /* 16-bit lanes: w = x A + mulhrs(x, B) */
-#define K_B16 k[2]
 
 /* 16-bit lanes: w = round(x 2^(15-Ei) / pi), quarter turns in 2^-14 units,
  * modulo 4 (a uint16_t).  T = round(2^(30-Ei) / pi) from MPFR is split as
@@ -143,7 +139,7 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
             snprintf(err, errlen, "16-bit lanes: input above 32767");
             return -2;
         }
-        double dw = phase16(Ei, Xmax, &G->K_A16, &G->K_B16);
+        double dw = phase16(Ei, Xmax, &G->trig.a16, &G->trig.b16);
         G->kind = 2;
         G->dred = dw * 0x1p-14;
         snprintf(G->red_text, sizeof G->red_text,
@@ -152,14 +148,14 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
                  "the other by the rounding multiply-high); fold to v in [-1, 1] (v = w - 1 or 3 - w, 2^-14 "
                  "units), +-1 held as +-(1 - 2^-14) (sin is flat there: it moves the result by < 5e-9), doubled "
                  "to 2^-15 units; error of v <= %.3e",
-                 (long long)G->K_A16, (long long)G->K_B16, is_cos ? 2 : 1, Ei, (long long)G->K_A16,
-                 (long long)G->K_B16, (long long)G->K_A16, G->dred);
+                 (long long)G->trig.a16, (long long)G->trig.b16, is_cos ? 2 : 1, Ei, (long long)G->trig.a16,
+                 (long long)G->trig.b16, (long long)G->trig.a16, G->dred);
         return 0;
     }
     if (G->W == 32 && G->in.storage_bits <= 16 && (du0 * M_PI / 2 <= budget || du0 <= du1)) {
         G->kind = 0;
         G->dred = du0;
-        G->K_SH = Ei + 1;
+        G->trig.sh = Ei + 1;
         snprintf(G->red_text, sizeof G->red_text,
                  "u = x 2/pi with 2/pi = %d 2^-31, the product rounded to 2^-30; phase w = (u + %d) mod 4 "
                  "(uint32_t, 30 fraction bits); fold to v in [-1, 1] (v = w - 1 or 3 - w); error of v <= %.3e",
@@ -167,13 +163,13 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
     } else {
         G->kind = 1;
         G->dred = du1;
-        G->K_C64 = (int64_t)two_over_pi_bits(62 - Ei);
+        G->trig.c64 = (int64_t)two_over_pi_bits(62 - Ei);
         snprintf(G->red_text, sizeof G->red_text,
                  "u = x 2/pi mod 4 = x C mod 2^64 in 2^-62 units, C = round(2/pi 2^%d) mod 2^64 (bits of 2/pi "
                  "that only add multiples of 4 dropped, from MPFR); phase w = (u + %d) mod 4; fold to v in "
                  "[-1, 1] (v = w - 1 or 3 - w)%s; error of v <= %.3e",
                  62 - Ei, is_cos ? 2 : 1, G->W == 32 ? ", rounded to 2^-30" : "", du1);
-        if ((uint64_t)G->K_C64 == 0) {
+        if ((uint64_t)G->trig.c64 == 0) {
             snprintf(err, errlen, "%s: input exponent %d too large for the reduction", fn, Ei);
             return -1;
         }
@@ -236,9 +232,9 @@ static void emit16(fx_gen *G, pf_buf *b, int is_cos)
     /* on |x|, so that sin is exactly odd and cos exactly even (the
        rounding multiply-high rounds ties up, which is not symmetric) */
     int full = G->in.storage_bits == 16 && G->in.is_signed; /* x can be -32768 */
-    const char *ka = fx_k16(G, G->K_A16 > 32767 ? G->K_A16 - 65536 : G->K_A16,
+    const char *ka = fx_k16(G, G->trig.a16 > 32767 ? G->trig.a16 - 65536 : G->trig.a16,
                             "A (as uint16_t): |x| 2^(15-Ei)/pi = |x| (A + B 2^-15)");
-    const char *kb = fx_k16(G, G->K_B16, "B");
+    const char *kb = fx_k16(G, G->trig.b16, "B");
     const char *ko = fx_k16(G, 1, "1 (see the array form)");
     pf_printf(&body, "    uint16_t ax = (uint16_t)(x < 0 ? -(int32_t)x : x); /* |x| */\n");
     pf_printf(&body, "    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)%s + (uint16_t)pf_fx_mulhrs((int16_t)(ax * %s), %s) + %s);\n",
@@ -289,7 +285,7 @@ static void emit(fx_gen *G, pf_buf *b, int is_cos)
     pf_buf phase = {0}, fold = {0}, sq = {0}, horner = {0}, out = {0};
     int W = G->W;
     if (G->kind == 0) {
-        int sh = G->K_SH;
+        int sh = G->trig.sh;
         const char *off = is_cos ? "0x80000000u" : "0x40000000u";
         if (sh >= 1)
             pf_printf(&phase, "    uint32_t w = (uint32_t)pf_fx_rne((int64_t)x * %d, %d) + %s;", C31, sh, off);
@@ -300,7 +296,7 @@ static void emit(fx_gen *G, pf_buf *b, int is_cos)
         pf_put(&fold, "    int32_t v = w < 0x80000000u ? (int32_t)w - 0x40000000 : 0x40000000 - (int32_t)(w - 0x80000000u);");
     } else {
         pf_printf(&phase, "    uint64_t w = (uint64_t)(int64_t)x * UINT64_C(0x%016llx) + UINT64_C(%s);",
-                  (unsigned long long)(uint64_t)G->K_C64, is_cos ? "0x8000000000000000" : "0x4000000000000000");
+                  (unsigned long long)(uint64_t)G->trig.c64, is_cos ? "0x8000000000000000" : "0x4000000000000000");
         pf_printf(&fold,
                   "    int64_t v%s = w < UINT64_C(0x8000000000000000) ? (int64_t)w - INT64_C(0x4000000000000000)\n"
                   "                   : INT64_C(0x4000000000000000) - (int64_t)(w - UINT64_C(0x8000000000000000));",
