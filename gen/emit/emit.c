@@ -56,6 +56,12 @@ void pf_printf(pf_buf *b, const char *fmt, ...)
     va_end(ap);
 }
 
+void pf_chomp(pf_buf *b)
+{
+    if (b->n && b->s[b->n - 1] == '\n')
+        b->s[--b->n] = 0;
+}
+
 /* ---- templates ---- */
 
 const char *pf_template(const char *name)

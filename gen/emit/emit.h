@@ -21,6 +21,9 @@ void pf_putn(pf_buf *b, const char *s, size_t n);
 void pf_put(pf_buf *b, const char *s); /* s NULL: nothing */
 __attribute__((format(printf, 2, 3))) void pf_printf(pf_buf *b, const char *fmt, ...);
 __attribute__((format(printf, 2, 0))) void pf_vprintf(pf_buf *b, const char *fmt, va_list ap);
+/* drop one final newline: for a block that goes into a template line
+ * which supplies its own */
+void pf_chomp(pf_buf *b);
 
 /* ---- templates ---- */
 

@@ -704,6 +704,18 @@ void fx_emit_norm16(pf_buf *b, int nb)
     pf_put(b, "    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */");
 }
 
+void fx_emit_norm(const fx_gen *G, pf_buf *b)
+{
+    /* x = 2^n (1 + t): n from the bit length, t the bits below the leading
+       one, exact in W-bit words */
+    pf_put(b, "    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */\n"
+              "    int n = pf_fx_bitlen(ux) - 1;\n");
+    if (G->W == 32)
+        pf_put(b, "    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */");
+    else
+        pf_put(b, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
+}
+
 void fx_emit_vshift16(pf_buf *b, const char *a, const char *sexpr, int smin, int smax)
 {
     /* h = floor(a 2^(1 + L - s')) with s' = s + L >= 0 (L lifts negative

@@ -337,8 +337,7 @@ static void emit(fx_gen *G, pf_buf *b, int base2)
                       (unsigned long long)(((uint64_t)1 << (W - 1)) - 1), W - 1);
     }
     fx_emit_horner(G, &horner, "f", "    ");
-    if (horner.n && horner.s[horner.n - 1] == '\n')
-        horner.s[--horner.n] = 0;
+    pf_chomp(&horner);
     /* P 2^k in output units: shift right by sh = Ep - Eo - k */
     int base = G->Ep - G->out.exp;
     int shmin = base - (int)G->exp.khi, shmax = base - (int)G->exp.klo;

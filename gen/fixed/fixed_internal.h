@@ -183,6 +183,9 @@ void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int
 /* 16-bit lanes: a staged normalization of ux (unsigned, nb significant
    bits at most) to u with bit 15 set and n = bitlen - 1, for log/sqrt */
 void fx_emit_norm16(pf_buf *b, int nb);
+/* 32/64-bit words: ux = x (x > 0, stored in at most 32 bits), n =
+   bitlen(ux) - 1 and t = ux 2^-n - 1 in [0, 1), for log/sqrt */
+void fx_emit_norm(const fx_gen *G, pf_buf *b);
 /* 16-bit lanes: r = round(a 2^-s) (ties up) in 32-bit lanes for the
    variable shift s = sexpr in [smin, smax] (smin may be negative) */
 void fx_emit_vshift16(pf_buf *b, const char *a, const char *sexpr, int smin, int smax);

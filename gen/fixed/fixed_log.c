@@ -270,17 +270,11 @@ static void emit(fx_gen *G, pf_buf *b, int base2)
         return;
     }
     pf_buf norm = {0}, horner = {0}, out = {0};
-    int W = G->W, Ei = G->in.exp, Eo = G->out.exp;
+    int Ei = G->in.exp, Eo = G->out.exp;
     int64_t mx = pf_type_max_stored(&G->out), mn = pf_type_min_stored(&G->out);
-    pf_put(&norm, "    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */\n"
-                  "    int n = pf_fx_bitlen(ux) - 1;\n");
-    if (W == 32)
-        pf_put(&norm, "    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */");
-    else
-        pf_put(&norm, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
+    fx_emit_norm(G, &norm);
     fx_emit_horner(G, &horner, "t", "    ");
-    if (horner.n && horner.s[horner.n - 1] == '\n')
-        horner.s[--horner.n] = 0;
+    pf_chomp(&horner);
     int d = (int)G->log.ez - G->Ep;
     char pz[96];
     if (d > 0)

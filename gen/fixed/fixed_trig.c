@@ -310,8 +310,7 @@ static void emit(fx_gen *G, pf_buf *b, int is_cos)
     else
         pf_put(&sq, "    int64_t s = pf_fx_mul64(v, v, 61); /* saturates at INT64_MAX */");
     fx_emit_horner(G, &horner, "s", "    ");
-    if (horner.n && horner.s[horner.n - 1] == '\n')
-        horner.s[--horner.n] = 0;
+    pf_chomp(&horner);
     int so = out_shift(G);
     int64_t mx = pf_type_max_stored(&G->out), mn = pf_type_min_stored(&G->out);
     if (W == 32)
