@@ -54,7 +54,7 @@ void pf_int_lit(char *buf, size_t n, int64_t v, int int64);
  * blank comment line and " * Regenerate:  COMMAND" */
 enum { PF_NOTICE_SAME_LINE, PF_NOTICE_OWN_LINE };
 void pf_prov_begin(pf_buf *b, const char *title, int notice, const char *command);
-/* " * Label:      text" on one line */
+/* " * Label:      text" on one line; label "" continues the line above */
 __attribute__((format(printf, 3, 4))) void pf_prov_line(pf_buf *b, const char *label, const char *fmt, ...);
 /* " * Label:      text" wrapped at blanks before column 96, continuation
  * lines indented to the text.  blank_at_break: the blank before a break is

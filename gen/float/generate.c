@@ -54,10 +54,9 @@ static void emit(pf_buf *b, const pf_gen_result *r, const char *command)
         memcpy(&wb, &r->sweep.worst_x, 4);
         char hx[64];
         pf_hexf(hx, sizeof hx, r->sweep.worst_x);
-        pf_prov_line(b, "Sweep:", "max %.3f ULP at x = %s (0x%08x), mean %.4f ULP, %.2f%% correctly\n"
-                                  " *              rounded; %s",
-                     r->sweep.max_ulp, hx, wb, pf_sweep_mean(&r->sweep), pf_sweep_cr_percent(&r->sweep),
-                     r->sweep_desc);
+        pf_prov_line(b, "Sweep:", "max %.3f ULP at x = %s (0x%08x), mean %.4f ULP, %.2f%% correctly", r->sweep.max_ulp,
+                     hx, wb, pf_sweep_mean(&r->sweep), pf_sweep_cr_percent(&r->sweep));
+        pf_prov_line(b, "", "rounded; %s", r->sweep_desc); /* continued */
     }
     pf_put(b, " */\n"
               "/* no FP-exception semantics are promised, and dropping them lets GCC\n"
