@@ -1,5 +1,5 @@
 # Generated fixed-point functions (issue 5, second half): pfmathgen with
-# fixed<size,exp> types (gen/fixedgen.c, gen/fixed_*.c, templates
+# fixed<size,exp> types (gen/fixed/fixedgen.c, gen/fixed/fixed_*.c, templates
 # gen/templates/fx_*.c.in), the fixed-point sweep (ref/sweep_fixed.c,
 # pfsweep --type/--out-type in tests/pfsweep_fixed.c), the per-step
 # coefficient rounding (fit/round_fixed.c) and the library's default set
@@ -8,10 +8,9 @@ FIT_SRCS += fit/round_fixed.c
 REF_SRCS += ref/sweep_fixed.c
 $(BUILD)/obj/ref/sweep_fixed.o: ALL_CFLAGS += -fopenmp
 
-# gen/fixed_*.c go into libpfgen.a next to gen.mk's sources ($^ there).
-FIXEDGEN_SRCS := $(sort $(wildcard gen/fixed_*.c))
+# gen/fixed/*.c go into libpfgen.a next to gen.mk's sources ($^ there).
+FIXEDGEN_SRCS := $(sort $(wildcard gen/fixed/*.c))
 $(BUILD)/libpfgen.a: $(FIXEDGEN_SRCS:%.c=$(BUILD)/obj/%.o)
-$(BUILD)/obj/gen/fixed_core.o: $(BUILD)/include/pf_templates.h
 # pfsweep's fixed-point half parses types (fit/fixedtype.c)
 $(BUILD)/pfsweep: $(BUILD)/libpffit.a
 

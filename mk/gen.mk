@@ -1,19 +1,26 @@
-# gen/: pfmathgen, its templates (embedded at build time) and emitters.
-GEN_SRCS := gen/funcs.c $(sort $(wildcard gen/funcs_*.c)) gen/generate.c gen/float_model.c gen/compile.c gen/fixedgen.c gen/scene.c gen/plot.c gen/cli.c gen/output.c gen/subproc.c gen/request.c
+# gen/: pfmathgen, its templates (embedded at build time) and emitters, a
+# folder per stage: front/ (options, request, output, compile, plot, scene),
+# emit/ (the emit kit shared by the generators), float/ (the float generator
+# and its function table); fixed/ and noise/ come from fixedgen.mk and
+# noisegen.mk.  Every folder is on the include path.
+GEN_DIRS := gen/front gen/emit gen/float gen/fixed gen/noise
+CPPFLAGS += $(GEN_DIRS:%=-I%)
+GEN_SRCS := $(filter-out gen/front/pfmathgen.c,$(sort $(wildcard gen/front/*.c))) \
+            $(sort $(wildcard gen/emit/*.c)) $(sort $(wildcard gen/float/*.c))
 GEN_TEMPLATES := $(sort $(wildcard gen/templates/*.in))
 PROGS += $(BUILD)/pfmathgen
 
-$(BUILD)/include/pf_templates.h: gen/embed-templates.sh $(GEN_TEMPLATES)
+$(BUILD)/include/pf_templates.h: gen/emit/embed-templates.sh $(GEN_TEMPLATES)
 	@mkdir -p $(dir $@)
-	bash gen/embed-templates.sh $@ $(GEN_TEMPLATES)
+	bash gen/emit/embed-templates.sh $@ $(GEN_TEMPLATES)
 
-$(BUILD)/obj/gen/generate.o: $(BUILD)/include/pf_templates.h
+$(BUILD)/obj/gen/emit/emit.o: $(BUILD)/include/pf_templates.h
 
 GEN_OBJS := $(GEN_SRCS:%.c=$(BUILD)/obj/%.o)
 $(BUILD)/libpfgen.a: $(GEN_OBJS)
 	rm -f $@ && ar rcs $@ $^
 
-$(BUILD)/pfmathgen: $(BUILD)/obj/gen/pfmathgen.o $(BUILD)/libpfgen.a $(BUILD)/libpffit.a $(BUILD)/libpfref.a
+$(BUILD)/pfmathgen: $(BUILD)/obj/gen/front/pfmathgen.o $(BUILD)/libpfgen.a $(BUILD)/libpffit.a $(BUILD)/libpfref.a
 	$(CC) $(LDFLAGS) -fopenmp -o $@ $^ $(LIBS_NUM)
 
 TESTS += $(BUILD)/tests/test_fit $(BUILD)/tests/test_cli

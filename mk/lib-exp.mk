@@ -1,5 +1,5 @@
 # exp family: pf_expf, pf_exp2f and their _fast and _array forms, generated
-# from the rows in gen/funcs_exp.c (templates gen/templates/exp*_*.c.in).
+# from the rows in gen/float/funcs_exp.c (templates gen/templates/exp*_*.c.in).
 # (listed in libpfmath/functions.def, read by mk/lib.mk into LIB_GEN)
 
 # end-to-end tests (they run pfmathgen and sweep its output against MPFR)

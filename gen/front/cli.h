@@ -1,4 +1,4 @@
-/* Command-line helpers of pfmathgen's front end (gen/request.c). */
+/* Command-line helpers of pfmathgen's front end (gen/front/request.c). */
 #ifndef PF_CLI_H
 #define PF_CLI_H
 #include <stddef.h>

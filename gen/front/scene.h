@@ -15,7 +15,7 @@
  * optional (exact is the only one): 'noise3 fixed<15,12> fixed<15,14>';
  * scene.h then declares OUT name(IN x, IN y, IN z) and
  * void name_array(const IN *x, const IN *y, const IN *z, OUT *out, size_t n).
- * DIR may exist: its files are replaced one by one (gen/output.h), only
+ * DIR may exist: its files are replaced one by one (gen/front/output.h), only
  * after every entry was generated; nothing else in DIR is touched. */
 #ifndef PF_SCENE_H
 #define PF_SCENE_H

@@ -71,10 +71,6 @@ static double two_over_pi_err31(void)
     return d; /* in units of 2^-31 */
 }
 
-#define K_C64 k[0]
-#define K_SH s[0]
-#define K_A16 k[1]  /* 16-bit lanes: w = x A + mulhrs(x, B) */
-#define K_B16 k[2]
 
 /* 16-bit lanes: w = round(x 2^(15-Ei) / pi), quarter turns in 2^-14 units,
  * modulo 4 (a uint16_t).  T = round(2^(30-Ei) / pi) from MPFR is split as
@@ -143,7 +139,7 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
             snprintf(err, errlen, "16-bit lanes: input above 32767");
             return -2;
         }
-        double dw = phase16(Ei, Xmax, &G->K_A16, &G->K_B16);
+        double dw = phase16(Ei, Xmax, &G->trig.a16, &G->trig.b16);
         G->kind = 2;
         G->dred = dw * 0x1p-14;
         snprintf(G->red_text, sizeof G->red_text,
@@ -152,14 +148,14 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
                  "the other by the rounding multiply-high); fold to v in [-1, 1] (v = w - 1 or 3 - w, 2^-14 "
                  "units), +-1 held as +-(1 - 2^-14) (sin is flat there: it moves the result by < 5e-9), doubled "
                  "to 2^-15 units; error of v <= %.3e",
-                 (long long)G->K_A16, (long long)G->K_B16, is_cos ? 2 : 1, Ei, (long long)G->K_A16,
-                 (long long)G->K_B16, (long long)G->K_A16, G->dred);
+                 (long long)G->trig.a16, (long long)G->trig.b16, is_cos ? 2 : 1, Ei, (long long)G->trig.a16,
+                 (long long)G->trig.b16, (long long)G->trig.a16, G->dred);
         return 0;
     }
     if (G->W == 32 && G->in.storage_bits <= 16 && (du0 * M_PI / 2 <= budget || du0 <= du1)) {
         G->kind = 0;
         G->dred = du0;
-        G->K_SH = Ei + 1;
+        G->trig.sh = Ei + 1;
         snprintf(G->red_text, sizeof G->red_text,
                  "u = x 2/pi with 2/pi = %d 2^-31, the product rounded to 2^-30; phase w = (u + %d) mod 4 "
                  "(uint32_t, 30 fraction bits); fold to v in [-1, 1] (v = w - 1 or 3 - w); error of v <= %.3e",
@@ -167,13 +163,13 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
     } else {
         G->kind = 1;
         G->dred = du1;
-        G->K_C64 = (int64_t)two_over_pi_bits(62 - Ei);
+        G->trig.c64 = (int64_t)two_over_pi_bits(62 - Ei);
         snprintf(G->red_text, sizeof G->red_text,
                  "u = x 2/pi mod 4 = x C mod 2^64 in 2^-62 units, C = round(2/pi 2^%d) mod 2^64 (bits of 2/pi "
                  "that only add multiples of 4 dropped, from MPFR); phase w = (u + %d) mod 4; fold to v in "
                  "[-1, 1] (v = w - 1 or 3 - w)%s; error of v <= %.3e",
                  62 - Ei, is_cos ? 2 : 1, G->W == 32 ? ", rounded to 2^-30" : "", du1);
-        if ((uint64_t)G->K_C64 == 0) {
+        if ((uint64_t)G->trig.c64 == 0) {
             snprintf(err, errlen, "%s: input exponent %d too large for the reduction", fn, Ei);
             return -1;
         }
@@ -228,38 +224,38 @@ static void budget(fx_gen *G)
         G->A += G->poly_err;
 }
 
-static void emit16(fx_gen *G, fx_buf *b, int is_cos)
+static void emit16(fx_gen *G, pf_buf *b, int is_cos)
 {
-    fx_buf body = {0}, horner = {0};
+    pf_buf body = {0}, horner = {0};
     int Eo = G->out.exp, Ep = G->Ep;
-    fx_printf(&body, "    /* phase w = (u + %d) mod 4, 2^-14 units */\n", is_cos ? 2 : 1);
+    pf_printf(&body, "    /* phase w = (u + %d) mod 4, 2^-14 units */\n", is_cos ? 2 : 1);
     /* on |x|, so that sin is exactly odd and cos exactly even (the
        rounding multiply-high rounds ties up, which is not symmetric) */
     int full = G->in.storage_bits == 16 && G->in.is_signed; /* x can be -32768 */
-    const char *ka = fx_k16(G, G->K_A16 > 32767 ? G->K_A16 - 65536 : G->K_A16,
+    const char *ka = fx_k16(G, G->trig.a16 > 32767 ? G->trig.a16 - 65536 : G->trig.a16,
                             "A (as uint16_t): |x| 2^(15-Ei)/pi = |x| (A + B 2^-15)");
-    const char *kb = fx_k16(G, G->K_B16, "B");
+    const char *kb = fx_k16(G, G->trig.b16, "B");
     const char *ko = fx_k16(G, 1, "1 (see the array form)");
-    fx_printf(&body, "    uint16_t ax = (uint16_t)(x < 0 ? -(int32_t)x : x); /* |x| */\n");
-    fx_printf(&body, "    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)%s + (uint16_t)pf_fx_mulhrs((int16_t)(ax * %s), %s) + %s);\n",
+    pf_printf(&body, "    uint16_t ax = (uint16_t)(x < 0 ? -(int32_t)x : x); /* |x| */\n");
+    pf_printf(&body, "    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)%s + (uint16_t)pf_fx_mulhrs((int16_t)(ax * %s), %s) + %s);\n",
               ka, ko, kb, is_cos ? "0x8000u" : "0x4000u");
     if (full) /* |x| = 32768 went through the multiply-high as -32768: it gave -B for B */
-        fx_printf(&body, "    w = (uint16_t)(w + ((uint16_t)(0u - (uint16_t)(ax == 32768u)) & (uint16_t)(2 * %s)));\n", kb);
-    fx_put(&body, "    /* fold: v = w - 1 on [0, 2), 3 - w on [2, 4), in [-1, 1] (2^-14), then 2^-15 units */\n"
+        pf_printf(&body, "    w = (uint16_t)(w + ((uint16_t)(0u - (uint16_t)(ax == 32768u)) & (uint16_t)(2 * %s)));\n", kb);
+    pf_put(&body, "    /* fold: v = w - 1 on [0, 2), 3 - w on [2, 4), in [-1, 1] (2^-14), then 2^-15 units */\n"
                   "    int16_t v14 = (int16_t)(w < 0x8000u ? (int32_t)w - 0x4000 : 0xc000 - (int32_t)w);\n"
                   "    int16_t vc = (int16_t)(v14 > 16383 ? 16383 : v14 < -16383 ? -16383 : v14); /* +-1 held below */\n");
-    fx_printf(&body, "    int16_t v = (int16_t)(vc * %s); /* 2^-15 units */\n", fx_k16(G, 2, "2 (see the array form)"));
-    fx_put(&body, "    int16_t s = pf_fx_mulhrs(v, v); /* v^2 in [0, 1), 2^-15 units */\n");
-    fx_put(&body, "    /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner in 16-bit words, one rounding per step */\n");
+    pf_printf(&body, "    int16_t v = (int16_t)(vc * %s); /* 2^-15 units */\n", fx_k16(G, 2, "2 (see the array form)"));
+    pf_put(&body, "    int16_t s = pf_fx_mulhrs(v, v); /* v^2 in [0, 1), 2^-15 units */\n");
+    pf_put(&body, "    /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner in 16-bit words, one rounding per step */\n");
     fx_emit_horner(G, &horner, "s", "    ");
-    fx_put(&body, horner.s);
+    pf_put(&body, horner.s);
     if (Eo == Ep) {
-        fx_put(&body, "    int16_t r = pf_fx_mulhrs(v, p); /* v P, rounded once to the output's lsb */\n");
+        pf_put(&body, "    int16_t r = pf_fx_mulhrs(v, p); /* v P, rounded once to the output's lsb */\n");
     } else if (Eo < Ep) {
-        fx_printf(&body, "    int16_t r = pf_fx_rsh16(pf_fx_mulhrs(v, p), %d); /* v P at 2^-%d, then the output's lsb */\n",
+        pf_printf(&body, "    int16_t r = pf_fx_rsh16(pf_fx_mulhrs(v, p), %d); /* v P at 2^-%d, then the output's lsb */\n",
                   Ep - Eo, Ep);
     } else {
-        fx_printf(&body, "    int32_t r = pf_fx_rsh32((int32_t)v * p, %d); /* v P: full 32-bit product, rounded once */\n",
+        pf_printf(&body, "    int32_t r = pf_fx_rsh32((int32_t)v * p, %d); /* v P: full 32-bit product, rounded once */\n",
                   15 + Ep - Eo);
         snprintf(G->wide_text, sizeof G->wide_text,
                  "the final product v P is a full 16x16 -> 32-bit product, rounded once: the output's lsb 2^-%d is "
@@ -267,62 +263,61 @@ static void emit16(fx_gen *G, fx_buf *b, int is_cos)
     }
     if (!is_cos) {
         if (Eo > Ep)
-            fx_put(&body, "    r = x < 0 ? -r : r; /* sin(-x) = -sin(x) */\n");
+            pf_put(&body, "    r = x < 0 ? -r : r; /* sin(-x) = -sin(x) */\n");
         else
-            fx_put(&body, "    int16_t sg = (int16_t)-(x < 0); /* sin(-x) = -sin(x), through a mask */\n"
+            pf_put(&body, "    int16_t sg = (int16_t)-(x < 0); /* sin(-x) = -sin(x), through a mask */\n"
                           "    r = (int16_t)((r ^ sg) - sg);\n");
     }
     fx_emit_return16(G, &body, "r", Eo > Ep ? INT32_MIN : -32768, Eo > Ep ? INT32_MAX : 32767);
     const char *kv[] = {"FUNC", is_cos ? "cos" : "sin", "PHASE", is_cos ? "2" : "1", "NAME", G->name, "IT", G->it,
                         "OT", G->ot, "BODY", body.s, NULL};
-    fx_subst(b, fx_template("fx_sincos16.c"), kv);
+    pf_subst(b, pf_template("fx_sincos16.c"), kv);
     free(body.s);
     free(horner.s);
 }
 
-static void emit(fx_gen *G, fx_buf *b, int is_cos)
+static void emit(fx_gen *G, pf_buf *b, int is_cos)
 {
     if (G->W == 16) {
         emit16(G, b, is_cos);
         return;
     }
-    fx_buf phase = {0}, fold = {0}, sq = {0}, horner = {0}, out = {0};
+    pf_buf phase = {0}, fold = {0}, sq = {0}, horner = {0}, out = {0};
     int W = G->W;
     if (G->kind == 0) {
-        int sh = G->K_SH;
+        int sh = G->trig.sh;
         const char *off = is_cos ? "0x80000000u" : "0x40000000u";
         if (sh >= 1)
-            fx_printf(&phase, "    uint32_t w = (uint32_t)pf_fx_rne((int64_t)x * %d, %d) + %s;", C31, sh, off);
+            pf_printf(&phase, "    uint32_t w = (uint32_t)pf_fx_rne((int64_t)x * %d, %d) + %s;", C31, sh, off);
         else if (sh == 0)
-            fx_printf(&phase, "    uint32_t w = (uint32_t)((int64_t)x * %d) + %s;", C31, off);
+            pf_printf(&phase, "    uint32_t w = (uint32_t)((int64_t)x * %d) + %s;", C31, off);
         else
-            fx_printf(&phase, "    uint32_t w = (uint32_t)((uint64_t)(int64_t)x * %du << %d) + %s;", C31, -sh, off);
-        fx_put(&fold, "    int32_t v = w < 0x80000000u ? (int32_t)w - 0x40000000 : 0x40000000 - (int32_t)(w - 0x80000000u);");
+            pf_printf(&phase, "    uint32_t w = (uint32_t)((uint64_t)(int64_t)x * %du << %d) + %s;", C31, -sh, off);
+        pf_put(&fold, "    int32_t v = w < 0x80000000u ? (int32_t)w - 0x40000000 : 0x40000000 - (int32_t)(w - 0x80000000u);");
     } else {
-        fx_printf(&phase, "    uint64_t w = (uint64_t)(int64_t)x * UINT64_C(0x%016llx) + UINT64_C(%s);",
-                  (unsigned long long)(uint64_t)G->K_C64, is_cos ? "0x8000000000000000" : "0x4000000000000000");
-        fx_printf(&fold,
+        pf_printf(&phase, "    uint64_t w = (uint64_t)(int64_t)x * UINT64_C(0x%016llx) + UINT64_C(%s);",
+                  (unsigned long long)(uint64_t)G->trig.c64, is_cos ? "0x8000000000000000" : "0x4000000000000000");
+        pf_printf(&fold,
                   "    int64_t v%s = w < UINT64_C(0x8000000000000000) ? (int64_t)w - INT64_C(0x4000000000000000)\n"
                   "                   : INT64_C(0x4000000000000000) - (int64_t)(w - UINT64_C(0x8000000000000000));",
                   W == 32 ? "62" : "");
         if (W == 32)
-            fx_put(&fold, "\n    int32_t v = (int32_t)pf_fx_rne(v62, 32); /* v in [-1, 1], 2^-30 units */");
+            pf_put(&fold, "\n    int32_t v = (int32_t)pf_fx_rne(v62, 32); /* v in [-1, 1], 2^-30 units */");
     }
     if (W == 32)
-        fx_put(&sq, "    int64_t s0 = pf_fx_rne((int64_t)v * v, 29);\n"
+        pf_put(&sq, "    int64_t s0 = pf_fx_rne((int64_t)v * v, 29);\n"
                     "    int32_t s = (int32_t)(s0 < INT32_MAX ? s0 : INT32_MAX);");
     else
-        fx_put(&sq, "    int64_t s = pf_fx_mul64(v, v, 61); /* saturates at INT64_MAX */");
+        pf_put(&sq, "    int64_t s = pf_fx_mul64(v, v, 61); /* saturates at INT64_MAX */");
     fx_emit_horner(G, &horner, "s", "    ");
-    if (horner.n && horner.s[horner.n - 1] == '\n')
-        horner.s[--horner.n] = 0;
+    pf_chomp(&horner);
     int so = out_shift(G);
     int64_t mx = pf_type_max_stored(&G->out), mn = pf_type_min_stored(&G->out);
     if (W == 32)
-        fx_printf(&out, "    int64_t r = pf_fx_rne((int64_t)v * p, %d);\n", so);
+        pf_printf(&out, "    int64_t r = pf_fx_rne((int64_t)v * p, %d);\n", so);
     else
-        fx_printf(&out, "    int64_t r = pf_fx_mul64(v, p, %d);\n", so);
-    fx_printf(&out, "    return (%s)(r > %lld ? %lld : r < %lld ? %lld : r);", G->ot, (long long)mx, (long long)mx,
+        pf_printf(&out, "    int64_t r = pf_fx_mul64(v, p, %d);\n", so);
+    pf_printf(&out, "    return (%s)(r > %lld ? %lld : r < %lld ? %lld : r);", G->ot, (long long)mx, (long long)mx,
               (long long)mn, (long long)mn);
     char wbits[8], wf[8], stype[64];
     snprintf(wbits, sizeof wbits, "%d", G->kind == 0 ? 32 : 64);
@@ -332,7 +327,7 @@ static void emit(fx_gen *G, fx_buf *b, int is_cos)
                         "NAME", G->name, "IT", G->it, "OT", G->ot, "PHASE_CODE", phase.s, "FOLD_CODE", fold.s,
                         "S_TYPE", stype, "S_CODE", sq.s, "HORNER", horner.s, "OUT_TYPE", G->out_text, "OUT_CODE",
                         out.s, NULL};
-    fx_subst(b, fx_template("fx_sincos.c"), kv);
+    pf_subst(b, pf_template("fx_sincos.c"), kv);
     free(phase.s);
     free(fold.s);
     free(sq.s);
@@ -340,8 +335,8 @@ static void emit(fx_gen *G, fx_buf *b, int is_cos)
     free(out.s);
 }
 
-static void emit_sin(fx_gen *G, fx_buf *b) { emit(G, b, 0); }
-static void emit_cos(fx_gen *G, fx_buf *b) { emit(G, b, 1); }
+static void emit_sin(fx_gen *G, pf_buf *b) { emit(G, b, 0); }
+static void emit_cos(fx_gen *G, pf_buf *b) { emit(G, b, 1); }
 
 const fx_func fx_func_sin = {
     .name = "sin", .ref = PF_SIN, .tmpl = "fx_sincos", .target_text = "sin(pi/2 t)", .g = g_sinpi2,

@@ -1,5 +1,5 @@
 /* Fixed-point generation: pfmathgen with a fixed<size,exp> --type or
- * --out-type runs pf_run_fixed (gen/request.h) on its checked request. */
+ * --out-type runs pf_run_fixed (gen/front/request.h) on its checked request. */
 #ifndef PF_FIXEDGEN_H
 #define PF_FIXEDGEN_H
 

@@ -1,6 +1,6 @@
 /* pfmathgen --scene FILE -o DIR (scene.h): read and check every line first,
  * generate every entry in this process into memory, and only then write
- * DIR's files, each through gen/output.c; nothing in DIR is touched unless
+ * DIR's files, each through gen/front/output.c; nothing in DIR is touched unless
  * every entry succeeded, and nothing there is deleted. */
 #include "scene.h"
 

@@ -1,5 +1,5 @@
 /* Rounding-error model for float polynomial evaluation, shared by the
- * specs' model hooks (gen/funcs.h: pf_spec.model).
+ * specs' model hooks (gen/float/funcs.h: pf_spec.model).
  *
  * Horner with fmaf: s_n = c_n, s_k = fmaf(s_{k+1}, z, c_k), one rounding a
  * step, so with u = 2^-24 the running error obeys

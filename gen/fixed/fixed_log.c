@@ -29,22 +29,13 @@ static void g_log2_1p(mpfr_t y, const mpfr_t t, const void *ctx)
     mpfr_clears(a, l, (mpfr_ptr)0);
 }
 
-#define KZ k[0]     /* round(ln2 2^Ez) or 2^Ez */
-#define EMAX k[1]   /* max |e| */
-#define K15 k[2]    /* 16-bit lanes, log: round(ln2 2^15) */
-#define EZ s[0]
-#define A16 s[1]    /* 16-bit lanes: e K and P summed at 2^-a */
-#define DK16 d[0]   /* 16-bit lanes: |error of e K| */
-#define EZ32 s[2]   /* 16-bit lanes, wide sum: e K + P at 2^-Ez32 in 32 bits */
-#define KZ32 k[3]   /* round(ln2 2^Ez32) or 2^Ez32 */
-#define WIDE s[3]   /* 16-bit lanes: 1 if the sum is in 32-bit lanes */
 
 /* 16-bit lanes (see fx_log16.c.in): z = e K + P at 2^-a in an int16_t,
    then rounded once to the output; a >= Eo, and |z| 2^a must fit */
 static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
 {
     int Ei = G->in.exp, Eo = G->out.exp;
-    double K = base2 ? 1 : M_LN2, emax = (double)G->EMAX;
+    double K = base2 ? 1 : M_LN2, emax = (double)G->log.emax;
     int a = 15;
     while (a >= Eo && (emax * K + 1.01) * ldexp(1.0, a) > 32767)
         a--;
@@ -59,16 +50,16 @@ static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
         snprintf(err, errlen, "16-bit lanes: e %s + P does not fit at the output's lsb", base2 ? "" : "ln2");
         return -2;
     }
-    G->EZ32 = ez;
+    G->log.ez32 = ez;
     if (base2)
-        G->KZ32 = (int64_t)1 << ez;
+        G->log.kz32 = (int64_t)1 << ez;
     else {
         mpfr_t l;
         mpfr_init2(l, 256);
         mpfr_const_log2(l, MPFR_RNDN);
         mpfr_mul_2si(l, l, ez, MPFR_RNDN);
         mpfr_rint(l, l, MPFR_RNDN);
-        G->KZ32 = (int64_t)mpfr_get_si(l, MPFR_RNDN);
+        G->log.kz32 = (int64_t)mpfr_get_si(l, MPFR_RNDN);
         mpfr_clear(l);
     }
     /* log2: e 2^a is exact, so a finer a only adds P's rounding before the
@@ -76,22 +67,22 @@ static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
        P cost as much as at a = Eo, where P's is the final one: a = Eo */
     if (a >= Eo && (base2 || a == Eo + 1))
         a = Eo;
-    G->A16 = a < Eo ? -1 : a; /* -1: only the wide sum */
-    G->DK16 = 0;
+    G->log.a16 = a < Eo ? -1 : a; /* -1: only the wide sum */
+    G->log.dk16 = 0;
     if (!base2) {
         mpfr_t l;
         mpfr_init2(l, 256);
         mpfr_const_log2(l, MPFR_RNDN);
         mpfr_mul_2si(l, l, 15, MPFR_RNDN);
         mpfr_rint(l, l, MPFR_RNDN);
-        G->K15 = (int64_t)mpfr_get_si(l, MPFR_RNDN);
+        G->log.k15 = (int64_t)mpfr_get_si(l, MPFR_RNDN);
         mpfr_const_log2(l, MPFR_RNDN);
         mpfr_mul_2si(l, l, 15, MPFR_RNDN);
-        mpfr_sub_si(l, l, (long)G->K15, MPFR_RNDN);
+        mpfr_sub_si(l, l, (long)G->log.k15, MPFR_RNDN);
         double kerr = fabs(mpfr_get_d(l, MPFR_RNDN));
         mpfr_clear(l);
         /* round(e 2^a K15 2^-15): half an lsb, and |e| 2^a |K15 - ln2 2^15| 2^-15 */
-        G->DK16 = ldexp(0.5, -a) + emax * kerr * 0x1p-15;
+        G->log.dk16 = ldexp(0.5, -a) + emax * kerr * 0x1p-15;
     }
     return 0;
 }
@@ -113,26 +104,26 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
     int64_t imax = pf_type_max_stored(&G->in);
     int nb = fx_bitlen((uint64_t)imax);
     int64_t elo = -Ei, ehi = nb - 1 - Ei;
-    G->EMAX = elo < 0 ? -elo : elo;
-    if ((ehi < 0 ? -ehi : ehi) > G->EMAX)
-        G->EMAX = ehi < 0 ? -ehi : ehi;
-    G->EZ = 62 - fx_bitlen((uint64_t)G->EMAX + 1) - 1;
-    if (G->EZ <= Eo) {
+    G->log.emax = elo < 0 ? -elo : elo;
+    if ((ehi < 0 ? -ehi : ehi) > G->log.emax)
+        G->log.emax = ehi < 0 ? -ehi : ehi;
+    G->log.ez = 62 - fx_bitlen((uint64_t)G->log.emax + 1) - 1;
+    if (G->log.ez <= Eo) {
         snprintf(err, errlen, "%s: output lsb 2^-%d is finer than the 64-bit sum can hold", fn, Eo);
         return -1;
     }
     if (base2) {
-        G->KZ = (int64_t)1 << G->EZ;
+        G->log.kz = (int64_t)1 << G->log.ez;
     } else {
         mpfr_t l;
         mpfr_init2(l, 256);
         mpfr_const_log2(l, MPFR_RNDN);
-        mpfr_mul_2si(l, l, G->EZ, MPFR_RNDN);
+        mpfr_mul_2si(l, l, G->log.ez, MPFR_RNDN);
         mpfr_rint(l, l, MPFR_RNDN);
         mpz_t z;
         mpz_init(z);
         mpfr_get_z(z, l, MPFR_RNDN);
-        G->KZ = (int64_t)mpz_get_si(z);
+        G->log.kz = (int64_t)mpz_get_si(z);
         mpz_clear(z);
         mpfr_clear(l);
     }
@@ -141,12 +132,12 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
              fn, (long long)pf_type_min_stored(&G->out));
     if (G->W == 16)
         return prepare16(G, err, errlen, base2);
-    G->dred = base2 ? 0 : (double)G->EMAX * ldexp(0.5, -G->EZ);
+    G->dred = base2 ? 0 : (double)G->log.emax * ldexp(0.5, -G->log.ez);
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (leading-zero count), t in [0, 1) the bits "
              "below the leading one (exact); %s(x) = e %s + P(t) summed in 64 bits at 2^-%d%s, rounded once; "
              "x <= 0 -> %lld (most negative)",
-             Ei, fn, base2 ? "" : "ln2", (int)G->EZ,
+             Ei, fn, base2 ? "" : "ln2", (int)G->log.ez,
              base2 ? "" : " (ln2 = KZ 2^-Ez, KZ from MPFR)", (long long)pf_type_min_stored(&G->out));
     return 0;
 }
@@ -161,16 +152,16 @@ static void budget16(fx_gen *G)
        bound: e K exact but for K's rounding, P exact, one rounding */
     G->R = 0;
     double a16 = INFINITY;
-    if (G->A16 >= 0 && G->Ep >= G->A16)
+    if (G->log.a16 >= 0 && G->Ep >= G->log.a16)
         /* P's rounding to 2^-a is the final one when a = Eo (z is the result) */
-        a16 = G->poly_err + G->arith + G->DK16 +
-              (G->Ep > G->A16 && G->A16 > G->out.exp ? ldexp(0.5, -(int)G->A16) : 0);
-    int kexact = G->KZ32 == (int64_t)1 << G->EZ32; /* log2 */
-    double a32 = G->poly_err + G->arith + (kexact ? 0 : (double)G->EMAX * ldexp(0.5, -(int)G->EZ32));
-    if (G->Ep > G->EZ32)
+        a16 = G->poly_err + G->arith + G->log.dk16 +
+              (G->Ep > G->log.a16 && G->log.a16 > G->out.exp ? ldexp(0.5, -(int)G->log.a16) : 0);
+    int kexact = G->log.kz32 == (int64_t)1 << G->log.ez32; /* log2 */
+    double a32 = G->poly_err + G->arith + (kexact ? 0 : (double)G->log.emax * ldexp(0.5, -(int)G->log.ez32));
+    if (G->Ep > G->log.ez32)
         a32 = INFINITY;
-    G->WIDE = !fx_within(G, 0, a16);
-    G->A = G->WIDE ? a32 : a16;
+    G->log.wide = !fx_within(G, 0, a16);
+    G->A = G->log.wide ? a32 : a16;
 }
 
 static void budget(fx_gen *G)
@@ -180,43 +171,43 @@ static void budget(fx_gen *G)
         return;
     }
     G->R = 0;
-    int d = (int)G->EZ - G->Ep;
-    G->A = G->poly_err + G->arith + G->dred + (d < 0 ? ldexp(0.5, -(int)G->EZ) : 0);
+    int d = (int)G->log.ez - G->Ep;
+    G->A = G->poly_err + G->arith + G->dred + (d < 0 ? ldexp(0.5, -(int)G->log.ez) : 0);
 }
 
-static void emit16(fx_gen *G, fx_buf *b, int base2)
+static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
-    fx_buf body = {0}, horner = {0};
-    int Ei = G->in.exp, Eo = G->out.exp, a = (int)G->A16, Ep = G->Ep;
+    pf_buf body = {0}, horner = {0};
+    int Ei = G->in.exp, Eo = G->out.exp, a = (int)G->log.a16, Ep = G->Ep;
     int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in));
     int64_t mn = pf_type_min_stored(&G->out);
     char sumtxt[200];
-    if (G->WIDE)
-        snprintf(sumtxt, sizeof sumtxt, "in an int32_t at 2^-%d (%s)", (int)G->EZ32,
+    if (G->log.wide)
+        snprintf(sumtxt, sizeof sumtxt, "in an int32_t at 2^-%d (%s)", (int)G->log.ez32,
                  base2 ? "e exact" : "ln2 = K 2^-Ez, K from MPFR");
     else
         snprintf(sumtxt, sizeof sumtxt, "in an int16_t at 2^-%d%s", a,
                  base2 ? "" : " (e ln2 = round(e 2^a K 2^-15), K = round(ln2 2^15) from MPFR, the rounding "
                               "multiply-high)");
-    fx_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
+    pf_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
     fx_emit_norm16(&body, nb);
-    fx_put(&body, "\n");
+    pf_put(&body, "\n");
     const char *to = fx_opaque16(G, "t");
-    fx_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", to);
-    fx_put(&body, "    /* P(t) ~ ");
-    fx_put(&body, base2 ? "log2(1 + t)" : "log(1 + t)");
-    fx_put(&body, ": Horner in 16-bit words, one rounding per step */\n");
+    pf_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", to);
+    pf_put(&body, "    /* P(t) ~ ");
+    pf_put(&body, base2 ? "log2(1 + t)" : "log(1 + t)");
+    pf_put(&body, ": Horner in 16-bit words, one rounding per step */\n");
     fx_emit_horner(G, &horner, "tq", "    ");
-    fx_put(&body, horner.s);
+    pf_put(&body, horner.s);
     int64_t mx = pf_type_max_stored(&G->out);
     char rc[200];
-    if (G->WIDE) {
-        int ez = (int)G->EZ32;
-        fx_printf(&body, "    /* e%s + P at 2^-%d in 32-bit lanes (see Lanes above), rounded once */\n",
+    if (G->log.wide) {
+        int ez = (int)G->log.ez32;
+        pf_printf(&body, "    /* e%s + P at 2^-%d in 32-bit lanes (see Lanes above), rounded once */\n",
                   base2 ? "" : " ln2", ez);
-        fx_printf(&body, "    int32_t z = (int32_t)(n - %d) * %lld + (int32_t)p * %lld;\n", Ei, (long long)G->KZ32,
+        pf_printf(&body, "    int32_t z = (int32_t)(n - %d) * %lld + (int32_t)p * %lld;\n", Ei, (long long)G->log.kz32,
                   (long long)1 << (ez - Ep));
-        fx_printf(&body, "    int32_t r = pf_fx_rsh32(z, %d);\n", ez - Eo);
+        pf_printf(&body, "    int32_t r = pf_fx_rsh32(z, %d);\n", ez - Eo);
         snprintf(rc, sizeof rc, "(int16_t)(r < %lld ? %lld : r > %lld ? %lld : r)", (long long)mn, (long long)mn,
                  (long long)mx, (long long)mx);
         snprintf(G->wide_text, sizeof G->wide_text,
@@ -231,32 +222,32 @@ static void emit16(fx_gen *G, fx_buf *b, int base2)
             snprintf(pa, sizeof pa, "p");
         char w[64];
         snprintf(w, sizeof w, "2^%d: e at 2^-%d", a, a);
-        fx_printf(&body, "    int16_t ea = (int16_t)((n - %d) * %s); /* e 2^%d */\n", Ei, fx_k16(G, (int64_t)1 << a, w), a);
+        pf_printf(&body, "    int16_t ea = (int16_t)((n - %d) * %s); /* e 2^%d */\n", Ei, fx_k16(G, (int64_t)1 << a, w), a);
         if (base2)
-            fx_printf(&body, "    int16_t z = (int16_t)(ea + %s); /* e + P at 2^-%d */\n", pa, a);
+            pf_printf(&body, "    int16_t z = (int16_t)(ea + %s); /* e + P at 2^-%d */\n", pa, a);
         else
-            fx_printf(&body, "    int16_t z = (int16_t)(pf_fx_mulhrs(ea, %s) + %s); /* e ln2 + P at 2^-%d */\n",
-                      fx_k16(G, G->K15, "round(ln2 2^15)"), pa, a);
+            pf_printf(&body, "    int16_t z = (int16_t)(pf_fx_mulhrs(ea, %s) + %s); /* e ln2 + P at 2^-%d */\n",
+                      fx_k16(G, G->log.k15, "round(ln2 2^15)"), pa, a);
         if (a > Eo)
-            fx_printf(&body, "    int16_t r = pf_fx_rsh16(z, %d); /* rounded once to the output */\n", a - Eo);
+            pf_printf(&body, "    int16_t r = pf_fx_rsh16(z, %d); /* rounded once to the output */\n", a - Eo);
         else
-            fx_put(&body, "    int16_t r = z;\n");
-        fx_put(&body, "    int16_t rc = (int16_t)");
+            pf_put(&body, "    int16_t r = z;\n");
+        pf_put(&body, "    int16_t rc = (int16_t)");
         rc[0] = 0;
         if (mn > -32768)
             snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "(r < %lld ? %lld : ", (long long)mn, (long long)mn);
         if (mx < 32767)
             snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "(r > %lld ? %lld : ", (long long)mx, (long long)mx);
         snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "r%s%s", mx < 32767 ? ")" : "", mn > -32768 ? ")" : "");
-        fx_put(&body, rc);
-        fx_put(&body, ";\n");
+        pf_put(&body, rc);
+        pf_put(&body, ";\n");
         snprintf(rc, sizeof rc, "rc");
     }
     /* x <= 0 through a mask (a select on x makes GCC widen the loop) */
-    fx_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */\n");
-    if (G->WIDE)
-        fx_printf(&body, "    int16_t rc = %s;\n", rc);
-    fx_printf(&body, "    return (%s)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)%lld & m));", G->ot, (long long)mn);
+    pf_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */\n");
+    if (G->log.wide)
+        pf_printf(&body, "    int16_t rc = %s;\n", rc);
+    pf_printf(&body, "    return (%s)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)%lld & m));", G->ot, (long long)mn);
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (a staged normalization: constant shifts and "
              "selects), t in [0, 1) the 15 bits below the leading one (exact); %s(x) = e%s + P(t) summed %s, "
@@ -267,30 +258,24 @@ static void emit16(fx_gen *G, fx_buf *b, int base2)
     const char *kv[] = {"FUNC", base2 ? "log2" : "log", "KTEXT", base2 ? "" : "ln2", "PTEXT",
                         base2 ? "log2(1 + t)" : "log(1 + t)", "MINOUT", minout, "NAME", G->name, "IT", G->it, "OT",
                         G->ot, "BODY", body.s, NULL};
-    fx_subst(b, fx_template("fx_log16.c"), kv);
+    pf_subst(b, pf_template("fx_log16.c"), kv);
     free(body.s);
     free(horner.s);
 }
 
-static void emit(fx_gen *G, fx_buf *b, int base2)
+static void emit(fx_gen *G, pf_buf *b, int base2)
 {
     if (G->W == 16) {
         emit16(G, b, base2);
         return;
     }
-    fx_buf norm = {0}, horner = {0}, out = {0};
-    int W = G->W, Ei = G->in.exp, Eo = G->out.exp;
+    pf_buf norm = {0}, horner = {0}, out = {0};
+    int Ei = G->in.exp, Eo = G->out.exp;
     int64_t mx = pf_type_max_stored(&G->out), mn = pf_type_min_stored(&G->out);
-    fx_put(&norm, "    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */\n"
-                  "    int n = pf_fx_bitlen(ux) - 1;\n");
-    if (W == 32)
-        fx_put(&norm, "    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */");
-    else
-        fx_put(&norm, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
+    fx_emit_norm(G, &norm);
     fx_emit_horner(G, &horner, "t", "    ");
-    if (horner.n && horner.s[horner.n - 1] == '\n')
-        horner.s[--horner.n] = 0;
-    int d = (int)G->EZ - G->Ep;
+    pf_chomp(&horner);
+    int d = (int)G->log.ez - G->Ep;
     char pz[96];
     if (d > 0)
         snprintf(pz, sizeof pz, "(int64_t)p * INT64_C(%lld)", (long long)((int64_t)1 << d));
@@ -298,30 +283,30 @@ static void emit(fx_gen *G, fx_buf *b, int base2)
         snprintf(pz, sizeof pz, "(int64_t)p");
     else
         snprintf(pz, sizeof pz, "pf_fx_rne(p, %d)", -d);
-    fx_printf(&out, "    /* e %s + P(t) at 2^-%d, exact; one rounding to the output */\n", base2 ? "" : "ln2", (int)G->EZ);
-    if (base2 || G->KZ <= INT32_MAX)
-        fx_printf(&out, "    int64_t z = (int64_t)(n - %d) * INT64_C(%lld) + %s;\n", Ei, (long long)G->KZ, pz);
+    pf_printf(&out, "    /* e %s + P(t) at 2^-%d, exact; one rounding to the output */\n", base2 ? "" : "ln2", (int)G->log.ez);
+    if (base2 || G->log.kz <= INT32_MAX)
+        pf_printf(&out, "    int64_t z = (int64_t)(n - %d) * INT64_C(%lld) + %s;\n", Ei, (long long)G->log.kz, pz);
     else /* e K from two 32x32-bit products, which vectorize (K = KH 2^31 + KL) */
-        fx_printf(&out,
+        pf_printf(&out,
                   "    int64_t z = (int64_t)(n - %d) * %lld * INT64_C(2147483648) + (int64_t)(n - %d) * %lld + %s;\n",
-                  Ei, (long long)(G->KZ >> 31), Ei, (long long)(G->KZ & 0x7fffffff), pz);
-    fx_printf(&out, "    int64_t r = pf_fx_rne(z, %d);\n", (int)G->EZ - Eo);
-    fx_printf(&out, "    r = r > %lld ? %lld : r < %lld ? %lld : r;\n", (long long)mx, (long long)mx, (long long)mn,
+                  Ei, (long long)(G->log.kz >> 31), Ei, (long long)(G->log.kz & 0x7fffffff), pz);
+    pf_printf(&out, "    int64_t r = pf_fx_rne(z, %d);\n", (int)G->log.ez - Eo);
+    pf_printf(&out, "    r = r > %lld ? %lld : r < %lld ? %lld : r;\n", (long long)mx, (long long)mx, (long long)mn,
               (long long)mn);
-    fx_printf(&out, "    return (%s)(x > 0 ? r : %lld);", G->ot, (long long)mn);
+    pf_printf(&out, "    return (%s)(x > 0 ? r : %lld);", G->ot, (long long)mn);
     char minout[32];
     snprintf(minout, sizeof minout, "%lld", (long long)mn);
     const char *kv[] = {"FUNC", base2 ? "log2" : "log", "KTEXT", base2 ? "" : "ln2", "PTEXT",
                         base2 ? "log2(1 + t)" : "log(1 + t)", "MINOUT", minout, "NAME", G->name, "IT", G->it, "OT",
                         G->ot, "NORM_CODE", norm.s, "HORNER", horner.s, "OUT_CODE", out.s, NULL};
-    fx_subst(b, fx_template("fx_log.c"), kv);
+    pf_subst(b, pf_template("fx_log.c"), kv);
     free(norm.s);
     free(horner.s);
     free(out.s);
 }
 
-static void emit_log(fx_gen *G, fx_buf *b) { emit(G, b, 0); }
-static void emit_log2(fx_gen *G, fx_buf *b) { emit(G, b, 1); }
+static void emit_log(fx_gen *G, pf_buf *b) { emit(G, b, 0); }
+static void emit_log2(fx_gen *G, pf_buf *b) { emit(G, b, 1); }
 
 const fx_func fx_func_log = {
     .name = "log", .ref = PF_LOG, .tmpl = "fx_log", .target_text = "log(1+t)", .g = g_log1p, .a = 0, .b = 1,

@@ -1,6 +1,6 @@
 /* pfmathgen for fixed-point types: the function list, the --help text and
- * pf_run_fixed, which runs one request checked by gen/request.c (a bad
- * type or pair never gets here).  The pipeline itself is gen/fixed_core.c. */
+ * pf_run_fixed, which runs one request checked by gen/front/request.c (a bad
+ * type or pair never gets here).  The pipeline itself is gen/fixed/fixed_core.c. */
 #include "fixedgen.h"
 #include "request.h"
 

@@ -21,18 +21,6 @@ static void g_exp2(mpfr_t y, const mpfr_t t, const void *ctx)
     mpfr_exp2(y, t, MPFR_RNDN);
 }
 
-#define XLO k[0]    /* clamp range of the stored input */
-#define XHI k[1]
-#define XSAT k[2]   /* first saturating input, or > max */
-#define CEXP k[3]   /* exp: round(log2e 2^(Ft+Ei)) */
-#define KLO k[4]
-#define KHI k[5]
-#define K0 k[6]     /* bias in units of 2^Ft */
-#define FT s[0]
-#define LOCLAMP s[1]
-#define SAT s[2]
-#define B16 k[7]    /* 16-bit lanes, exp: round((log2(e) - 1) 2^15) */
-#define DT16 d[0]   /* 16-bit lanes: |error of t| */
 
 /* ceil / floor of v 2^e for an MPFR value v, as int64 (clamped to +-2^62) */
 static int64_t scaled_int(const mpfr_t v, int e, mpfr_rnd_t rnd)
@@ -55,7 +43,7 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
 {
     if (base2)
         return xc;
-    int64_t pr = xc * G->B16; /* round(pr 2^-15), ties up: floor((pr + 2^14) / 2^15) */
+    int64_t pr = xc * G->exp.b16; /* round(pr 2^-15), ties up: floor((pr + 2^14) / 2^15) */
     int64_t q = pr + 16384;
     q = q >= 0 ? q / 32768 : -((-q + 32767) / 32768);
     return xc + q;
@@ -78,38 +66,38 @@ static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
         mpfr_exp(l, l, MPFR_RNDN);
         mpfr_log2(l, l, MPFR_RNDN);
         mpfr_sub_ui(l, l, 1, MPFR_RNDN);
-        G->B16 = scaled_int(l, 15, MPFR_RNDN);
+        G->exp.b16 = scaled_int(l, 15, MPFR_RNDN);
         mpfr_mul_2si(l, l, 15, MPFR_RNDN);
-        mpfr_sub_si(l, l, (long)G->B16, MPFR_RNDN);
+        mpfr_sub_si(l, l, (long)G->exp.b16, MPFR_RNDN);
         double cerr = fabs(mpfr_get_d(l, MPFR_RNDN)); /* |B - (log2 e - 1) 2^15| */
         mpfr_clear(l);
-        double xm = fmax(fabs((double)G->XLO), fabs((double)G->XHI));
+        double xm = fmax(fabs((double)G->exp.xlo), fabs((double)G->exp.xhi));
         dt = ldexp(0.5 + xm * cerr * 0x1p-15, -Ei);
     }
-    G->DT16 = dt;
-    int64_t tlo = t16(G, G->XLO, base2), thi = t16(G, G->XHI, base2);
+    G->exp.dt16 = dt;
+    int64_t tlo = t16(G, G->exp.xlo, base2), thi = t16(G, G->exp.xhi, base2);
     int64_t one = (int64_t)1 << Ei;
-    G->KLO = tlo >= 0 ? tlo / one : -((-tlo + one - 1) / one);
-    G->KHI = thi >= 0 ? thi / one : -((-thi + one - 1) / one);
-    G->K0 = G->KLO < 0 ? -G->KLO : 0;
-    if (thi + G->K0 * one > 65535) {
+    G->exp.klo = tlo >= 0 ? tlo / one : -((-tlo + one - 1) / one);
+    G->exp.khi = thi >= 0 ? thi / one : -((-thi + one - 1) / one);
+    G->exp.k0 = G->exp.klo < 0 ? -G->exp.klo : 0;
+    if (thi + G->exp.k0 * one > 65535) {
         snprintf(err, errlen, "16-bit lanes: t does not fit a uint16_t");
         return -2;
     }
-    G->FT = Ei;
+    G->exp.ft = Ei;
     G->dred = dt;
     if (base2)
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x; k = floor(t), f = t - k (exact, the low bits of the stored integer, in a uint16_t biased "
                  "by %lld); inputs clamped to [%lld, %lld] (stored)%s",
-                 (long long)G->K0, (long long)G->XLO, (long long)G->XHI, G->SAT ? ", saturating from there" : "");
+                 (long long)G->exp.k0, (long long)G->exp.xlo, (long long)G->exp.xhi, G->exp.sat ? ", saturating from there" : "");
     else
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x log2(e) = x + round(x B 2^-15), B = round((log2(e) - 1) 2^15) = %lld (MPFR), at the "
                  "input's lsb 2^-%d in a uint16_t biased by %lld; k = floor(t), f = t - k; inputs clamped to "
                  "[%lld, %lld] (stored)%s; error of t <= %.3e",
-                 (long long)G->B16, Ei, (long long)G->K0, (long long)G->XLO, (long long)G->XHI,
-                 G->SAT ? ", saturating from there" : "", dt);
+                 (long long)G->exp.b16, Ei, (long long)G->exp.k0, (long long)G->exp.xlo, (long long)G->exp.xhi,
+                 G->exp.sat ? ", saturating from there" : "", dt);
     return 0;
 }
 
@@ -145,43 +133,43 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
     }
     int64_t xlo = scaled_int(a, Ei, MPFR_RNDD) - 1;
     mpfr_clear(a);
-    G->SAT = xsat <= imax;
-    G->LOCLAMP = xlo > imin;
-    G->XSAT = xsat;
-    G->XLO = xlo > imin ? xlo : imin;
-    G->XHI = xsat - 1 < imax ? xsat - 1 : imax;
-    if (G->XHI < G->XLO + 1) {
+    G->exp.sat = xsat <= imax;
+    G->exp.loclamp = xlo > imin;
+    G->exp.xsat = xsat;
+    G->exp.xlo = xlo > imin ? xlo : imin;
+    G->exp.xhi = xsat - 1 < imax ? xsat - 1 : imax;
+    if (G->exp.xhi < G->exp.xlo + 1) {
         snprintf(err, errlen, "%s: output type %s has no room between 1/4 lsb and its max for %s inputs", fn,
                  G->out_text, G->in_text);
         return -1;
     }
-    double xl = ldexp((double)G->XLO, -Ei), xh = ldexp((double)G->XHI, -Ei);
+    double xl = ldexp((double)G->exp.xlo, -Ei), xh = ldexp((double)G->exp.xhi, -Ei);
     double c = base2 ? 1 : M_LOG2E;
-    G->KLO = (int64_t)floor(xl * c) - 1; /* one of margin each side: computed t errs */
-    G->KHI = (int64_t)floor(xh * c) + 1;
-    G->K0 = G->KLO < 0 ? -G->KLO : 0;
-    double xmaxabs = fmax(fabs((double)G->XLO), fabs((double)G->XHI));
+    G->exp.klo = (int64_t)floor(xl * c) - 1; /* one of margin each side: computed t errs */
+    G->exp.khi = (int64_t)floor(xh * c) + 1;
+    G->exp.k0 = G->exp.klo < 0 ? -G->exp.klo : 0;
+    double xmaxabs = fmax(fabs((double)G->exp.xlo), fabs((double)G->exp.xhi));
     G->fmax = fx_out_max(G);
-    if (G->SAT)
+    if (G->exp.sat)
         snprintf(G->sat_text, sizeof G->sat_text, "x >= %lld (stored; %.9g) overflows: %lld (the max)",
-                 (long long)G->XSAT, ldexp((double)G->XSAT, -Ei), (long long)omax);
+                 (long long)G->exp.xsat, ldexp((double)G->exp.xsat, -Ei), (long long)omax);
     else
         snprintf(G->sat_text, sizeof G->sat_text, "no input overflows");
     if (G->W == 16)
         return prepare16(G, err, errlen, base2);
     if (base2) {
-        G->FT = Ei > 0 ? Ei : 0;
+        G->exp.ft = Ei > 0 ? Ei : 0;
         G->dred = 0;
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x; k = floor(t), f = t - k (exact%s); inputs clamped to [%lld, %lld] (stored)%s",
-                 Ei > 0 ? ", the low bits of the stored integer" : ": x is an integer", (long long)G->XLO,
-                 (long long)G->XHI, G->SAT ? ", saturating from there" : "");
+                 Ei > 0 ? ", the low bits of the stored integer" : ": x is an integer", (long long)G->exp.xlo,
+                 (long long)G->exp.xhi, G->exp.sat ? ", saturating from there" : "");
     } else {
         /* (t + K0) 2^Ft and x C both stay below 2^61 */
-        int64_t B = (G->KHI > -G->KLO ? G->KHI : -G->KLO) + G->K0 + 2;
-        G->FT = 61 - fx_bitlen((uint64_t)B);
-        int cc = (int)G->FT - Ei;
-        if (G->FT < 1 || cc < 1 || cc > 61) {
+        int64_t B = (G->exp.khi > -G->exp.klo ? G->exp.khi : -G->exp.klo) + G->exp.k0 + 2;
+        G->exp.ft = 61 - fx_bitlen((uint64_t)B);
+        int cc = (int)G->exp.ft - Ei;
+        if (G->exp.ft < 1 || cc < 1 || cc > 61) {
             snprintf(err, errlen, "%s: input exponent %d not supported", fn, Ei);
             return -1;
         }
@@ -190,14 +178,14 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
         mpfr_set_ui(l, 1, MPFR_RNDN);
         mpfr_exp(l, l, MPFR_RNDN);
         mpfr_log2(l, l, MPFR_RNDN);
-        G->CEXP = scaled_int(l, cc, MPFR_RNDN);
+        G->exp.cexp = scaled_int(l, cc, MPFR_RNDN);
         mpfr_clear(l);
-        G->dred = xmaxabs * ldexp(0.5, -G->FT);
+        G->dred = xmaxabs * ldexp(0.5, -G->exp.ft);
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x log2(e) = x C 2^-%d with C = round(log2(e) 2^%d) = %lld (MPFR); k = floor(t), f = t - k; "
                  "inputs clamped to [%lld, %lld] (stored)%s; error of t <= %.3e",
-                 G->FT, cc, (long long)G->CEXP, (long long)G->XLO, (long long)G->XHI,
-                 G->SAT ? ", saturating from there" : "", G->dred);
+                 G->exp.ft, cc, (long long)G->exp.cexp, (long long)G->exp.xlo, (long long)G->exp.xhi,
+                 G->exp.sat ? ", saturating from there" : "", G->dred);
     }
     return 0;
 }
@@ -206,15 +194,15 @@ static int prep_exp(fx_gen *G, char *err, size_t n) { return prepare(G, err, n, 
 static int prep_exp2(fx_gen *G, char *err, size_t n) { return prepare(G, err, n, 1); }
 
 /* rounding of f to the Horner variable's 2^-(W-1) (and its saturation) */
-static double df_of(const fx_gen *G) { return G->FT > G->W - 1 ? 1.5 * ldexp(1.0, -(G->W - 1)) : 0; }
+static double df_of(const fx_gen *G) { return G->exp.ft > G->W - 1 ? 1.5 * ldexp(1.0, -(G->W - 1)) : 0; }
 
 static void budget16(fx_gen *G)
 {
     /* P >= 1: its absolute Horner error is a relative one; t's error
        moves 2^t by ln2 dt relatively; the final rounding is the 1/2 lsb */
     G->A = 0;
-    G->R = G->poly_err + G->arith + M_LN2 * G->DT16 * (1 + 1e-6);
-    int smin = G->Ep - G->out.exp - (int)G->KHI;
+    G->R = G->poly_err + G->arith + M_LN2 * G->exp.dt16 * (1 + 1e-6);
+    int smin = G->Ep - G->out.exp - (int)G->exp.khi;
     if (smin < -14)
         G->R = INFINITY;
 }
@@ -227,170 +215,169 @@ static void budget(fx_gen *G)
     }
     G->A = 0;
     G->R = G->poly_err + G->arith + M_LN2 * (G->dred + df_of(G)) * (1 + 1e-6);
-    int shmax = G->Ep - G->out.exp - (int)G->KLO, shmin = G->Ep - G->out.exp - (int)G->KHI;
+    int shmax = G->Ep - G->out.exp - (int)G->exp.klo, shmin = G->Ep - G->out.exp - (int)G->exp.khi;
     /* left shifts must stay inside 64 bits */
     if (shmin < -(62 - (G->Ep + 2)) || shmax > 4000)
         G->R = INFINITY;
 }
 
-static void emit16(fx_gen *G, fx_buf *b, int base2)
+static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
-    fx_buf body = {0}, horner = {0};
+    pf_buf body = {0}, horner = {0};
     int Ei = G->in.exp, Ep = G->Ep;
     int64_t omax = pf_type_max_stored(&G->out);
     int full = G->in.storage_bits == 16 && G->in.is_signed;
-    fx_put(&body, "    int16_t xc = (int16_t)x;");
-    if (G->LOCLAMP)
-        fx_printf(&body, "\n    xc = (int16_t)(xc < %lld ? %lld : xc);", (long long)G->XLO, (long long)G->XLO);
-    if (G->SAT)
-        fx_printf(&body, "\n    xc = (int16_t)(xc > %lld ? %lld : xc);", (long long)G->XHI, (long long)G->XHI);
-    fx_put(&body, "\n");
-    long long bias = (long long)(G->K0 << Ei);
+    pf_put(&body, "    int16_t xc = (int16_t)x;");
+    if (G->exp.loclamp)
+        pf_printf(&body, "\n    xc = (int16_t)(xc < %lld ? %lld : xc);", (long long)G->exp.xlo, (long long)G->exp.xlo);
+    if (G->exp.sat)
+        pf_printf(&body, "\n    xc = (int16_t)(xc > %lld ? %lld : xc);", (long long)G->exp.xhi, (long long)G->exp.xhi);
+    pf_put(&body, "\n");
+    long long bias = (long long)(G->exp.k0 << Ei);
     if (base2) {
-        fx_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + %lldu); /* (t + %lld) 2^%d */\n", bias,
-                  (long long)G->K0, Ei);
+        pf_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + %lldu); /* (t + %lld) 2^%d */\n", bias,
+                  (long long)G->exp.k0, Ei);
     } else {
-        const char *kb = fx_k16(G, G->B16, "B = round((log2(e) - 1) 2^15)");
-        const char *xo = G->LOCLAMP || G->SAT || !full ? fx_opaque16(G, "xc") : "xc";
-        fx_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + (uint16_t)pf_fx_mulhrs(%s, %s) + %lldu); /* (t + %lld) 2^%d, t = x log2(e) */\n",
-                  xo, kb, bias, (long long)G->K0, Ei);
+        const char *kb = fx_k16(G, G->exp.b16, "B = round((log2(e) - 1) 2^15)");
+        const char *xo = G->exp.loclamp || G->exp.sat || !full ? fx_opaque16(G, "xc") : "xc";
+        pf_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + (uint16_t)pf_fx_mulhrs(%s, %s) + %lldu); /* (t + %lld) 2^%d, t = x log2(e) */\n",
+                  xo, kb, bias, (long long)G->exp.k0, Ei);
     }
-    fx_printf(&body, "    uint16_t kb = (uint16_t)(tb >> %d); /* k + %lld */\n", Ei, (long long)G->K0);
+    pf_printf(&body, "    uint16_t kb = (uint16_t)(tb >> %d); /* k + %lld */\n", Ei, (long long)G->exp.k0);
     {
         char e[64], w[64];
         snprintf(e, sizeof e, "tb & 0x%x", (1u << Ei) - 1);
         snprintf(w, sizeof w, "2^%d: f to 2^-15 units", 15 - Ei);
         const char *k2 = fx_k16(G, (int64_t)1 << (15 - Ei), w);
-        fx_printf(&body, "    int16_t f = (int16_t)((%s) * %s); /* f in [0, 1), 2^-15 units (a product: see the array form) */\n",
+        pf_printf(&body, "    int16_t f = (int16_t)((%s) * %s); /* f in [0, 1), 2^-15 units (a product: see the array form) */\n",
                   e, k2);
     }
-    fx_put(&body, "    /* P(f) ~ 2^f: Horner in 16-bit words, one rounding per step */\n");
+    pf_put(&body, "    /* P(f) ~ 2^f: Horner in 16-bit words, one rounding per step */\n");
     fx_emit_horner(G, &horner, "f", "    ");
-    fx_put(&body, horner.s);
+    pf_put(&body, horner.s);
     /* P 2^k in output units: r = round(P 2^-s), s = Ep - Eo - k */
-    int smin = Ep - G->out.exp - (int)G->KHI, smax = Ep - G->out.exp - (int)G->KLO;
+    int smin = Ep - G->out.exp - (int)G->exp.khi, smax = Ep - G->out.exp - (int)G->exp.klo;
     char sexpr[64];
-    snprintf(sexpr, sizeof sexpr, "%lld - (int32_t)kb", (long long)(Ep - G->out.exp + G->K0));
-    fx_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
+    snprintf(sexpr, sizeof sexpr, "%lld - (int32_t)kb", (long long)(Ep - G->out.exp + G->exp.k0));
+    pf_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
     fx_emit_vshift16(&body, "(uint16_t)p", sexpr, smin, smax);
     snprintf(G->wide_text, sizeof G->wide_text,
              "the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit per-element "
              "shift; the error model does not need them)");
     /* overflow saturates through a mask: GCC 12 widens the whole loop to
        32-bit lanes for a select between a 16-bit comparison and r */
-    fx_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
+    pf_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
               (unsigned long long)omax);
-    if (G->SAT)
-        fx_printf(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x >= %lld)); /* all ones from the first overflowing input */\n"
-                         "    return (%s)((r16 & ~m) | (%lluu & m));", (long long)G->XSAT, G->ot, (unsigned long long)omax);
+    if (G->exp.sat)
+        pf_printf(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x >= %lld)); /* all ones from the first overflowing input */\n"
+                         "    return (%s)((r16 & ~m) | (%lluu & m));", (long long)G->exp.xsat, G->ot, (unsigned long long)omax);
     else
-        fx_printf(&body, "    return (%s)r16;", G->ot);
+        pf_printf(&body, "    return (%s)r16;", G->ot);
     char xsat[32], xlo[32];
-    snprintf(xsat, sizeof xsat, "%lld", (long long)G->XSAT);
-    snprintf(xlo, sizeof xlo, "%lld", (long long)G->XLO);
+    snprintf(xsat, sizeof xsat, "%lld", (long long)G->exp.xsat);
+    snprintf(xlo, sizeof xlo, "%lld", (long long)G->exp.xlo);
     const char *kv[] = {"FUNC", base2 ? "exp2" : "exp", "TDEF", base2 ? "x" : "x log2(e)", "XSAT", xsat, "XLO", xlo,
                         "NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};
-    fx_subst(b, fx_template("fx_exp16.c"), kv);
+    pf_subst(b, pf_template("fx_exp16.c"), kv);
     free(body.s);
     free(horner.s);
 }
 
-static void emit(fx_gen *G, fx_buf *b, int base2)
+static void emit(fx_gen *G, pf_buf *b, int base2)
 {
     if (G->W == 16) {
         emit16(G, b, base2);
         return;
     }
-    fx_buf clamp = {0}, split = {0}, horner = {0}, out = {0};
-    int W = G->W, Ei = G->in.exp, Ft = (int)G->FT;
+    pf_buf clamp = {0}, split = {0}, horner = {0}, out = {0};
+    int W = G->W, Ei = G->in.exp, Ft = (int)G->exp.ft;
     /* clamp */
-    fx_put(&clamp, "    int64_t xc = x;");
-    if (G->LOCLAMP)
-        fx_printf(&clamp, "\n    xc = xc < %lld ? %lld : xc;", (long long)G->XLO, (long long)G->XLO);
-    if (G->SAT)
-        fx_printf(&clamp, "\n    xc = xc > %lld ? %lld : xc;", (long long)G->XHI, (long long)G->XHI);
+    pf_put(&clamp, "    int64_t xc = x;");
+    if (G->exp.loclamp)
+        pf_printf(&clamp, "\n    xc = xc < %lld ? %lld : xc;", (long long)G->exp.xlo, (long long)G->exp.xlo);
+    if (G->exp.sat)
+        pf_printf(&clamp, "\n    xc = xc > %lld ? %lld : xc;", (long long)G->exp.xhi, (long long)G->exp.xhi);
     /* t 2^Ft, biased by K0 2^Ft so that it is >= 0; kb = k + K0 */
     if (base2 && Ei <= 0) {
-        fx_printf(&split, "    /* x is an integer: k = x, f = 0 */\n    uint64_t kb = (uint64_t)(xc * %lld + %lld);\n",
-                  (long long)1 << -Ei, (long long)G->K0);
-        fx_printf(&split, "    %s f = 0;", G->wt);
+        pf_printf(&split, "    /* x is an integer: k = x, f = 0 */\n    uint64_t kb = (uint64_t)(xc * %lld + %lld);\n",
+                  (long long)1 << -Ei, (long long)G->exp.k0);
+        pf_printf(&split, "    %s f = 0;", G->wt);
     } else {
         if (base2)
-            fx_printf(&split, "    uint64_t tb = (uint64_t)(xc + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
-                      (long long)(G->K0 << Ft), (long long)G->K0, Ft);
-        else if (G->XLO < INT32_MIN || G->XHI > INT32_MAX)
-            fx_printf(&split,
+            pf_printf(&split, "    uint64_t tb = (uint64_t)(xc + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
+                      (long long)(G->exp.k0 << Ft), (long long)G->exp.k0, Ft);
+        else if (G->exp.xlo < INT32_MIN || G->exp.xhi > INT32_MAX)
+            pf_printf(&split,
                       "    uint64_t tb = (uint64_t)(xc * INT64_C(%lld) + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
-                      (long long)G->CEXP, (long long)(G->K0 << Ft), (long long)G->K0, Ft);
-        else if (G->CEXP <= INT32_MAX)
-            fx_printf(&split,
+                      (long long)G->exp.cexp, (long long)(G->exp.k0 << Ft), (long long)G->exp.k0, Ft);
+        else if (G->exp.cexp <= INT32_MAX)
+            pf_printf(&split,
                       "    uint64_t tb = (uint64_t)((int64_t)(int32_t)xc * %lld + INT64_C(%lld)); /* (t + %lld) 2^%d */\n",
-                      (long long)G->CEXP, (long long)(G->K0 << Ft), (long long)G->K0, Ft);
+                      (long long)G->exp.cexp, (long long)(G->exp.k0 << Ft), (long long)G->exp.k0, Ft);
         else
             /* x C from two 32x32-bit products (C = CH 2^31 + CL), which
                vectorize where a 64x64-bit product does not; the sum is
                in [0, 2^63), so its value mod 2^64 is the value */
-            fx_printf(&split,
+            pf_printf(&split,
                       "    uint64_t tb = ((uint64_t)((int64_t)(int32_t)xc * %lld) << 31) + (uint64_t)((int64_t)(int32_t)xc * %lld)\n"
                       "                  + UINT64_C(%lld); /* (t + %lld) 2^%d, t = x %lld 2^-%d */\n",
-                      (long long)(G->CEXP >> 31), (long long)(G->CEXP & 0x7fffffff), (long long)(G->K0 << Ft),
-                      (long long)G->K0, Ft, (long long)G->CEXP, (int)G->FT - G->in.exp);
-        fx_printf(&split, "    uint64_t kb = tb >> %d; /* k + %lld */\n", Ft, (long long)G->K0);
-        fx_printf(&split, "    uint64_t fr = tb & UINT64_C(0x%llx); /* f 2^%d */\n",
+                      (long long)(G->exp.cexp >> 31), (long long)(G->exp.cexp & 0x7fffffff), (long long)(G->exp.k0 << Ft),
+                      (long long)G->exp.k0, Ft, (long long)G->exp.cexp, (int)G->exp.ft - G->in.exp);
+        pf_printf(&split, "    uint64_t kb = tb >> %d; /* k + %lld */\n", Ft, (long long)G->exp.k0);
+        pf_printf(&split, "    uint64_t fr = tb & UINT64_C(0x%llx); /* f 2^%d */\n",
                   (unsigned long long)(((uint64_t)1 << Ft) - 1), Ft);
         if (Ft <= W - 1)
-            fx_printf(&split, "    %s f = (%s)(fr << %d); /* f in [0, 1), 2^-%d units */", G->wt, G->wt, W - 1 - Ft,
+            pf_printf(&split, "    %s f = (%s)(fr << %d); /* f in [0, 1), 2^-%d units */", G->wt, G->wt, W - 1 - Ft,
                       W - 1);
         else
-            fx_printf(&split,
+            pf_printf(&split,
                       "    uint64_t f1 = pf_fx_rne_u(fr, %d);\n"
                       "    %s f = (%s)(f1 < UINT64_C(0x%llx) ? f1 : UINT64_C(0x%llx)); /* f in [0, 1), 2^-%d units */",
                       Ft - (W - 1), G->wt, G->wt, (unsigned long long)(((uint64_t)1 << (W - 1)) - 1),
                       (unsigned long long)(((uint64_t)1 << (W - 1)) - 1), W - 1);
     }
     fx_emit_horner(G, &horner, "f", "    ");
-    if (horner.n && horner.s[horner.n - 1] == '\n')
-        horner.s[--horner.n] = 0;
+    pf_chomp(&horner);
     /* P 2^k in output units: shift right by sh = Ep - Eo - k */
     int base = G->Ep - G->out.exp;
-    int shmin = base - (int)G->KHI, shmax = base - (int)G->KLO;
+    int shmin = base - (int)G->exp.khi, shmax = base - (int)G->exp.klo;
     int64_t omax = pf_type_max_stored(&G->out);
-    long long bk = (long long)base + (long long)G->K0; /* sh = bk - kb */
+    long long bk = (long long)base + (long long)G->exp.k0; /* sh = bk - kb */
     const char *pcast = "(uint64_t)(p > 0 ? p : 0)";
     if (shmin >= 1) {
-        fx_printf(&out, "    uint64_t sh = %lld - kb;\n", bk);
-        fx_printf(&out, "    uint64_t r = pf_fx_rne_u(%s, %s);\n", pcast, shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
+        pf_printf(&out, "    uint64_t sh = %lld - kb;\n", bk);
+        pf_printf(&out, "    uint64_t r = pf_fx_rne_u(%s, %s);\n", pcast, shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
     } else {
-        fx_printf(&out, "    int64_t sh = %lld - (int64_t)kb;\n", bk);
+        pf_printf(&out, "    int64_t sh = %lld - (int64_t)kb;\n", bk);
         if (shmax <= 0)
-            fx_printf(&out, "    uint64_t r = %s << -sh;\n", pcast);
+            pf_printf(&out, "    uint64_t r = %s << -sh;\n", pcast);
         else
-            fx_printf(&out,
+            pf_printf(&out,
                       "    uint64_t r = sh >= 1 ? pf_fx_rne_u(%s, (uint64_t)(sh < 63 ? sh : 63))\n"
                       "                         : %s << (sh > -62 ? -sh : 62);\n",
                       pcast, pcast);
     }
-    fx_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
-    if (G->SAT)
-        fx_printf(&out, "    return (%s)(x >= %lld ? %lluu : r);", G->ot, (long long)G->XSAT, (unsigned long long)omax);
+    pf_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
+    if (G->exp.sat)
+        pf_printf(&out, "    return (%s)(x >= %lld ? %lluu : r);", G->ot, (long long)G->exp.xsat, (unsigned long long)omax);
     else
-        fx_printf(&out, "    return (%s)r;", G->ot);
+        pf_printf(&out, "    return (%s)r;", G->ot);
     char xsat[32], xlo[32], tdef[64];
-    snprintf(xsat, sizeof xsat, "%lld", (long long)G->XSAT);
-    snprintf(xlo, sizeof xlo, "%lld", (long long)G->XLO);
+    snprintf(xsat, sizeof xsat, "%lld", (long long)G->exp.xsat);
+    snprintf(xlo, sizeof xlo, "%lld", (long long)G->exp.xlo);
     snprintf(tdef, sizeof tdef, "%s", base2 ? "x" : "x log2(e)");
     const char *kv[] = {"FUNC", base2 ? "exp2" : "exp", "TDEF", tdef, "XSAT", xsat, "XLO", xlo, "NAME", G->name,
                         "IT", G->it, "OT", G->ot, "CLAMP_CODE", clamp.s, "SPLIT_CODE", split.s, "HORNER", horner.s,
                         "OUT_TYPE", G->out_text, "OUT_CODE", out.s, NULL};
-    fx_subst(b, fx_template("fx_exp.c"), kv);
+    pf_subst(b, pf_template("fx_exp.c"), kv);
     free(clamp.s);
     free(split.s);
     free(horner.s);
     free(out.s);
 }
 
-static void emit_exp(fx_gen *G, fx_buf *b) { emit(G, b, 0); }
-static void emit_exp2(fx_gen *G, fx_buf *b) { emit(G, b, 1); }
+static void emit_exp(fx_gen *G, pf_buf *b) { emit(G, b, 0); }
+static void emit_exp2(fx_gen *G, pf_buf *b) { emit(G, b, 1); }
 
 const fx_func fx_func_exp = {
     .name = "exp", .ref = PF_EXP, .tmpl = "fx_exp", .target_text = "2^t", .g = g_exp2, .a = 0, .b = 1,

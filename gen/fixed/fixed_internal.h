@@ -1,9 +1,10 @@
-/* Internals of the fixed-point generator (gen/fixed_*.c): one generation's
+/* Internals of the fixed-point generator (gen/fixed/fixed_*.c): one generation's
  * state, the per-function hooks, and the shared helpers. */
 #ifndef PF_FIXED_INTERNAL_H
 #define PF_FIXED_INTERNAL_H
 
 #include "bitwidth.h"
+#include "emit.h"
 #include "fit.h"
 #include "fixedtype.h"
 #include "pfref.h"
@@ -14,19 +15,6 @@
 
 #define FX_MAXC (FIT_MAX_ORDER + 1)
 #define FX_MAX_SEARCH 24 /* highest order tried when searching */
-
-/* ---- a growable string ---- */
-typedef struct {
-    char *s;
-    size_t n, cap;
-} fx_buf;
-
-void fx_put(fx_buf *b, const char *s);
-__attribute__((format(printf, 2, 3))) void fx_printf(fx_buf *b, const char *fmt, ...);
-/* the embedded template gen/templates/<name>.in, or NULL */
-const char *fx_template(const char *name);
-/* text with @KEY@ replaced from kv (NULL-terminated key, value pairs) */
-void fx_subst(fx_buf *b, const char *text, const char *const *kv);
 
 typedef struct fx_gen fx_gen;
 
@@ -49,8 +37,52 @@ typedef struct {
     const char *con_text;
     int (*prepare)(fx_gen *G, char *err, size_t errlen);
     void (*budget)(fx_gen *G);
-    void (*emit)(fx_gen *G, fx_buf *body);
+    void (*emit)(fx_gen *G, pf_buf *body);
 } fx_func;
+
+/* The reductions' constants, one struct per function family, filled by
+ * its prepare() (gen/fixed/fixed_<family>.c says how each is derived). */
+typedef struct {               /* sin, cos */
+    int64_t c64;               /* kind 1: round(2/pi 2^(62-Ei)) mod 2^64 */
+    int sh;                    /* kind 0: Ei + 1, the shift of x (2/pi 2^31) to 2^-30 */
+    int64_t a16, b16;          /* kind 2, 16-bit lanes: w = x A + mulhrs(x, B) */
+} fx_trig_red;
+
+typedef struct {               /* exp, exp2 */
+    int64_t xlo, xhi;          /* clamp range of the stored input */
+    int64_t xsat;              /* first saturating input, or > max */
+    int64_t cexp;              /* exp: round(log2e 2^(Ft+Ei)) */
+    int64_t klo, khi;          /* range of k = floor(t) */
+    int64_t k0;                /* bias in units of 2^Ft */
+    int ft;                    /* Ft, the fraction bits of t */
+    int loclamp;               /* inputs below xlo exist: clamp them */
+    int sat;                   /* inputs from xsat up exist: saturate them */
+    int64_t b16;               /* 16-bit lanes, exp: round((log2(e) - 1) 2^15) */
+    double dt16;               /* 16-bit lanes: |error of t| */
+} fx_exp_red;
+
+typedef struct {               /* log, log2 */
+    int64_t kz;                /* round(ln2 2^Ez) or 2^Ez */
+    int64_t emax;              /* max |e| */
+    int64_t k15;               /* 16-bit lanes, log: round(ln2 2^15) */
+    int ez;                    /* Ez: e K + P summed at 2^-Ez in 64 bits */
+    int a16;                   /* 16-bit lanes: e K and P summed at 2^-a */
+    double dk16;               /* 16-bit lanes: |error of e K| */
+    int ez32;                  /* 16-bit lanes, wide sum: e K + P at 2^-Ez32 in 32 bits */
+    int64_t kz32;              /* round(ln2 2^Ez32) or 2^Ez32 */
+    int wide;                  /* 16-bit lanes: 1 if the sum is in 32-bit lanes */
+} fx_log_red;
+
+typedef struct {               /* sqrt */
+    int64_t qs;                /* round(sqrt2 2^Eq) */
+    int64_t j0;                /* bias: e + 2 j0 >= 0 */
+    int64_t jlo, jhi;          /* range of j = floor(e / 2) */
+    int eq;                    /* Eq: q = sqrt2 or 1 in 2^-Eq units */
+    int corr;                  /* exact: emit the correction */
+    int gsh;                   /* G = 2 Eo - Ei + 2 */
+    int64_t qs15;              /* 16-bit lanes: round(2^15 / sqrt2) */
+    double dq16;               /* 16-bit lanes: relative error of P / sqrt2 */
+} fx_sqrt_red;
 
 struct fx_gen {
     const fx_func *fn;
@@ -94,11 +126,15 @@ struct fx_gen {
     double bound_lsb;          /* 0.5 + (R fmax + A) / lsb */
     double dred;               /* reduction's own error (function's units) */
 
-    /* function-specific reduction parameters */
+    /* function-specific reduction parameters: kind, and the constants of
+       the function's reduction (the member its prepare() fills) */
     int kind;                  /* reduction variant */
-    int64_t k[16];
-    int s[16];
-    double d[8];
+    union {
+        fx_trig_red trig;
+        fx_exp_red exp;
+        fx_log_red log;
+        fx_sqrt_red sqrt;
+    };
     char red_text[600];
     char sat_text[300];        /* the defined saturations, for the provenance */
     char bound_note[160];      /* appended to the error bound's line */
@@ -119,21 +155,21 @@ struct fx_gen {
     char sweep_desc[200];
 };
 
-/* the functions (gen/fixed_trig.c, fixed_exp.c, fixed_log.c, fixed_sqrt.c) */
+/* the functions (gen/fixed/fixed_trig.c, fixed_exp.c, fixed_log.c, fixed_sqrt.c) */
 extern const fx_func fx_func_sin, fx_func_cos, fx_func_exp, fx_func_exp2, fx_func_log, fx_func_log2,
     fx_func_sqrt;
 const fx_func *fx_func_find(const char *name);
 const char *fx_func_list(void);
 
-/* ---- helpers (gen/fixed_core.c) ---- */
+/* ---- helpers (gen/fixed/fixed_core.c) ---- */
 double fx_lsb(const fx_gen *G);                 /* output lsb 2^-Eo */
 /* does the error model R |f| + A meet the variant's bound? */
 int fx_within(const fx_gen *G, double R, double A);
 int fx_bitlen(uint64_t v);
-/* "INT64_C(-123)" or "-123" for the kernel's word */
-void fx_lit(char *buf, size_t n, int64_t v, int w64);
+/* "INT64_C(-123)" (w64) or "-123" for the kernel's word */
+#define fx_lit(buf, n, v, w64) pf_int_lit(buf, n, v, (w64) ? PF_LIT_INT64 : PF_LIT_PLAIN)
 /* the Horner block: "p = C_m; p = mul(p, x, sh) + C_j; ..." on variable x */
-void fx_emit_horner(fx_gen *G, fx_buf *b, const char *x, const char *indent);
+void fx_emit_horner(fx_gen *G, pf_buf *b, const char *x, const char *indent);
 /* 16-bit lanes: "k[i]" for the constant v (appended to G's table) */
 const char *fx_k16(fx_gen *G, int64_t v, const char *what);
 /* bound on max |P_k(x)| over [0, 1] for the partial Horner sums of the
@@ -143,26 +179,29 @@ void fx_partial_max(const double *a, int m, double *pmax);
    expr's range from GCC (see fx_tail16.c.in) */
 const char *fx_opaque16(fx_gen *G, const char *expr);
 /* 16-bit lanes: "return (OT)r" with r in [lo, hi] clamped to the output */
-void fx_emit_return16(const fx_gen *G, fx_buf *b, const char *r, int64_t lo, int64_t hi);
+void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int64_t hi);
 /* 16-bit lanes: a staged normalization of ux (unsigned, nb significant
    bits at most) to u with bit 15 set and n = bitlen - 1, for log/sqrt */
-void fx_emit_norm16(fx_buf *b, int nb);
+void fx_emit_norm16(pf_buf *b, int nb);
+/* 32/64-bit words: ux = x (x > 0, stored in at most 32 bits), n =
+   bitlen(ux) - 1 and t = ux 2^-n - 1 in [0, 1), for log/sqrt */
+void fx_emit_norm(const fx_gen *G, pf_buf *b);
 /* 16-bit lanes: r = round(a 2^-s) (ties up) in 32-bit lanes for the
    variable shift s = sexpr in [smin, smax] (smin may be negative) */
-void fx_emit_vshift16(fx_buf *b, const char *a, const char *sexpr, int smin, int smax);
+void fx_emit_vshift16(pf_buf *b, const char *a, const char *sexpr, int smin, int smax);
 /* description of the formats, for the provenance */
 void fx_formats_text(const fx_gen *G, char *buf, size_t n);
 /* largest value of the output type, as a double */
 double fx_out_max(const fx_gen *G);
 
-/* the fixed-point front end's --help text (gen/fixedgen.c) */
+/* the fixed-point front end's --help text (gen/fixed/fixedgen.c) */
 const char *fx_usage_text(void);
 
-/* gradient noise (gen/fixed_noise.c): fx_noise_is("noise3") etc.; the
- * generator is pf_run_noise (gen/request.h) */
+/* gradient noise (gen/noise/fixed_noise.c): fx_noise_is("noise3") etc.; the
+ * generator is pf_run_noise (gen/front/request.h) */
 int fx_noise_is(const char *func);
 
-/* the whole generation (gen/fixed_core.c) */
+/* the whole generation (gen/fixed/fixed_core.c) */
 int fx_generate(fx_gen *G, int sweep, char *err, size_t errlen);
 void fx_report_text(FILE *o, const fx_gen *G);
 void fx_report_json(FILE *o, const fx_gen *G);

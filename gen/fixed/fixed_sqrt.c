@@ -27,15 +27,6 @@ static void g_sqrt1p(mpfr_t y, const mpfr_t t, const void *ctx)
     mpfr_clear(a);
 }
 
-#define QS k[0]     /* round(sqrt2 2^Eq) */
-#define J0 k[1]     /* bias: e + 2 J0 >= 0 */
-#define JLO k[2]
-#define JHI k[3]
-#define EQ s[0]
-#define CORR s[1]   /* exact: emit the correction */
-#define GSH s[2]    /* G = 2 Eo - Ei + 2 */
-#define QS15 k[4]   /* 16-bit lanes: round(2^15 / sqrt2) */
-#define DQ16 d[0]   /* 16-bit lanes: relative error of P / sqrt2 */
 
 static int prepare(fx_gen *G, char *err, size_t errlen)
 {
@@ -47,9 +38,9 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
     int64_t imax = pf_type_max_stored(&G->in), omax = pf_type_max_stored(&G->out);
     int nb = fx_bitlen((uint64_t)imax);
     int64_t elo = -Ei, ehi = nb - 1 - Ei;
-    G->JLO = elo >= 0 ? elo / 2 : -((-elo + 1) / 2);
-    G->JHI = ehi >= 0 ? ehi / 2 : -((-ehi + 1) / 2);
-    G->J0 = G->JLO < 0 ? -G->JLO : 0;
+    G->sqrt.jlo = elo >= 0 ? elo / 2 : -((-elo + 1) / 2);
+    G->sqrt.jhi = ehi >= 0 ? ehi / 2 : -((-ehi + 1) / 2);
+    G->sqrt.j0 = G->sqrt.jlo < 0 ? -G->sqrt.jlo : 0;
     if (W == 16) {
         /* 16-bit lanes: the fast variant only (the exact one's correction
            to the correctly rounded result needs exact 32-bit squares) */
@@ -58,16 +49,16 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
             return -2;
         }
     }
-    G->EQ = W == 16 ? 15 : W - 2;
+    G->sqrt.eq = W == 16 ? 15 : W - 2;
     mpfr_t a;
     mpz_t z;
     mpfr_init2(a, 256);
     mpz_init(z);
     mpfr_set_ui(a, 2, MPFR_RNDN);
     mpfr_sqrt(a, a, MPFR_RNDN);
-    mpfr_mul_2si(a, a, G->EQ, MPFR_RNDN);
+    mpfr_mul_2si(a, a, G->sqrt.eq, MPFR_RNDN);
     mpfr_get_z(z, a, MPFR_RNDN);
-    G->QS = (int64_t)mpz_get_si(z);
+    G->sqrt.qs = (int64_t)mpz_get_si(z);
     mpz_clear(z);
     mpfr_clear(a);
     double inmax = ldexp((double)imax, -Ei);
@@ -83,18 +74,18 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
         mpfr_t r;
         mpfr_init2(r, 256);
         mpfr_rint(r, a, MPFR_RNDN);
-        G->QS15 = (int64_t)mpfr_get_si(r, MPFR_RNDN);
+        G->sqrt.qs15 = (int64_t)mpfr_get_si(r, MPFR_RNDN);
         mpfr_sub(r, r, a, MPFR_RNDN);
-        G->DQ16 = fabs(mpfr_get_d(r, MPFR_RNDN)) / mpfr_get_d(a, MPFR_RNDN);
+        G->sqrt.dq16 = fabs(mpfr_get_d(r, MPFR_RNDN)) / mpfr_get_d(a, MPFR_RNDN);
         mpfr_clears(a, r, (mpfr_ptr)0);
     }
     snprintf(G->sat_text, sizeof G->sat_text, "sqrt(x) for x < 0 (undefined) gives 0");
     G->bound_note[0] = 0;
     /* the correction needs exact squares in 64 bits */
     int gs = 2 * Eo - Ei + 2, bo = fx_bitlen((uint64_t)omax);
-    G->GSH = gs;
-    G->CORR = G->exact && bo <= 31 && (gs >= 0 ? nb + gs <= 64 : 2 * (bo + 1) - gs <= 64);
-    if (G->CORR)
+    G->sqrt.gsh = gs;
+    G->sqrt.corr = G->exact && bo <= 31 && (gs >= 0 ? nb + gs <= 64 : 2 * (bo + 1) - gs <= 64);
+    if (G->sqrt.corr)
         snprintf(G->bound_note, sizeof G->bound_note,
                  "the +-1 correction then makes the result correctly rounded (at most 0.5 LSB)");
     if (W == 16) {
@@ -103,14 +94,14 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
                  "selects), t in [0, 1) the 15 bits below the leading one (exact); sqrt(x) = 2^ceil(e/2) P(t) "
                  "(/ sqrt2 if e is odd: P round(2^15/sqrt2) 2^-15 = P %lld 2^-15 by the rounding multiply-high, "
                  "MPFR); x <= 0 -> 0",
-                 Ei, (long long)G->QS15);
+                 Ei, (long long)G->sqrt.qs15);
         return 0;
     }
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (leading-zero count), t in [0, 1) exact; "
              "sqrt(x) = 2^floor(e/2) (sqrt2 if e is odd) P(t), sqrt2 = %lld 2^-%d (MPFR)%s; x <= 0 -> 0",
-             Ei, (long long)G->QS, (int)G->EQ,
-             G->CORR ? "; then corrected by +-1 with exact squares to the correctly rounded result (ties to even)" : "");
+             Ei, (long long)G->sqrt.qs, (int)G->sqrt.eq,
+             G->sqrt.corr ? "; then corrected by +-1 with exact squares to the correctly rounded result (ties to even)" : "");
     return 0;
 }
 
@@ -119,8 +110,8 @@ static void budget16(fx_gen *G)
     /* P >= 1: its absolute Horner error is relative; for odd e, P/sqrt2
        is rounded to P's lsb (relative 2^-(Ep+1) sqrt2) with QS's error */
     G->A = 0;
-    G->R = G->poly_err + G->arith + ldexp(0.5, -G->Ep) * M_SQRT2 + G->DQ16;
-    int smin = G->Ep - G->out.exp - (int)((G->JHI * 2 + 2) / 2);
+    G->R = G->poly_err + G->arith + ldexp(0.5, -G->Ep) * M_SQRT2 + G->sqrt.dq16;
+    int smin = G->Ep - G->out.exp - (int)((G->sqrt.jhi * 2 + 2) / 2);
     if (smin < -14)
         G->R = INFINITY;
 }
@@ -132,117 +123,111 @@ static void budget(fx_gen *G)
         return;
     }
     G->A = 0;
-    G->R = G->poly_err + G->arith + ldexp(0.5, -(int)G->EQ) / M_SQRT2 + ldexp(0.5, -G->Ep);
+    G->R = G->poly_err + G->arith + ldexp(0.5, -(int)G->sqrt.eq) / M_SQRT2 + ldexp(0.5, -G->Ep);
     int base = G->Ep - G->out.exp;
-    if (base - (int)G->JHI < -(62 - (G->Ep + 2)))
+    if (base - (int)G->sqrt.jhi < -(62 - (G->Ep + 2)))
         G->R = INFINITY;
 }
 
 /* ceil(e / 2) for e = 2 j0 + ..., as in prepare (floor for negative) */
 static int ceil_half(int e) { return e >= 0 ? (e + 1) / 2 : -((-e) / 2); }
 
-static void emit16(fx_gen *G, fx_buf *b)
+static void emit16(fx_gen *G, pf_buf *b)
 {
-    fx_buf body = {0}, horner = {0};
+    pf_buf body = {0}, horner = {0};
     int Ei = G->in.exp, Eo = G->out.exp, Ep = G->Ep;
     int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in));
     int64_t omax = pf_type_max_stored(&G->out);
     int elo = -Ei, ehi = nb - 1 - Ei;
     int jlo = ceil_half(elo), jhi = ceil_half(ehi);
     int j0 = elo < 0 ? (-elo + 1) / 2 : 0; /* e + 2 j0 >= 0 */
-    fx_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
+    pf_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
     fx_emit_norm16(&body, nb);
-    fx_put(&body, "\n");
-    fx_printf(&body, "    uint16_t eb = (uint16_t)(n + %d); /* e + 2 j0 >= 0, e = n - %d, j0 = %d */\n", 2 * j0 - Ei, Ei, j0);
-    fx_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", fx_opaque16(G, "t"));
-    fx_put(&body, "    /* P(t) ~ sqrt(1 + t): Horner in 16-bit words, one rounding per step */\n");
+    pf_put(&body, "\n");
+    pf_printf(&body, "    uint16_t eb = (uint16_t)(n + %d); /* e + 2 j0 >= 0, e = n - %d, j0 = %d */\n", 2 * j0 - Ei, Ei, j0);
+    pf_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", fx_opaque16(G, "t"));
+    pf_put(&body, "    /* P(t) ~ sqrt(1 + t): Horner in 16-bit words, one rounding per step */\n");
     fx_emit_horner(G, &horner, "tq", "    ");
-    fx_put(&body, horner.s);
-    fx_printf(&body, "    int16_t pq = pf_fx_mulhrs(p, %s); /* P / sqrt2 (computed for every element: branch-free) */\n",
-              fx_k16(G, G->QS15, "round(2^15 / sqrt2)"));
-    fx_put(&body, "    int16_t y = (eb & 1) ? pq : p; /* P, or P / sqrt2 for odd e: sqrt(x) = 2^ceil(e/2) y */\n");
+    pf_put(&body, horner.s);
+    pf_printf(&body, "    int16_t pq = pf_fx_mulhrs(p, %s); /* P / sqrt2 (computed for every element: branch-free) */\n",
+              fx_k16(G, G->sqrt.qs15, "round(2^15 / sqrt2)"));
+    pf_put(&body, "    int16_t y = (eb & 1) ? pq : p; /* P, or P / sqrt2 for odd e: sqrt(x) = 2^ceil(e/2) y */\n");
     int smin = Ep - Eo - jhi, smax = Ep - Eo - jlo;
     char sexpr[64];
     snprintf(sexpr, sizeof sexpr, "%d - (int32_t)((eb + 1) >> 1)", Ep - Eo + j0);
-    fx_printf(&body, "    /* y 2^ceil(e/2) rounded once to the output, s = %d - ceil(e/2) in [%d, %d] */\n", Ep - Eo, smin,
+    pf_printf(&body, "    /* y 2^ceil(e/2) rounded once to the output, s = %d - ceil(e/2) in [%d, %d] */\n", Ep - Eo, smin,
               smax);
     fx_emit_vshift16(&body, "(uint16_t)y", sexpr, smin, smax);
     snprintf(G->wide_text, sizeof G->wide_text,
              "the scaling by 2^ceil(e/2) is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit "
              "per-element shift; the error model does not need them)");
-    fx_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
+    pf_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
               (unsigned long long)omax);
-    fx_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x > 0)); /* x <= 0 gives 0, through a mask */\n");
-    fx_printf(&body, "    return (%s)(r16 & m);", G->ot);
+    pf_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x > 0)); /* x <= 0 gives 0, through a mask */\n");
+    pf_printf(&body, "    return (%s)(r16 & m);", G->ot);
     const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};
-    fx_subst(b, fx_template("fx_sqrt16.c"), kv);
+    pf_subst(b, pf_template("fx_sqrt16.c"), kv);
     free(body.s);
     free(horner.s);
 }
 
-static void emit(fx_gen *G, fx_buf *b)
+static void emit(fx_gen *G, pf_buf *b)
 {
     if (G->W == 16) {
         emit16(G, b);
         return;
     }
-    fx_buf norm = {0}, horner = {0}, out = {0};
+    pf_buf norm = {0}, horner = {0}, out = {0};
     int W = G->W, Ei = G->in.exp;
     int64_t omax = pf_type_max_stored(&G->out);
-    fx_put(&norm, "    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */\n"
-                  "    int n = pf_fx_bitlen(ux) - 1;\n");
-    if (W == 32)
-        fx_put(&norm, "    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */");
-    else
-        fx_put(&norm, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
+    fx_emit_norm(G, &norm);
     fx_emit_horner(G, &horner, "t", "    ");
-    if (horner.n && horner.s[horner.n - 1] == '\n')
-        horner.s[--horner.n] = 0;
+    pf_chomp(&horner);
     char qs[64], q1[64];
-    fx_lit(qs, sizeof qs, G->QS, W == 64);
-    fx_lit(q1, sizeof q1, (int64_t)1 << G->EQ, W == 64);
-    fx_printf(&out, "    uint64_t eb = (uint64_t)(n + %lld); /* e + 2 J0 = n - %d + 2 J0 >= 0, J0 = %lld */\n",
-              (long long)(2 * G->J0 - Ei), Ei, (long long)G->J0);
-    fx_printf(&out, "    %s q = (eb & 1) ? %s : %s; /* sqrt2 or 1, 2^-%d units */\n", G->wt, qs, q1, (int)G->EQ);
-    fx_printf(&out, "    int64_t y = %s(p, q, %d); /* P q, 2^-%d units */\n", G->mul, (int)G->EQ, G->Ep);
+    fx_lit(qs, sizeof qs, G->sqrt.qs, W == 64);
+    fx_lit(q1, sizeof q1, (int64_t)1 << G->sqrt.eq, W == 64);
+    pf_printf(&out, "    uint64_t eb = (uint64_t)(n + %lld); /* e + 2 J0 = n - %d + 2 J0 >= 0, J0 = %lld */\n",
+              (long long)(2 * G->sqrt.j0 - Ei), Ei, (long long)G->sqrt.j0);
+    pf_printf(&out, "    %s q = (eb & 1) ? %s : %s; /* sqrt2 or 1, 2^-%d units */\n", G->wt, qs, q1, (int)G->sqrt.eq);
+    pf_printf(&out, "    int64_t y = %s(p, q, %d); /* P q, 2^-%d units */\n", G->mul, (int)G->sqrt.eq, G->Ep);
     int base = G->Ep - G->out.exp;
-    int shmin = base - (int)G->JHI, shmax = base - (int)G->JLO;
-    long long bj = (long long)base + (long long)G->J0; /* sh = Ep - Eo - floor(e/2) = bj - (eb >> 1) */
+    int shmin = base - (int)G->sqrt.jhi, shmax = base - (int)G->sqrt.jlo;
+    long long bj = (long long)base + (long long)G->sqrt.j0; /* sh = Ep - Eo - floor(e/2) = bj - (eb >> 1) */
     if (shmin >= 1) {
-        fx_printf(&out, "    uint64_t sh = %lld - (eb >> 1);\n", bj);
-        fx_printf(&out, "    uint64_t r = pf_fx_rne_u((uint64_t)y, %s);\n", shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
+        pf_printf(&out, "    uint64_t sh = %lld - (eb >> 1);\n", bj);
+        pf_printf(&out, "    uint64_t r = pf_fx_rne_u((uint64_t)y, %s);\n", shmax > 63 ? "sh < 63 ? sh : 63" : "sh");
     } else {
-        fx_printf(&out, "    int64_t sh = %lld - (int64_t)(eb >> 1);\n", bj);
+        pf_printf(&out, "    int64_t sh = %lld - (int64_t)(eb >> 1);\n", bj);
         if (shmax <= 0)
-            fx_put(&out, "    uint64_t r = (uint64_t)y << -sh;\n");
+            pf_put(&out, "    uint64_t r = (uint64_t)y << -sh;\n");
         else
-            fx_put(&out, "    uint64_t r = sh >= 1 ? pf_fx_rne_u((uint64_t)y, (uint64_t)(sh < 63 ? sh : 63))\n"
+            pf_put(&out, "    uint64_t r = sh >= 1 ? pf_fx_rne_u((uint64_t)y, (uint64_t)(sh < 63 ? sh : 63))\n"
                          "                         : (uint64_t)y << (sh > -62 ? -sh : 62);\n");
     }
-    fx_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
-    if (G->CORR) {
-        int gs = (int)G->GSH;
-        fx_put(&out, "    /* correctly rounded: R is right when (2R-1)^2 < 4N < (2R+1)^2, 4N = x 2^G exactly */\n");
+    pf_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
+    if (G->sqrt.corr) {
+        int gs = (int)G->sqrt.gsh;
+        pf_put(&out, "    /* correctly rounded: R is right when (2R-1)^2 < 4N < (2R+1)^2, 4N = x 2^G exactly */\n");
         /* 2R +- 1 < 2^32 (bo <= 31): squares from 32x32-bit products; when
            everything stays below 2^63 the compares are signed (AVX2 has no
            unsigned 64-bit compare) */
         int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in)), bo = fx_bitlen((uint64_t)omax);
         int sgn = (gs >= 0 ? nb + gs <= 62 && 2 * (bo + 1) <= 62 : 2 * (bo + 1) - gs <= 62);
         const char *ct = sgn ? "int64_t" : "uint64_t";
-        fx_put(&out, "    uint32_t a1 = (uint32_t)(2 * r + 1), a0 = (uint32_t)(2 * r - 1);\n");
+        pf_put(&out, "    uint32_t a1 = (uint32_t)(2 * r + 1), a0 = (uint32_t)(2 * r - 1);\n");
         if (gs >= 0)
-            fx_printf(&out, "    %s n4 = (%s)((uint64_t)ux << %d), hi2 = (%s)((uint64_t)a1 * a1), lo2 = (%s)((uint64_t)a0 * a0);\n",
+            pf_printf(&out, "    %s n4 = (%s)((uint64_t)ux << %d), hi2 = (%s)((uint64_t)a1 * a1), lo2 = (%s)((uint64_t)a0 * a0);\n",
                       ct, ct, gs, ct, ct);
         else
-            fx_printf(&out, "    %s n4 = (%s)ux, hi2 = (%s)((uint64_t)a1 * a1 << %d), lo2 = (%s)((uint64_t)a0 * a0 << %d);\n",
+            pf_printf(&out, "    %s n4 = (%s)ux, hi2 = (%s)((uint64_t)a1 * a1 << %d), lo2 = (%s)((uint64_t)a0 * a0 << %d);\n",
                       ct, ct, ct, -gs, ct, -gs);
-        fx_put(&out, "    r = r + (n4 > hi2 || (n4 == hi2 && (r & 1))) - (r > 0 && (n4 < lo2 || (n4 == lo2 && (r & 1))));\n");
-        fx_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
+        pf_put(&out, "    r = r + (n4 > hi2 || (n4 == hi2 && (r & 1))) - (r > 0 && (n4 < lo2 || (n4 == lo2 && (r & 1))));\n");
+        pf_printf(&out, "    r = r < %lluu ? r : %lluu;\n", (unsigned long long)omax, (unsigned long long)omax);
     }
-    fx_printf(&out, "    return (%s)(x > 0 ? r : 0);", G->ot);
+    pf_printf(&out, "    return (%s)(x > 0 ? r : 0);", G->ot);
     const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "NORM_CODE", norm.s, "HORNER", horner.s,
                         "OUT_CODE", out.s, NULL};
-    fx_subst(b, fx_template("fx_sqrt.c"), kv);
+    pf_subst(b, pf_template("fx_sqrt.c"), kv);
     free(norm.s);
     free(horner.s);
     free(out.s);
