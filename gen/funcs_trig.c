@@ -45,6 +45,12 @@ static void g_sin(mpfr_t y, const mpfr_t t, const void *c)
     mpfr_sin(y, t, MPFR_RNDN);
 }
 
+static void g_cos(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_cos(y, t, MPFR_RNDN);
+}
+
 static void g_tan(mpfr_t y, const mpfr_t t, const void *c)
 {
     (void)c;
@@ -253,12 +259,17 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
 
 #define SIN_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 0); sin x = (-1)^k sin r"
 #define COS_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 1); cos x = sin(x + pi/2) = (-1)^k sin r"
+#define COS_RED_EVEN "x = k pi + r, r in [-pi/2, pi/2]; cos x = (-1)^k cos r"
 #define TAN_RED "x = n pi/2 + r, r in [-pi/4, pi/4]; tan x = tan r (n even), -1/tan r (n odd)"
 #define RED_EXACT ", Cody-Waite with FMA in double |x| < 2^28, Payne-Hanek beyond (array: only in blocks holding such an x)"
 #define RED_FAST ", Cody-Waite with FMA in float |x| < 2^17, Payne-Hanek beyond (array: only in blocks holding such an x)"
 
 #define CON_SLOPE1 {FIT_CON_DERIV, 0, "p'(0) = 1"}
 #define SIN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO2, "p(pi/2) = 1"}, {FIT_CON_DERIV, PIO2, "p'(pi/2) = 0"}}
+/* cos, fast (even): q(0) = 1 exactly, so cos(0) = 1 and |f| <= 1 with no
+   clamp; q(pi/2) = 0, so the folds at r = +-pi/2 are continuous (the slope
+   is, by parity) */
+#define COS_FAST_CON {{FIT_CON_VALUE, 0, "p(0) = 1"}, {FIT_CON_VALUE, PIO2, "p(pi/2) = 0"}}
 #define TAN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO4, "p(pi/4) = 1"}, {FIT_CON_DERIV, PIO4, "p'(pi/4) = 2"}}
 
 /* exact orders: the smallest odd orders whose float-coefficient polynomial
@@ -288,7 +299,16 @@ const pf_spec pf_specs_trig[] = {
     ROW_SIN_EXACT("sin", "0", SIN_RED),
     ROW_SIN_FAST("sin", "0", SIN_RED),
     ROW_SIN_EXACT("cos", "1", COS_RED),
-    ROW_SIN_FAST("cos", "1", COS_RED),
+    /* cos, fast: the even polynomial of cos on the reduction of sin (two
+       fewer additions a vector than sin(x + pi/2), no |r| and no clamp:
+       sin_pi_fast_even.c.in).  Fitted for absolute error 2^-11 (cos's zeros
+       are at the folds, where the bound is absolute; elsewhere
+       2^-10 |cos| >= 2^-11 |cos| as well) with room for the roundings. */
+    {.func = "cos", .reduction = "pi", .variant = "fast", .tmpl = "sin_pi_fast_even", .arity = 1,
+     .head = "trig_ph.h", .tail = "tail_twopath.c",
+     .reduction_text = COS_RED_EVEN RED_FAST, .target_text = "cos(t)", .g = g_cos, .a = 0, .b = PIO2,
+     .parity = FIT_PARITY_EVEN, .errkind = FIT_ABS, .ncon = 2, .con = COS_FAST_CON,
+     .default_order = 0, .fast_target = 0x1.cp-12, .real = "fma", .extra = extra_sincos_float},
     {.func = "tan", .reduction = "pio2", .variant = "exact", .tmpl = "tan_pio2", .arity = 1,
      .head = "trig_ph.h", .tail = "tail_twopath.c",
      .reduction_text = TAN_RED RED_EXACT, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
