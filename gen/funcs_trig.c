@@ -45,6 +45,21 @@ static void g_sin(mpfr_t y, const mpfr_t t, const void *c)
     mpfr_sin(y, t, MPFR_RNDN);
 }
 
+/* sin(t) (1 - 2^-21 sin(t)^2): odd, slope 1 at 0, peak 1 - 2^-21 with slope
+   0 at pi/2, within 2^-21 relative of sin (the fast variant's target) */
+static void g_sin_lowered(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_t s;
+    mpfr_init2(s, mpfr_get_prec(y) + 64);
+    mpfr_sin(s, t, MPFR_RNDN);
+    mpfr_sqr(y, s, MPFR_RNDN);
+    mpfr_mul_2si(y, y, -21, MPFR_RNDN);
+    mpfr_ui_sub(y, 1, y, MPFR_RNDN);
+    mpfr_mul(y, y, s, MPFR_RNDN);
+    mpfr_clear(s);
+}
+
 static void g_cos(mpfr_t y, const mpfr_t t, const void *c)
 {
     (void)c;
@@ -265,7 +280,7 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
 #define RED_FAST ", Cody-Waite with FMA in float |x| < 2^17, Payne-Hanek beyond (array: only in blocks holding such an x)"
 
 #define CON_SLOPE1 {FIT_CON_DERIV, 0, "p'(0) = 1"}
-#define SIN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO2, "p(pi/2) = 1"}, {FIT_CON_DERIV, PIO2, "p'(pi/2) = 0"}}
+#define SIN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO2, "p(pi/2) = 1 - 2^-21"}, {FIT_CON_DERIV, PIO2, "p'(pi/2) = 0"}}
 /* cos, fast (even): q(0) = 1 exactly, so cos(0) = 1 and |f| <= 1 with no
    clamp; q(pi/2) = 0, so the folds at r = +-pi/2 are continuous (the slope
    is, by parity) */
@@ -287,17 +302,21 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
      .default_order = SIN_EXACT_ORDER, .real = "double", .kscale = phase, .ulp_bound = 1.0,      \
      .extra = extra_trig_double, .model = model_double}
-#define ROW_SIN_FAST(fn, phase, red)                                                              \
-    {.func = fn, .reduction = "pi", .variant = "fast", .tmpl = "sin_pi_fast", .arity = 1,         \
+/* sin, fast (sin_pi_fast.c.in): fitted to sin lowered by 2^-21 at its peak,
+   so that Horner's rule in float (a few ulps of rounding) keeps |p| <= 1
+   with no clamp; the value 1 - 2^-21 and slope 0 at pi/2 come from the
+   target through the constraints, slope 1 at 0 as before */
+#define SIN_FAST_ROW                                                                              \
+    {.func = "sin", .reduction = "pi", .variant = "fast", .tmpl = "sin_pi_fast", .arity = 1,      \
      .head = "trig_ph.h", .tail = "tail_twopath.c",                                               \
-     .reduction_text = red RED_FAST, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,      \
-     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = SIN_FAST_CON,                \
-     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .kscale = phase,                  \
+     .reduction_text = SIN_RED RED_FAST, .target_text = "sin(t) (1 - 2^-21 sin(t)^2)",           \
+     .g = g_sin_lowered, .a = 0, .b = PIO2, .parity = FIT_PARITY_ODD, .errkind = FIT_REL,        \
+     .ncon = 3, .con = SIN_FAST_CON, .default_order = 0, .fast_target = 0x1p-10, .real = "fma",  \
      .extra = extra_sincos_float}
 
 const pf_spec pf_specs_trig[] = {
     ROW_SIN_EXACT("sin", "0", SIN_RED),
-    ROW_SIN_FAST("sin", "0", SIN_RED),
+    SIN_FAST_ROW,
     ROW_SIN_EXACT("cos", "1", COS_RED),
     /* cos, fast: the even polynomial of cos on the reduction of sin (two
        fewer additions a vector than sin(x + pi/2), no |r| and no clamp:
