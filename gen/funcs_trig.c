@@ -6,6 +6,10 @@
  *     sin(x) = (-1)^k sin(r) and cos(x) = sin(x + pi/2) = (-1)^k sin(r).
  *     One odd polynomial on [-pi/2, pi/2] then covers both: no cos
  *     polynomial and no quadrant select between two polynomials.
+ *     Exception, the fast cos: cos(t) on [0, pi/2], even, on sin's
+ *     reduction (s = 0), cos(x) = (-1)^k cos(r); its zeros sit at the
+ *     folds, where the fast bound is absolute, and it saves the two
+ *     additions of the + pi/2 and sin's clamp (sin_pi_fast_even.c.in).
  *   tan(t) on [0, pi/4], odd: x = n pi/2 + r, r in [-pi/4, pi/4],
  *     tan(x) = tan(r) (n even) or -1/tan(r) = -cot(r) (n odd).
  * Why this is enough: near the ends of [-pi/2, pi/2] sin is flat (slope
