@@ -89,6 +89,13 @@ V8_2(s10x8_atan2, Sleef_atan2f8_u10avx2)
 V16_2(s10x16_atan2, Sleef_atan2f16_u10avx512f)
 V8_2(s35x8_atan2, Sleef_atan2f8_u35avx2)
 V16_2(s35x16_atan2, Sleef_atan2f16_u35avx512f)
+/* SLEEF's fast tier (3.5 has it for sinf, cosf and powf only): accurate to
+   3500 ULP on a limited range only; the bench measures its error like every
+   peer's, on the same inputs, whatever it is */
+V8_1(sfx8_sin, Sleef_fastsinf8_u3500avx2)
+V16_1(sfx16_sin, Sleef_fastsinf16_u3500avx512f)
+V8_1(sfx8_cos, Sleef_fastcosf8_u3500avx2)
+V16_1(sfx16_cos, Sleef_fastcosf16_u3500avx512f)
 
 /* one row per function: glibc scalar, then the vector kinds in the order of
    kinds[] below; NULL = the peer library has no such function */
@@ -98,13 +105,18 @@ typedef struct {
     pf_fn2 g2;
     pfb_arr1 v1[6];
     pfb_arr2 v2[6];
+    pfb_arr1 fast[2]; /* SLEEF's fast tier, AVX2 and AVX-512; NULL: none */
 } peer_row;
 
 #define ROW1(F, fn)                                                                    \
     {.f = F, .g1 = fn##f, .v1 = {mv8_##fn, mv16_##fn, s10x8_##fn, s10x16_##fn, s35x8_##fn, s35x16_##fn}}
 
 static const peer_row rows[] = {
-    ROW1(PF_SIN, sin),   ROW1(PF_COS, cos),   ROW1(PF_TAN, tan),
+    {.f = PF_SIN, .g1 = sinf, .v1 = {mv8_sin, mv16_sin, s10x8_sin, s10x16_sin, s35x8_sin, s35x16_sin},
+     .fast = {sfx8_sin, sfx16_sin}},
+    {.f = PF_COS, .g1 = cosf, .v1 = {mv8_cos, mv16_cos, s10x8_cos, s10x16_cos, s35x8_cos, s35x16_cos},
+     .fast = {sfx8_cos, sfx16_cos}},
+    ROW1(PF_TAN, tan),
     ROW1(PF_ASIN, asin), ROW1(PF_ACOS, acos), ROW1(PF_ATAN, atan),
     {.f = PF_ATAN2, .g2 = atan2f,
      .v2 = {mv8_atan2, mv16_atan2, s10x8_atan2, s10x16_atan2, s35x8_atan2, s35x16_atan2}},
@@ -156,5 +168,19 @@ void pfb_peers(pf_func f, pfb_cand *c, int *n)
             v->a1 = r->v1[k];
             v->a2 = r->v2[k];
         }
+    }
+    /* "sleef-fast": only where SLEEF has the function (sin, cos) */
+    for (int k = 0; k < 2; k++) {
+        if (!r->fast[k])
+            continue;
+        pfb_cand *v = &c[(*n)++];
+        memset(v, 0, sizeof *v);
+        snprintf(v->name, sizeof v->name, "sleef-fast");
+        snprintf(v->isa, sizeof v->isa, "%s", k ? "avx512" : "avx2");
+        v->fast = 1;
+        if (k ? !has512 : !has2)
+            snprintf(v->absent, sizeof v->absent, "CPU lacks %s", k ? "AVX-512F" : "AVX2+FMA");
+        else
+            v->a1 = r->fast[k];
     }
 }

@@ -364,8 +364,10 @@ static void test_fast_huge(void **st)
     }
 }
 
-/* Slope continuity at the folds: sin at (k + 1/2) pi, cos at k pi, tan at
-   (n + 1/2) pi/2.  The one-sided difference quotients of the fast function,
+/* Slope continuity at the folds: sin at (k + 1/2) pi, cos at (k + 1/2) pi
+   (its even polynomial's folds, where q(pi/2) = 0 must hold too: a value
+   jump shows as a slope jump) and at k pi (where the exact variant's
+   sin(x + pi/2) folds), tan at (n + 1/2) pi/2.  The one-sided difference quotients of the fast function,
    minus those of the true function (which differ by about h f''), agree to
    within float rounding (8 ulps of f over h), 2^-10 of the slope and 2^-5 of
    the curvature term h f'' (the error's own curvature at the fold).  A
@@ -402,6 +404,7 @@ static void test_fast_seams(void **st)
     (void)st;
     const double pi = 3.14159265358979323846;
     seams(&fns[0], pi / 2, pi, 1);     /* |sin''| = 1 at the fold */
+    seams(&fns[1], pi / 2, pi, 1);     /* |cos''| <= 1 near its zeros */
     seams(&fns[1], pi, pi, 1);
     seams(&fns[2], pi / 4, pi / 2, 4); /* tan'' = 2 tan sec^2 = 4 at pi/4 */
 }

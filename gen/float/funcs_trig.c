@@ -6,6 +6,10 @@
  *     sin(x) = (-1)^k sin(r) and cos(x) = sin(x + pi/2) = (-1)^k sin(r).
  *     One odd polynomial on [-pi/2, pi/2] then covers both: no cos
  *     polynomial and no quadrant select between two polynomials.
+ *     Exception, the fast cos: cos(t) on [0, pi/2], even, on sin's
+ *     reduction (s = 0), cos(x) = (-1)^k cos(r); its zeros sit at the
+ *     folds, where the fast bound is absolute, and it saves the two
+ *     additions of the + pi/2 and sin's clamp (sin_pi_fast_even.c.in).
  *   tan(t) on [0, pi/4], odd: x = n pi/2 + r, r in [-pi/4, pi/4],
  *     tan(x) = tan(r) (n even) or -1/tan(r) = -cot(r) (n odd).
  * Why this is enough: near the ends of [-pi/2, pi/2] sin is flat (slope
@@ -43,6 +47,27 @@ static void g_sin(mpfr_t y, const mpfr_t t, const void *c)
 {
     (void)c;
     mpfr_sin(y, t, MPFR_RNDN);
+}
+
+/* sin(t) (1 - 2^-21 sin(t)^2): odd, slope 1 at 0, peak 1 - 2^-21 with slope
+   0 at pi/2, within 2^-21 relative of sin (the fast variant's target) */
+static void g_sin_lowered(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_t s;
+    mpfr_init2(s, mpfr_get_prec(y) + 64);
+    mpfr_sin(s, t, MPFR_RNDN);
+    mpfr_sqr(y, s, MPFR_RNDN);
+    mpfr_mul_2si(y, y, -21, MPFR_RNDN);
+    mpfr_ui_sub(y, 1, y, MPFR_RNDN);
+    mpfr_mul(y, y, s, MPFR_RNDN);
+    mpfr_clear(s);
+}
+
+static void g_cos(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_cos(y, t, MPFR_RNDN);
 }
 
 static void g_tan(mpfr_t y, const mpfr_t t, const void *c)
@@ -253,12 +278,17 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
 
 #define SIN_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 0); sin x = (-1)^k sin r"
 #define COS_RED "x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 1); cos x = sin(x + pi/2) = (-1)^k sin r"
+#define COS_RED_EVEN "x = k pi + r, r in [-pi/2, pi/2]; cos x = (-1)^k cos r"
 #define TAN_RED "x = n pi/2 + r, r in [-pi/4, pi/4]; tan x = tan r (n even), -1/tan r (n odd)"
 #define RED_EXACT ", Cody-Waite with FMA in double |x| < 2^28, Payne-Hanek beyond (array: only in blocks holding such an x)"
 #define RED_FAST ", Cody-Waite with FMA in float |x| < 2^17, Payne-Hanek beyond (array: only in blocks holding such an x)"
 
 #define CON_SLOPE1 {FIT_CON_DERIV, 0, "p'(0) = 1"}
-#define SIN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO2, "p(pi/2) = 1"}, {FIT_CON_DERIV, PIO2, "p'(pi/2) = 0"}}
+#define SIN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO2, "p(pi/2) = 1 - 2^-21"}, {FIT_CON_DERIV, PIO2, "p'(pi/2) = 0"}}
+/* cos, fast (even): q(0) = 1 exactly, so cos(0) = 1 and |f| <= 1 with no
+   clamp; q(pi/2) = 0, so the folds at r = +-pi/2 are continuous (the slope
+   is, by parity) */
+#define COS_FAST_CON {{FIT_CON_VALUE, 0, "p(0) = 1"}, {FIT_CON_VALUE, PIO2, "p(pi/2) = 0"}}
 #define TAN_FAST_CON {CON_SLOPE1, {FIT_CON_VALUE, PIO4, "p(pi/4) = 1"}, {FIT_CON_DERIV, PIO4, "p'(pi/4) = 2"}}
 
 /* exact orders: the smallest odd orders whose float-coefficient polynomial
@@ -276,19 +306,32 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
      .default_order = SIN_EXACT_ORDER, .real = "double", .kscale = phase, .ulp_bound = 1.0,      \
      .extra = extra_trig_double, .model = model_double}
-#define ROW_SIN_FAST(fn, phase, red)                                                              \
-    {.func = fn, .reduction = "pi", .variant = "fast", .tmpl = "sin_pi_fast", .arity = 1,         \
+/* sin, fast (sin_pi_fast.c.in): fitted to sin lowered by 2^-21 at its peak,
+   so that Horner's rule in float (a few ulps of rounding) keeps |p| <= 1
+   with no clamp; the value 1 - 2^-21 and slope 0 at pi/2 come from the
+   target through the constraints, slope 1 at 0 as before */
+#define SIN_FAST_ROW                                                                              \
+    {.func = "sin", .reduction = "pi", .variant = "fast", .tmpl = "sin_pi_fast", .arity = 1,      \
      .head = "trig_ph.h", .tail = "tail_twopath.c",                                               \
-     .reduction_text = red RED_FAST, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,      \
-     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = SIN_FAST_CON,                \
-     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .kscale = phase,                  \
+     .reduction_text = SIN_RED RED_FAST, .target_text = "sin(t) (1 - 2^-21 sin(t)^2)",           \
+     .g = g_sin_lowered, .a = 0, .b = PIO2, .parity = FIT_PARITY_ODD, .errkind = FIT_REL,        \
+     .ncon = 3, .con = SIN_FAST_CON, .default_order = 0, .fast_target = 0x1p-10, .real = "fma",  \
      .extra = extra_sincos_float}
 
 const pf_spec pf_specs_trig[] = {
     ROW_SIN_EXACT("sin", "0", SIN_RED),
-    ROW_SIN_FAST("sin", "0", SIN_RED),
+    SIN_FAST_ROW,
     ROW_SIN_EXACT("cos", "1", COS_RED),
-    ROW_SIN_FAST("cos", "1", COS_RED),
+    /* cos, fast: the even polynomial of cos on the reduction of sin (two
+       fewer additions a vector than sin(x + pi/2), no |r| and no clamp:
+       sin_pi_fast_even.c.in).  Fitted for absolute error 2^-11 (cos's zeros
+       are at the folds, where the bound is absolute; elsewhere
+       2^-10 |cos| >= 2^-11 |cos| as well) with room for the roundings. */
+    {.func = "cos", .reduction = "pi", .variant = "fast", .tmpl = "sin_pi_fast_even", .arity = 1,
+     .head = "trig_ph.h", .tail = "tail_twopath.c",
+     .reduction_text = COS_RED_EVEN RED_FAST, .target_text = "cos(t)", .g = g_cos, .a = 0, .b = PIO2,
+     .parity = FIT_PARITY_EVEN, .errkind = FIT_ABS, .ncon = 2, .con = COS_FAST_CON,
+     .default_order = 0, .fast_target = 0x1.cp-12, .real = "fma", .extra = extra_sincos_float},
     {.func = "tan", .reduction = "pio2", .variant = "exact", .tmpl = "tan_pio2", .arity = 1,
      .head = "trig_ph.h", .tail = "tail_twopath.c",
      .reduction_text = TAN_RED RED_EXACT, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,

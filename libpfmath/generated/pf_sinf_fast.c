@@ -2,12 +2,12 @@
  *
  * Regenerate:  pfmathgen --func sin --variant fast -o libpfmath/generated/pf_sinf_fast.c
  * Reduction:   x + s pi/2 = k pi + r, r in [-pi/2, pi/2] (s = 0); sin x = (-1)^k sin r, Cody-Waite with FMA in float |x| < 2^17, Payne-Hanek beyond (array: only in blocks holding such an x)
- * Domain:      sin(t) on t in [0x0p+0, 0x1.921fb54442d18p+0]  (0 .. 1.57079633)
+ * Domain:      sin(t) (1 - 2^-21 sin(t)^2) on t in [0x0p+0, 0x1.921fb54442d18p+0]  (0 .. 1.57079633)
  * Order:       5 (float coefficients, Horner in float with fmaf)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
- * Constraints: p'(0) = 1, p(pi/2) = 1, p'(pi/2) = 0
- * Max relative error of this polynomial on the domain: 4.721e-04 (2^-11.05) at t = 0x1.e5880064962a1p-1
- * Sweep:       max 6620.788 ULP at x = 0x1.50714p+2 (0x40a838a0), mean 1641.5706 ULP, 2.93% correctly
+ * Constraints: p'(0) = 1, p(pi/2) = 1 - 2^-21, p'(pi/2) = 0
+ * Max relative error of this polynomial on the domain: 4.722e-04 (2^-11.05) at t = 0x1.e58859666f52cp-1
+ * Sweep:       max 6616.419 ULP at x = 0x1.50738p+2 (0x40a839c0), mean 1640.3003 ULP, 2.90% correctly
  *              rounded; sampled sweep of 5280622 inputs (every 16th float in [0x1p-7, 0x1.921fb6p+2], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -84,11 +84,11 @@ static inline PF_UNUSED pf_ff pf_two_sum(float a, float b)
 static inline PF_UNUSED uint32_t pf_asuint(float x) { uint32_t u; memcpy(&u, &x, sizeof u); return u; }
 static inline PF_UNUSED float pf_asfloat(uint32_t u) { float x; memcpy(&x, &u, sizeof x); return x; }
 
-/* sin(t) ~ sum C[k] t^(2k+1), lowest degree first */
+/* sin(t) (1 - 2^-21 sin(t)^2) ~ sum C[k] t^(2k+1), lowest degree first */
 static const float pf_sinf_fast_C[3] = {
     0x1p+0f,    /* c1 = 1 */
-    -0x1.5306p-3f,    /* c3 = -0.165538788 */
-    0x1.e52ac2p-8f,    /* c5 = 0.00740306126 */
+    -0x1.530628p-3f,    /* c3 = -0.165539086 */
+    0x1.e52c04p-8f,    /* c5 = 0.00740313623 */
 };
 
 /* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c):
@@ -140,72 +140,59 @@ static inline double pf_sinf_fast_ph_r(int64_t f)
     return ((double)(int32_t)(f >> 32) * 0x1p32 + (double)(uint32_t)f) * PF_TRIG_PIO2_2M62;
 }
 
-/* sin and cos, fast: x + s pi/2 = k pi + r with s = 0 (0: sin, 1: cos,
-   cos x = sin(x + pi/2)), r in [-pi/2, pi/2], f(x) = (-1)^k sin(r), in float
-   with fmaf (correctly rounded everywhere: every clone gives the same bits).
-   The polynomial matches sin's value and slope at r = pi/2, so the folds at
-   x + s pi/2 = (k + 1/2) pi are continuous with a continuous slope.  Two
+/* sin, fast: x = k pi + r with 2k the even integer nearest x 2/pi, r in
+   [-pi/2, pi/2], sin x = (-1)^k sin r, sin r = r q(r^2) from one odd
+   polynomial, in float with fmaf (correctly rounded everywhere: every clone
+   gives the same bits).  The polynomial's slope is 0 at r = pi/2, so the
+   folds at x = (k + 1/2) pi are continuous (by parity) with a continuous
+   slope.  Its peak there is 1 - 2^-21 (the fit's target is lowered by that
+   much, 8 ulps of 1, see gen/funcs_trig.c): Horner's rule in float rounds
+   by a few ulps, so the result stays within [-1, 1] with no clamp.  Two
    paths, chosen per input the same way in the scalar and the array form:
    - Cody-Waite with FMA on x itself (signed), two 24-bit parts of pi/2,
      for |x| < 2^17: r within 2^-23 absolute, far inside the bound's 2^-11;
-   - Payne-Hanek (|x| 2/pi mod 4 in 2.62 fixed point) for |x| >= 2^17, inf,
-     NaN (and cos's |x| < 2^-12, where cos x rounds to 1): only the array
-     form's blocks holding such a lane compute it. */
+   - Payne-Hanek (|x| 2/pi mod 4 in 2.62 fixed point) for |x| >= 2^17, inf
+     and NaN: only the array form's blocks holding such a lane compute it. */
 static inline float pf_sinf_fast_eval(float r)
 {
-    /* on |r|, so that p >= 0 and one minimum clamps it; sin is odd */
-    uint32_t rb = pf_asuint(r);
-    float ra = pf_asfloat(rb & 0x7fffffffu);
-    float p = ra * pf_horner_fma(ra * ra, pf_sinf_fast_C, 3);
-    /* p(pi/2) = 1 holds to the rounding of the coefficients and of Horner's
-       rule (a few ulps either way): clamp so |f| <= 1 always */
-    uint32_t pb = pf_asuint(p);
-    pb = pb < 0x3f800000u ? pb : 0x3f800000u; /* p >= 0: an integer minimum on the bits */
-    return pf_asfloat(pb ^ (rb & 0x80000000u));
+    /* float rounding is symmetric, so p(-r) = -p(r) */
+    return r * pf_horner_fma(r * r, pf_sinf_fast_C, 3);
 }
 
-/* e = the even integer nearest x 2/pi + s (the shifter 1.5 2^24 has an ulp
-   of 2; the product inside fmaf is exact), m = e - s, r = x - m pi/2.  k = e/2
-   is the lowest significand bit of the shifted sum.  Only for |x| < 2^17;
+/* 2k = the even integer nearest x 2/pi (the shifter 1.5 2^24 has an ulp
+   of 2; the product inside fmaf is exact), r = x - 2k pi/2.  k's parity is
+   the lowest significand bit of the shifted sum.  Only for |x| < 2^17;
    other lanes give garbage (no UB). */
 static inline float pf_sinf_fast_cw(float x)
 {
-    enum { PHASE = 0 };
     const float shift = 0x1.8p24f;
-    float kt = PHASE ? fmaf(x, PF_TRIG_2OPIF, 1.0f) + shift : fmaf(x, PF_TRIG_2OPIF, shift);
-    float m = PHASE ? (kt - shift) - 1.0f : kt - shift;
+    float kt = fmaf(x, PF_TRIG_2OPIF, shift);
+    float m = kt - shift;
     float r = x;
 #pragma GCC unroll 8
     for (int i = 0; i < PF_TRIG_NPARTS; i++)
         r = fmaf(-m, PF_TRIG_PIO2F[i], r);
-    /* (-1)^k on the sign bit; float rounding is symmetric */
+    /* (-1)^k on the sign bit */
     return pf_asfloat(pf_asuint(pf_sinf_fast_eval(r)) ^ pf_asuint(kt) << 31);
 }
 
-/* The rare inputs: |x| >= 2^17, inf, NaN, and for cos |x| < 2^-12 (any
-   input gives a value) */
+/* The rare inputs: |x| >= 2^17, inf, NaN (any input gives a value) */
 static inline float pf_sinf_fast_ph(float x)
 {
-    enum { PHASE = 0 };
     uint32_t ix = pf_asuint(x), ia = ix & 0x7fffffffu;
-    uint64_t y = pf_sinf_fast_ph_y(ia) + ((uint64_t)PHASE << 62); /* + s: units of pi/2 */
-    uint64_t k = (y + (1ull << 62)) >> 63;                   /* round(y / 2) mod 2 */
-    int64_t f = (int64_t)(y - (k << 63));                    /* y - 2k in [-1, 1], 2^62 units */
+    uint64_t y = pf_sinf_fast_ph_y(ia);           /* |x| 2/pi mod 4, units of pi/2 */
+    uint64_t k = (y + (1ull << 62)) >> 63;  /* round(y / 2) mod 2 */
+    int64_t f = (int64_t)(y - (k << 63));   /* y - 2k in [-1, 1], 2^62 units */
     float p = pf_sinf_fast_eval((float)pf_sinf_fast_ph_r(f));
-    uint32_t sign = (uint32_t)k << 31 ^ (PHASE ? 0 : ix & 0x80000000u);
+    uint32_t sign = (uint32_t)k << 31 ^ (ix & 0x80000000u);
     float res = pf_asfloat(pf_asuint(p) ^ sign);
-    /* cos x = 1 for |x| < 2^-12 (1 - x^2/2 rounds to 1): C99 F.9.1.5 wants
-       cos(+-0) = 1 exactly, which p(pi/2) in float misses by a few ulps */
-    res = PHASE && ia < 0x39800000u ? 1.0f : res;
     return ia < 0x7f800000u ? res : x - x;
 }
 
-/* Rare: |x| >= 2^17, inf, NaN, and for cos |x| < 2^-12.  The key is
-   2|x| - 2 lo in bits (the sign shifted out; below lo it wraps to the top),
-   what the array form's scan takes the maximum of. */
-#define pf_sinf_fast_RARE_LO (0 ? 0x39800000u : 0)
-static inline uint32_t pf_sinf_fast_rare_key(uint32_t ix) { return (ix << 1) - (pf_sinf_fast_RARE_LO << 1); }
-#define pf_sinf_fast_RARE_KEY ((PF_TRIG_CW_LIMIT - pf_sinf_fast_RARE_LO) << 1)
+/* Rare: |x| >= 2^17, inf, NaN.  The key 2|x| (in bits, the sign shifted
+   out) is what the array form's scan takes the maximum of. */
+static inline uint32_t pf_sinf_fast_rare_key(uint32_t ix) { return ix << 1; }
+#define pf_sinf_fast_RARE_KEY (PF_TRIG_CW_LIMIT << 1)
 static inline int pf_sinf_fast_is_rare(uint32_t ix) { return pf_sinf_fast_rare_key(ix) >= pf_sinf_fast_RARE_KEY; }
 
 /* The scalar form: a branch, the rare side hinted as such */
