@@ -146,14 +146,16 @@ PF_INLINE float point3(const uint32_t *restrict hash, const uint32_t *restrict g
     return b[0] + f[2] * (b[1] - b[0]);
 }
 
-float pf_noise3f_t(const pf_noise_table *t, float x, float y, float z)
+/* The SSE2 bodies of pf_noise3f_t and pf_noise3f (pfnoise3_avx2.c picks
+ * between them and the AVX2 body at load time). */
+float pf_noise3f_t_sse2_(const pf_noise_table *t, float x, float y, float z)
 {
     if (!t)
         t = &pf_noise_default_;
     return point3(t->hash, t->g3, x, y, z);
 }
 
-float pf_noise3f(float x, float y, float z)
+float pf_noise3f_sse2_(float x, float y, float z)
 {
     return point3(pf_noise_default_.hash, pf_noise_default_.g3, x, y, z);
 }

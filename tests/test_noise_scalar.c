@@ -23,8 +23,14 @@
 #include <string.h>
 
 #include "pfnoise.h"
+#include "pfnoise_impl.h"
 
 static int quick;
+
+/* 3D has two scalar bodies (SSE2 and, on x86-64-v3 CPUs, AVX2, picked at
+ * load time); body3 = 0 checks the public entry points, 1 the SSE2 body
+ * and 2 the AVX2 body (only where the CPU has it). */
+static int body3;
 
 static uint64_t rng_state = 0x9e3779b97f4a7c15u;
 static uint64_t rnd(void) /* splitmix64 */
@@ -39,6 +45,7 @@ static double urand(double lo, double hi) { return lo + (hi - lo) * (double)(rnd
 static float special(void)
 {
     static const float v[] = {0.0f, -0.0f, 0x1p-149f, -0x1p-149f, 0x1p-126f, 1e-30f, -1e-30f,
+                              0x1.fffffep-110f, -0x1.234566p-112f,
                               0.5f, -0.5f, 1.0f, -1.0f, 0x1.fffffep-1f, -0x1.fffffep-1f,
                               255.0f, 256.0f, -256.0f, 0x1p22f - 0.5f, 0x1p22f, -0x1p22f,
                               0x1p23f - 0.5f, 0x1p23f, -0x1p23f, 0x1p23f + 1.0f, 0x1p24f + 2.0f,
@@ -61,15 +68,39 @@ static float coord(void)
     }
 }
 
+static float scalar3_avx2(const pf_noise_table *t, const float *p)
+{
+#if PF_NOISE3_DISPATCH
+    return pf_noise3f_t_avx2_(t, p[0], p[1], p[2]);
+#else
+    (void)t, (void)p;
+    return NAN; /* never called: has_avx2() is 0 */
+#endif
+}
+
+static int has_avx2(void)
+{
+#if PF_NOISE3_DISPATCH
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("x86-64-v3");
+#else
+    return 0;
+#endif
+}
+
 static float scalar(const pf_noise_table *t, int n, const float *p)
 {
     if (!t)
         switch (n) {
         case 1: return pf_noise1f(p[0]);
         case 2: return pf_noise2f(p[0], p[1]);
-        case 3: return pf_noise3f(p[0], p[1], p[2]);
+        case 3: return body3 == 1   ? pf_noise3f_sse2_(p[0], p[1], p[2])
+                       : body3 == 2 ? scalar3_avx2(NULL, p)
+                                    : pf_noise3f(p[0], p[1], p[2]);
         default: return pf_noise4f(p[0], p[1], p[2], p[3]);
         }
+    if (n == 3 && body3)
+        return body3 == 1 ? pf_noise3f_t_sse2_(t, p[0], p[1], p[2]) : scalar3_avx2(t, p);
     switch (n) {
     case 1: return pf_noise1f_t(t, p[0]);
     case 2: return pf_noise2f_t(t, p[0], p[1]);
@@ -158,6 +189,25 @@ static void test_scalar_equals_array_seeded(void **state)
     check_table(&t);
 }
 
+/* Each 3D body on its own (the public entry runs only one of them here). */
+static void test_each_3d_body(void **state)
+{
+    (void)state;
+    static pf_noise_table t;
+    pf_noise_table_seed(&t, 7);
+    for (body3 = 1; body3 <= 2; body3++) {
+        if (body3 == 2 && !has_avx2()) {
+            print_message("no x86-64-v3 CPU: AVX2 body not checked\n");
+            continue;
+        }
+        check_lattice(NULL);
+        check_table(NULL);
+        check_lattice(&t);
+        check_table(&t);
+    }
+    body3 = 0;
+}
+
 /* Perlin's reference value through every scalar entry of the 3D noise. */
 static void test_reference_value(void **state)
 {
@@ -197,6 +247,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_scalar_equals_array_default),
         cmocka_unit_test(test_scalar_equals_array_seeded),
+        cmocka_unit_test(test_each_3d_body),
         cmocka_unit_test(test_reference_value),
         cmocka_unit_test(test_null_table),
     };

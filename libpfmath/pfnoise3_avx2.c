@@ -1,0 +1,170 @@
+/* 3D noise, one point at a time, for x86-64-v3 (AVX2): the body that
+ * pf_noise3f and pf_noise3f_t run on such CPUs, picked once at load time
+ * (ifunc) between it and the SSE2 body of pfnoise3.c.
+ *
+ * Why a second body.  A scalar call is latency-bound: ~80 cycles from the
+ * coordinates to the result (lattice index, 3 dependent table loads, the
+ * gradient dot products, 3 levels of lerp), and consecutive calls overlap
+ * only as far as the out-of-order window holds the vector operations that
+ * wait for the table loads.  Fewer such operations per call = more calls in
+ * flight.  Here the 8 corners fill the 8 lanes of one ymm vector (the SSE2
+ * body needs two xmm vectors, i.e. twice the operations for the gradients),
+ * the codes are broadcast straight from the table and blended, and the lerps
+ * pair lanes inside 128-bit halves (1-cycle shuffles) until the last one.
+ *
+ * Lanes: corner (i, j, k) (x, y, z offsets) in lane i + 2j + 4k, so the
+ * x-lerp pairs lanes (0,1) (2,3) (4,5) (6,7), the y-lerp (0,2) (4,6) and
+ * the z-lerp (0,4).  Lanes 4..7 read the high (z + 1) halves of the pair
+ * codes with pfnoise3.c's masks and pre-scaled offsets.
+ *
+ * Bit-identical to the array body (core3): lane by lane the same operands
+ * in the same order, with one change of form: k·d + acc as fma(k, d, acc).
+ * k·d is exact (k ∈ {0,1,2}·2^f and d pre-scaled by 2^-f, both exact or,
+ * for a subnormal d·2^-f, scaled back up exactly), so the fused form rounds
+ * the same exact sum once, as the array body's add does; signed zeros too
+ * (the product's sign is the same).  The lerps and the fade keep separate
+ * multiply and add (no contraction: the pragma below).  Checked against the
+ * array form by tests/test_noise_scalar.c. */
+#include "pfnoise.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math", "fp-contract=off")
+#endif
+#include "pfnoise_impl.h"
+
+#if PF_NOISE3_DISPATCH
+#include <immintrin.h>
+
+#define V3 __attribute__((target("arch=x86-64-v3")))
+
+/* Constants as tables, so that they are memory operands (GCC otherwise
+ * builds some splats from a general register: 3 instructions each). */
+#define A16 __attribute__((aligned(16)))
+#define A32 __attribute__((aligned(32)))
+static const uint32_t k_abs[4] A16 = {0x7fffffffu, 0x7fffffffu, 0x7fffffffu, 0x7fffffffu};
+static const float k_lim[4] A16 = {0x1p22f, 0x1p22f, 0x1p22f, 0x1p22f};
+static const float k_big[4] A16 = {12582912.0f, 12582912.0f, 12582912.0f, 12582912.0f};
+static const float k_one[4] A16 = {1.0f, 1.0f, 1.0f, 1.0f};
+static const uint32_t k_low8[4] A16 = {255u, 255u, 255u, 255u};
+static const float k_6[4] A16 = {6.0f, 6.0f, 6.0f, 6.0f}, k_15[4] A16 = {15.0f, 15.0f, 15.0f, 15.0f},
+                   k_10[4] A16 = {10.0f, 10.0f, 10.0f, 10.0f};
+/* per lane: pre-scale of the offset, field mask, corner's count of 1 offsets */
+static const float k_sx[8] A32 = {1.0f, 1.0f, 1.0f, 1.0f, 0x1p-16f, 0x1p-16f, 0x1p-16f, 0x1p-16f};
+static const float k_sy[8] A32 = {0x1p-2f, 0x1p-2f, 0x1p-2f, 0x1p-2f,
+                                  0x1p-18f, 0x1p-18f, 0x1p-18f, 0x1p-18f};
+static const float k_sz[8] A32 = {0x1p-4f, 0x1p-4f, 0x1p-4f, 0x1p-4f,
+                                  0x1p-20f, 0x1p-20f, 0x1p-20f, 0x1p-20f};
+static const uint32_t k_mx[8] A32 = {3u, 3u, 3u, 3u, 3u << 16, 3u << 16, 3u << 16, 3u << 16};
+static const uint32_t k_my[8] A32 = {12u, 12u, 12u, 12u, 3u << 18, 3u << 18, 3u << 18, 3u << 18};
+static const uint32_t k_mz[8] A32 = {48u, 48u, 48u, 48u, 3u << 20, 3u << 20, 3u << 20, 3u << 20};
+static const float k_o[8] A32 = {0.0f, 1.0f, 1.0f, 2.0f, 1.0f, 2.0f, 2.0f, 3.0f};
+
+#define LD4(a) _mm_load_ps((const float *)(a))
+#define LD8(a) _mm256_load_ps((const float *)(a))
+#define LD8I(a) _mm256_load_si256((const __m256i *)(a))
+
+V3 static inline __attribute__((always_inline)) float
+point3_avx2(const pf_noise_table *t, float x, float y, float z)
+{
+    const uint32_t *restrict hash = t->hash, *restrict g = t->g3;
+    /* {x, y, z, z}: lane 3 repeats z (checked and computed, never read) */
+    __m128 p = _mm_setr_ps(x, y, z, z);
+    /* |p| < 2^22 (pf_small4); anything else goes to the SSE2 body */
+    if (__builtin_expect(_mm_movemask_ps(_mm_cmplt_ps(_mm_and_ps(p, LD4(k_abs)), LD4(k_lim))) != 15,
+                         0))
+        return pf_noise3f_t_sse2_(t, x, y, z);
+
+    /* pf_cell4: the cell floor(p) mod 256 and the offset d0 = p - floor(p) */
+    __m128 m = _mm_add_ps(p, LD4(k_big)), r = _mm_sub_ps(m, LD4(k_big));
+    __m128 up = _mm_cmplt_ps(p, r);
+    __m128i L = _mm_and_si128(_mm_add_epi32(_mm_castps_si128(m), _mm_castps_si128(up)),
+                              _mm_load_si128((const __m128i *)k_low8));
+    __m128 d0 = _mm_add_ps(_mm_sub_ps(p, r), _mm_and_ps(up, LD4(k_one)));
+    __m128 d1 = _mm_sub_ps(d0, LD4(k_one));
+    /* pf_fade4: t·t·t·(t·(t·6 − 15) + 10) */
+    __m128 f = _mm_mul_ps(_mm_mul_ps(_mm_mul_ps(d0, d0), d0),
+                          _mm_add_ps(_mm_mul_ps(d0, _mm_sub_ps(_mm_mul_ps(d0, LD4(k_6)), LD4(k_15))),
+                                     LD4(k_10)));
+
+    size_t X = (uint32_t)_mm_cvtsi128_si32(L), Y = (uint32_t)_mm_extract_epi32(L, 1),
+           Z = (uint32_t)_mm_extract_epi32(L, 2);
+    uint32_t P = hash[X];
+    const uint32_t *hY = hash + Y, *gZ = g + Z;
+    uint32_t PA = hY[P & 0xffffu], PB = hY[P >> 16];
+    /* codes c_ij of corners (i, j, *), in lanes i + 2j of both halves */
+    __m256i b00 = _mm256_set1_epi32((int32_t)gZ[PA & 0xffffu]),
+            b01 = _mm256_set1_epi32((int32_t)gZ[PA >> 16]),
+            b10 = _mm256_set1_epi32((int32_t)gZ[PB & 0xffffu]),
+            b11 = _mm256_set1_epi32((int32_t)gZ[PB >> 16]);
+    __m256i C = _mm256_blend_epi32(_mm256_blend_epi32(b00, b10, 0x22),
+                                   _mm256_blend_epi32(b01, b11, 0x88), 0xcc);
+
+    /* offsets per lane, pre-scaled like core3's x0h, y0l, z1h... */
+    __m128 t01 = _mm_unpacklo_ps(d0, d1); /* x0 x1 y0 y1 */
+    __m256 tt = _mm256_set_m128(t01, t01);
+    __m256 xx = _mm256_mul_ps(_mm256_permute_ps(tt, 0x44), LD8(k_sx)); /* x0 x1 x0 x1 */
+    __m256 yy = _mm256_mul_ps(_mm256_permute_ps(tt, 0xfa), LD8(k_sy)); /* y0 y0 y1 y1 */
+    __m256 zz = _mm256_mul_ps(_mm256_set_m128(_mm_permute_ps(d1, 0xaa), _mm_permute_ps(d0, 0xaa)),
+                              LD8(k_sz)); /* z0 ×4, z1 ×4 */
+    /* S = (x0 + y0) + z0, then S − (number of 1 offsets of the corner) */
+    __m128 S = _mm_add_ps(_mm_add_ps(d0, _mm_movehdup_ps(d0)), _mm_movehl_ps(d0, d0));
+    __m256 ss = _mm256_sub_ps(_mm256_broadcastss_ps(S), LD8(k_o));
+
+    __m256 kx = _mm256_cvtepi32_ps(_mm256_and_si256(C, LD8I(k_mx))),
+           ky = _mm256_cvtepi32_ps(_mm256_and_si256(C, LD8I(k_my))),
+           kz = _mm256_cvtepi32_ps(_mm256_and_si256(C, LD8I(k_mz)));
+    __m256 n = _mm256_sub_ps(_mm256_fmadd_ps(kz, zz, _mm256_fmadd_ps(ky, yy, _mm256_mul_ps(kx, xx))),
+                             ss);
+
+    __m256 u = _mm256_broadcastss_ps(f), v = _mm256_broadcastss_ps(_mm_movehdup_ps(f));
+    __m256 a = _mm256_add_ps(n, _mm256_mul_ps(u, _mm256_sub_ps(_mm256_movehdup_ps(n), n)));
+    __m256 b = _mm256_add_ps(a, _mm256_mul_ps(v, _mm256_sub_ps(_mm256_permute_ps(a, 0xee), a)));
+    __m128 b0 = _mm256_castps256_ps128(b), b1 = _mm256_extractf128_ps(b, 1);
+    return _mm_cvtss_f32(_mm_add_ss(b0, _mm_mul_ss(_mm_movehl_ps(f, f), _mm_sub_ss(b1, b0))));
+}
+
+V3 float pf_noise3f_t_avx2_(const pf_noise_table *t, float x, float y, float z)
+{
+    return point3_avx2(t ? t : &pf_noise_default_, x, y, z);
+}
+
+V3 static float noise3_avx2(float x, float y, float z)
+{
+    return point3_avx2(&pf_noise_default_, x, y, z);
+}
+
+/* Load-time choice (ifunc resolvers run before constructors and before the
+ * sanitizers' runtime is set up: nothing here may be instrumented). */
+typedef float noise3_fn(float, float, float);
+typedef float noise3t_fn(const pf_noise_table *, float, float, float);
+#define PF_RESOLVER __attribute__((no_sanitize_address, no_sanitize_undefined, used))
+
+PF_RESOLVER static noise3_fn *pick_noise3(void)
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("x86-64-v3") ? noise3_avx2 : pf_noise3f_sse2_;
+}
+
+PF_RESOLVER static noise3t_fn *pick_noise3t(void)
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("x86-64-v3") ? pf_noise3f_t_avx2_ : pf_noise3f_t_sse2_;
+}
+
+float pf_noise3f(float x, float y, float z) __attribute__((ifunc("pick_noise3")));
+float pf_noise3f_t(const pf_noise_table *t, float x, float y, float z)
+    __attribute__((ifunc("pick_noise3t")));
+
+#else /* no dispatch: the SSE2 (or generic) body */
+
+float pf_noise3f(float x, float y, float z) { return pf_noise3f_sse2_(x, y, z); }
+
+float pf_noise3f_t(const pf_noise_table *t, float x, float y, float z)
+{
+    return pf_noise3f_t_sse2_(t, x, y, z);
+}
+
+#endif
