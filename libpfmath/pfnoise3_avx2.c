@@ -47,7 +47,6 @@
 #define A16 __attribute__((aligned(16)))
 #define A32 __attribute__((aligned(32)))
 static const float k_big[4] A16 = {12582912.0f, 12582912.0f, 12582912.0f, 12582912.0f};
-static const float k_one[4] A16 = {1.0f, 1.0f, 1.0f, 1.0f};
 static const float k_6[4] A16 = {6.0f, 6.0f, 6.0f, 6.0f}, k_15[4] A16 = {15.0f, 15.0f, 15.0f, 15.0f},
                    k_10[4] A16 = {10.0f, 10.0f, 10.0f, 10.0f};
 /* per lane: pre-scale of the offset, field mask, corner's count of 1 offsets */
@@ -59,6 +58,9 @@ static const float k_sz[8] A32 = {0x1p-4f, 0x1p-4f, 0x1p-4f, 0x1p-4f,
 static const uint32_t k_mx[8] A32 = {3u, 3u, 3u, 3u, 3u << 16, 3u << 16, 3u << 16, 3u << 16};
 static const uint32_t k_my[8] A32 = {12u, 12u, 12u, 12u, 3u << 18, 3u << 18, 3u << 18, 3u << 18};
 static const uint32_t k_mz[8] A32 = {48u, 48u, 48u, 48u, 3u << 20, 3u << 20, 3u << 20, 3u << 20};
+static const float k_01[8] A32 = {0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 1.0f, 1.0f};
+static const int32_t k_px[8] A32 = {0, 4, 0, 4, 0, 4, 0, 4}, k_py[8] A32 = {1, 1, 5, 5, 1, 1, 5, 5},
+                     k_pz[8] A32 = {2, 2, 2, 2, 6, 6, 6, 6};
 static const float k_o[8] A32 = {0.0f, 1.0f, 1.0f, 2.0f, 1.0f, 2.0f, 2.0f, 3.0f};
 
 #define LD4(a) _mm_load_ps((const float *)(a))
@@ -77,15 +79,15 @@ point3_avx2(const pf_noise_table *t, float x, float y, float z)
      * input, huge, infinite and NaN included, so unlike the SSE2 body this
      * one needs no range test and no other path. */
     __m128 fl = _mm_floor_ps(p);
-    __m128 d0 = _mm_sub_ps(p, fl), d1 = _mm_sub_ps(d0, LD4(k_one));
+    __m128 d0 = _mm_sub_ps(p, fl);
     __m128i L = _mm_castps_si128(_mm_add_ps(fl, LD4(k_big)));
     /* pf_fade4: t·t·t·(t·(t·6 − 15) + 10) */
     __m128 f = _mm_mul_ps(_mm_mul_ps(_mm_mul_ps(d0, d0), d0),
                           _mm_add_ps(_mm_mul_ps(d0, _mm_sub_ps(_mm_mul_ps(d0, LD4(k_6)), LD4(k_15))),
                                      LD4(k_10)));
 
-    size_t X = (uint32_t)_mm_cvtsi128_si32(L) & 255u, Y = (uint32_t)_mm_extract_epi32(L, 1) & 255u,
-           Z = (uint32_t)_mm_extract_epi32(L, 2) & 255u;
+    uint64_t xy = (uint64_t)_mm_cvtsi128_si64(L); /* one move for two indices */
+    size_t X = xy & 255u, Y = (xy >> 32) & 255u, Z = (uint32_t)_mm_extract_epi32(L, 2) & 255u;
     uint32_t P = hash[X];
     const uint32_t *hY = hash + Y, *gZ = g + Z;
     uint32_t PA = hY[P & 0xffffu], PB = hY[P >> 16];
@@ -97,13 +99,12 @@ point3_avx2(const pf_noise_table *t, float x, float y, float z)
     __m256i C = _mm256_blend_epi32(_mm256_blend_epi32(b00, b10, 0x22),
                                    _mm256_blend_epi32(b01, b11, 0x88), 0xcc);
 
-    /* offsets per lane, pre-scaled like core3's x0h, y0l, z1h... */
-    __m128 t01 = _mm_unpacklo_ps(d0, d1); /* x0 x1 y0 y1 */
-    __m256 tt = _mm256_set_m128(t01, t01);
-    __m256 xx = _mm256_mul_ps(_mm256_permute_ps(tt, 0x44), LD8(k_sx)); /* x0 x1 x0 x1 */
-    __m256 yy = _mm256_mul_ps(_mm256_permute_ps(tt, 0xfa), LD8(k_sy)); /* y0 y0 y1 y1 */
-    __m256 zz = _mm256_mul_ps(_mm256_set_m128(_mm_permute_ps(d1, 0xaa), _mm_permute_ps(d0, 0xaa)),
-                              LD8(k_sz)); /* z0 ×4, z1 ×4 */
+    /* offsets per lane, pre-scaled like core3's x0h, y0l, z1h...: from
+     * D = (d0 | d1) = x0 y0 z0 z0 x1 y1 z1 z1, one permute each */
+    __m256 D = _mm256_sub_ps(_mm256_set_m128(d0, d0), LD8(k_01));
+    __m256 xx = _mm256_mul_ps(_mm256_permutevar8x32_ps(D, LD8I(k_px)), LD8(k_sx));
+    __m256 yy = _mm256_mul_ps(_mm256_permutevar8x32_ps(D, LD8I(k_py)), LD8(k_sy));
+    __m256 zz = _mm256_mul_ps(_mm256_permutevar8x32_ps(D, LD8I(k_pz)), LD8(k_sz));
     /* S = (x0 + y0) + z0, then S − (number of 1 offsets of the corner) */
     __m128 S = _mm_add_ps(_mm_add_ps(d0, _mm_movehdup_ps(d0)), _mm_movehl_ps(d0, d0));
     __m256 ss = _mm256_sub_ps(_mm256_broadcastss_ps(S), LD8(k_o));
