@@ -115,7 +115,8 @@ point3_avx2(const pf_noise_table *t, float x, float y, float z)
     __m256 n = _mm256_sub_ps(_mm256_fmadd_ps(kz, zz, _mm256_fmadd_ps(ky, yy, _mm256_mul_ps(kx, xx))),
                              ss);
 
-    __m256 u = _mm256_broadcastss_ps(f), v = _mm256_broadcastss_ps(_mm_movehdup_ps(f));
+    __m256 u = _mm256_broadcastss_ps(f),
+           v = _mm256_permutevar8x32_ps(_mm256_castps128_ps256(f), _mm256_set1_epi32(1));
     __m256 a = _mm256_add_ps(n, _mm256_mul_ps(u, _mm256_sub_ps(_mm256_movehdup_ps(n), n)));
     __m256 b = _mm256_add_ps(a, _mm256_mul_ps(v, _mm256_sub_ps(_mm256_permute_ps(a, 0xee), a)));
     __m128 b0 = _mm256_castps256_ps128(b), b1 = _mm256_extractf128_ps(b, 1);
