@@ -61,6 +61,9 @@ static const uint32_t k_mz[8] A32 = {48u, 48u, 48u, 48u, 3u << 20, 3u << 20, 3u 
 static const float k_01[8] A32 = {0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 1.0f, 1.0f};
 static const int32_t k_px[8] A32 = {0, 4, 0, 4, 0, 4, 0, 4}, k_py[8] A32 = {1, 1, 5, 5, 1, 1, 5, 5},
                      k_pz[8] A32 = {2, 2, 2, 2, 6, 6, 6, 6};
+/* v = f[1] for the y-lerp, read in lanes 0 and 4 only (the last index
+ * differs so that GCC keeps the table instead of building a splat) */
+static const int32_t k_1[8] A32 = {1, 1, 1, 1, 1, 1, 1, 0};
 static const float k_o[8] A32 = {0.0f, 1.0f, 1.0f, 2.0f, 1.0f, 2.0f, 2.0f, 3.0f};
 
 #define LD4(a) _mm_load_ps((const float *)(a))
@@ -116,7 +119,7 @@ point3_avx2(const pf_noise_table *t, float x, float y, float z)
                              ss);
 
     __m256 u = _mm256_broadcastss_ps(f),
-           v = _mm256_permutevar8x32_ps(_mm256_castps128_ps256(f), _mm256_set1_epi32(1));
+           v = _mm256_permutevar8x32_ps(_mm256_castps128_ps256(f), LD8I(k_1));
     __m256 a = _mm256_add_ps(n, _mm256_mul_ps(u, _mm256_sub_ps(_mm256_movehdup_ps(n), n)));
     __m256 b = _mm256_add_ps(a, _mm256_mul_ps(v, _mm256_sub_ps(_mm256_permute_ps(a, 0xee), a)));
     __m128 b0 = _mm256_castps256_ps128(b), b1 = _mm256_extractf128_ps(b, 1);
