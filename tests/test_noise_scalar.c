@@ -27,9 +27,10 @@
 
 static int quick;
 
-/* 3D has two scalar bodies (SSE2 and, on x86-64-v3 CPUs, AVX2, picked at
- * load time); body3 = 0 checks the public entry points, 1 the SSE2 body
- * and 2 the AVX2 body (only where the CPU has it). */
+/* 3D has several scalar bodies (SSE2 and, on x86-64-v3/v4 CPUs, AVX2
+ * compiled for each, picked at load time); body3 = 0 checks the public
+ * entry points, 1 the SSE2 body, 2 and 3 the AVX2 body's v3 and v4
+ * compilations (only where the CPU has them). */
 static int body3;
 
 static uint64_t rng_state = 0x9e3779b97f4a7c15u;
@@ -68,23 +69,27 @@ static float coord(void)
     }
 }
 
+/* body3 = 2: the AVX2 body for x86-64-v3, 3: its x86-64-v4 compilation */
 static float scalar3_avx2(const pf_noise_table *t, const float *p)
 {
 #if PF_NOISE3_DISPATCH
+    if (body3 == 3)
+        return pf_noise3f_t_avx512_(t, p[0], p[1], p[2]);
     return pf_noise3f_t_avx2_(t, p[0], p[1], p[2]);
 #else
     (void)t, (void)p;
-    return NAN; /* never called: has_avx2() is 0 */
+    return NAN; /* never called: has_body() is 0 */
 #endif
 }
 
-static int has_avx2(void)
+static int has_body(int b)
 {
 #if PF_NOISE3_DISPATCH
     __builtin_cpu_init();
-    return __builtin_cpu_supports("x86-64-v3");
+    return b == 1 || (b == 2 ? __builtin_cpu_supports("x86-64-v3")
+                             : __builtin_cpu_supports("x86-64-v4"));
 #else
-    return 0;
+    return b == 1;
 #endif
 }
 
@@ -94,9 +99,9 @@ static float scalar(const pf_noise_table *t, int n, const float *p)
         switch (n) {
         case 1: return pf_noise1f(p[0]);
         case 2: return pf_noise2f(p[0], p[1]);
-        case 3: return body3 == 1   ? pf_noise3f_sse2_(p[0], p[1], p[2])
-                       : body3 == 2 ? scalar3_avx2(NULL, p)
-                                    : pf_noise3f(p[0], p[1], p[2]);
+        case 3: return body3 == 1 ? pf_noise3f_sse2_(p[0], p[1], p[2])
+                       : body3    ? scalar3_avx2(NULL, p)
+                                  : pf_noise3f(p[0], p[1], p[2]);
         default: return pf_noise4f(p[0], p[1], p[2], p[3]);
         }
     if (n == 3 && body3)
@@ -196,9 +201,9 @@ static void test_each_3d_body(void **state)
     (void)state;
     static pf_noise_table t;
     pf_noise_table_seed(&t, 7);
-    for (body3 = 1; body3 <= 2; body3++) {
-        if (body3 == 2 && !has_avx2()) {
-            print_message("no x86-64-v3 CPU: AVX2 body not checked\n");
+    for (body3 = 1; body3 <= 3; body3++) {
+        if (!has_body(body3)) {
+            print_message("no x86-64-v%d CPU: body %d not checked\n", body3 + 1, body3);
             continue;
         }
         check_lattice(NULL, 3, 3);
