@@ -224,8 +224,7 @@ int main(int argc, char **argv)
         measure(reps, med[grid]);
     }
     printf("pfnoise-bench: ns per sample (thread CPU time), median of %d interleaved passes "
-           "over %d points; dispatched forms run their widest body for %s (pf_noise3f: AVX2 "
-           "at most)%s\n\n",
+           "over %d points; dispatched forms run their widest body for %s%s\n\n",
            reps, N, isa,
 #ifdef PF_HAVE_STB
            ""
