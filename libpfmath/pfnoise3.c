@@ -54,9 +54,20 @@ PF_INLINE void codes3(const uint32_t *restrict hash, const uint32_t *restrict g,
     c[2] = g[(PB & 0xffffu) + Z], c[3] = g[(PB >> 16) + Z];
 }
 
+/* acc + k·d where k·d is exact (k ∈ {0,1,2}·2^f, d a pre-scaled offset:
+ * the product only shifts d's bits), so the fused multiply-add rounds the
+ * same exact sum once, as the add does, signed zeros included: `fused`
+ * (a constant after inlining) picks FMA where the target has it, with
+ * results bit-identical to the plain form (tests/test_noise_scalar.c
+ * checks the non-fused SSE2 scalar body against the array forms). */
+PF_INLINE float madd_exact(float acc, float k, float d, int fused)
+{
+    return fused ? __builtin_fmaf(k, d, acc) : acc + k * d;
+}
+
 /* The noise at (x, y, z) from its cell's codes (the array body). */
 PF_INLINE float blend3(float x, float y, float z, uint32_t c00, uint32_t c01, uint32_t c10,
-                       uint32_t c11)
+                       uint32_t c11, int fused)
 {
     float xf = floorf(x), yf = floorf(y), zf = floorf(z);
     float x0 = x - xf, y0 = y - yf, z0 = z - zf;
@@ -71,15 +82,17 @@ PF_INLINE float blend3(float x, float y, float z, uint32_t c00, uint32_t c01, ui
     float z0l = z0 * s4, z1h = z1 * s20;
     float S = x0 + y0 + z0;
 
-#define LO(c, xx, yy, ss) (kf(c, 3u) * xx + kf(c, 12u) * yy + kf(c, 48u) * z0l - (ss))
-#define HI(c, xx, yy, ss) \
-    (kf(c, 3u << 16) * xx + kf(c, 3u << 18) * yy + kf(c, 3u << 20) * z1h - (ss))
+#define DOT(c, m, xx, yy, zz)                                                                  \
+    madd_exact(madd_exact(kf(c, m) * xx, kf(c, (m) << 2), yy, fused), kf(c, (m) << 4), zz, fused)
+#define LO(c, xx, yy, ss) (DOT(c, 3u, xx, yy, z0l) - (ss))
+#define HI(c, xx, yy, ss) (DOT(c, 3u << 16, xx, yy, z1h) - (ss))
     float n000 = LO(c00, x0, y0l, S), n001 = HI(c00, x0h, y0h, S - 1.0f);
     float n010 = LO(c01, x0, y1l, S - 1.0f), n011 = HI(c01, x0h, y1h, S - 2.0f);
     float n100 = LO(c10, x1, y0l, S - 1.0f), n101 = HI(c10, x1h, y0h, S - 2.0f);
     float n110 = LO(c11, x1, y1l, S - 2.0f), n111 = HI(c11, x1h, y1h, S - 3.0f);
 #undef LO
 #undef HI
+#undef DOT
 
     float a00 = n000 + u * (n100 - n000), a01 = n001 + u * (n101 - n001);
     float a10 = n010 + u * (n110 - n010), a11 = n011 + u * (n111 - n011);
@@ -98,7 +111,7 @@ PF_INLINE float core3(const uint32_t *restrict hash, const uint32_t *restrict g,
 {
     uint32_t k = cell3(x, y, z), c[4];
     codes3(hash, g, k & 255u, (k >> 8) & 255u, k >> 16, c);
-    return blend3(x, y, z, c[0], c[1], c[2], c[3]);
+    return blend3(x, y, z, c[0], c[1], c[2], c[3], 0);
 }
 
 /* One point: the 8 corners in two vectors, x = 0 corners (000 001 010 011)
@@ -146,14 +159,16 @@ PF_INLINE float point3(const uint32_t *restrict hash, const uint32_t *restrict g
     return b[0] + f[2] * (b[1] - b[0]);
 }
 
-float pf_noise3f_t(const pf_noise_table *t, float x, float y, float z)
+/* The SSE2 bodies of pf_noise3f_t and pf_noise3f (pfnoise3_avx2.c picks
+ * between them and the AVX2 body at load time). */
+float pf_noise3f_t_sse2_(const pf_noise_table *t, float x, float y, float z)
 {
     if (!t)
         t = &pf_noise_default_;
     return point3(t->hash, t->g3, x, y, z);
 }
 
-float pf_noise3f(float x, float y, float z)
+float pf_noise3f_sse2_(float x, float y, float z)
 {
     return point3(pf_noise_default_.hash, pf_noise_default_.g3, x, y, z);
 }
@@ -169,9 +184,8 @@ float pf_noise3f(float x, float y, float z)
  * The blend is the same arithmetic in the same order as core3, so results
  * stay bit-identical to it and to the scalar forms; `out` may still alias
  * an input exactly (each chunk's keys are read before its blend writes). */
-PF_CLONES
-void pf_noise3f_array(const pf_noise_table *t, float *out, const float *x, const float *y,
-                      const float *z, size_t n)
+PF_INLINE void array3(const pf_noise_table *t, float *out, const float *x, const float *y,
+                      const float *z, size_t n, int fused)
 {
     if (!t)
         t = &pf_noise_default_;
@@ -196,6 +210,52 @@ void pf_noise3f_array(const pf_noise_table *t, float *out, const float *x, const
         float *os = out + base;
         PF_IVDEP
         for (size_t i = 0; i < m; i++)
-            os[i] = blend3(xs[i], ys[i], zs[i], cs[i][0], cs[i][1], cs[i][2], cs[i][3]);
+            os[i] = blend3(xs[i], ys[i], zs[i], cs[i][0], cs[i][1], cs[i][2], cs[i][3], fused);
     }
 }
+
+/* One array body per ISA, chosen at load time like target_clones would,
+ * but with FMA for the gradient products where the ISA has it (the clones
+ * of one source would all have to be plain, or all fused). */
+#if PF_NOISE3_DISPATCH
+typedef void array3_fn(const pf_noise_table *, float *, const float *, const float *,
+                       const float *, size_t);
+__attribute__((target("arch=x86-64-v4"))) static void
+array3_v4(const pf_noise_table *t, float *out, const float *x, const float *y, const float *z,
+          size_t n)
+{
+    array3(t, out, x, y, z, n, 1);
+}
+
+__attribute__((target("arch=x86-64-v3"))) static void
+array3_v3(const pf_noise_table *t, float *out, const float *x, const float *y, const float *z,
+          size_t n)
+{
+    array3(t, out, x, y, z, n, 1);
+}
+
+static void array3_base(const pf_noise_table *t, float *out, const float *x, const float *y,
+                        const float *z, size_t n)
+{
+    array3(t, out, x, y, z, n, 0);
+}
+
+/* ifunc resolver: runs before constructors and sanitizers, uninstrumented */
+__attribute__((no_sanitize_address, no_sanitize_undefined, used)) static array3_fn *
+pick_array3(void)
+{
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("x86-64-v4"))
+        return array3_v4;
+    return __builtin_cpu_supports("x86-64-v3") ? array3_v3 : array3_base;
+}
+
+void pf_noise3f_array(const pf_noise_table *t, float *out, const float *x, const float *y,
+                      const float *z, size_t n) __attribute__((ifunc("pick_array3")));
+#else
+void pf_noise3f_array(const pf_noise_table *t, float *out, const float *x, const float *y,
+                      const float *z, size_t n)
+{
+    array3(t, out, x, y, z, n, 0);
+}
+#endif

@@ -96,6 +96,25 @@ PF_INLINE pf_v4f pf_kf4(pf_v4u c, pf_v4u mask)
     return __builtin_convertvector((pf_v4i)(c & mask), pf_v4f);
 }
 
+/* The scalar 3D noise has two bodies, both bit-identical to the array form:
+ * SSE2 (pfnoise3.c, any target) and, on x86-64 with GCC, AVX2
+ * (pfnoise3_avx2.c, compiled for v3 and for v4); pf_noise3f and
+ * pf_noise3f_t run the widest one the CPU has (ifunc).  Internal; tests/test_noise_scalar.c checks each body. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define PF_NOISE3_DISPATCH 1
+#else
+#define PF_NOISE3_DISPATCH 0
+#endif
+#define PF_HIDDEN __attribute__((visibility("hidden")))
+PF_HIDDEN float pf_noise3f_sse2_(float x, float y, float z);
+PF_HIDDEN float pf_noise3f_t_sse2_(const pf_noise_table *t, float x, float y, float z);
+#if PF_NOISE3_DISPATCH
+__attribute__((target("arch=x86-64-v3"))) PF_HIDDEN float
+pf_noise3f_t_avx2_(const pf_noise_table *t, float x, float y, float z);
+__attribute__((target("arch=x86-64-v4"))) PF_HIDDEN float
+pf_noise3f_t_avx512_(const pf_noise_table *t, float x, float y, float z);
+#endif
+
 /* Perlin's permutation's tables, const data generated at build time
  * (pfnoise_table.c): valid before any constructor runs. */
 extern const pf_noise_table pf_noise_default_ __attribute__((visibility("hidden")));

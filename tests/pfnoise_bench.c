@@ -224,7 +224,7 @@ int main(int argc, char **argv)
         measure(reps, med[grid]);
     }
     printf("pfnoise-bench: ns per sample (thread CPU time), median of %d interleaved passes "
-           "over %d points; dispatched forms run their %s clone%s\n\n",
+           "over %d points; dispatched forms run their widest body for %s%s\n\n",
            reps, N, isa,
 #ifdef PF_HAVE_STB
            ""

@@ -23,8 +23,15 @@
 #include <string.h>
 
 #include "pfnoise.h"
+#include "pfnoise_impl.h"
 
 static int quick;
+
+/* 3D has several scalar bodies (SSE2 and, on x86-64-v3/v4 CPUs, AVX2
+ * compiled for each, picked at load time); body3 = 0 checks the public
+ * entry points, 1 the SSE2 body, 2 and 3 the AVX2 body's v3 and v4
+ * compilations (only where the CPU has them). */
+static int body3;
 
 static uint64_t rng_state = 0x9e3779b97f4a7c15u;
 static uint64_t rnd(void) /* splitmix64 */
@@ -39,6 +46,7 @@ static double urand(double lo, double hi) { return lo + (hi - lo) * (double)(rnd
 static float special(void)
 {
     static const float v[] = {0.0f, -0.0f, 0x1p-149f, -0x1p-149f, 0x1p-126f, 1e-30f, -1e-30f,
+                              0x1.fffffep-110f, -0x1.234566p-112f,
                               0.5f, -0.5f, 1.0f, -1.0f, 0x1.fffffep-1f, -0x1.fffffep-1f,
                               255.0f, 256.0f, -256.0f, 0x1p22f - 0.5f, 0x1p22f, -0x1p22f,
                               0x1p23f - 0.5f, 0x1p23f, -0x1p23f, 0x1p23f + 1.0f, 0x1p24f + 2.0f,
@@ -61,15 +69,43 @@ static float coord(void)
     }
 }
 
+/* body3 = 2: the AVX2 body for x86-64-v3, 3: its x86-64-v4 compilation */
+static float scalar3_avx2(const pf_noise_table *t, const float *p)
+{
+#if PF_NOISE3_DISPATCH
+    if (body3 == 3)
+        return pf_noise3f_t_avx512_(t, p[0], p[1], p[2]);
+    return pf_noise3f_t_avx2_(t, p[0], p[1], p[2]);
+#else
+    (void)t, (void)p;
+    return NAN; /* never called: has_body() is 0 */
+#endif
+}
+
+static int has_body(int b)
+{
+#if PF_NOISE3_DISPATCH
+    __builtin_cpu_init();
+    return b == 1 || (b == 2 ? __builtin_cpu_supports("x86-64-v3")
+                             : __builtin_cpu_supports("x86-64-v4"));
+#else
+    return b == 1;
+#endif
+}
+
 static float scalar(const pf_noise_table *t, int n, const float *p)
 {
     if (!t)
         switch (n) {
         case 1: return pf_noise1f(p[0]);
         case 2: return pf_noise2f(p[0], p[1]);
-        case 3: return pf_noise3f(p[0], p[1], p[2]);
+        case 3: return body3 == 1 ? pf_noise3f_sse2_(p[0], p[1], p[2])
+                       : body3    ? scalar3_avx2(NULL, p)
+                                  : pf_noise3f(p[0], p[1], p[2]);
         default: return pf_noise4f(p[0], p[1], p[2], p[3]);
         }
+    if (n == 3 && body3)
+        return body3 == 1 ? pf_noise3f_t_sse2_(t, p[0], p[1], p[2]) : scalar3_avx2(t, p);
     switch (n) {
     case 1: return pf_noise1f_t(t, p[0]);
     case 2: return pf_noise2f_t(t, p[0], p[1]);
@@ -95,13 +131,14 @@ static int same(float a, float b)
     return memcmp(&a, &b, sizeof a) == 0;
 }
 
-static void check_table(const pf_noise_table *t)
+/* dimensions lo..hi */
+static void check_table(const pf_noise_table *t, int lo, int hi)
 {
     enum { LEN = 4096 };
     static float p[4][LEN], out[LEN];
     float *pp[4] = {p[0], p[1], p[2], p[3]};
     int rounds = quick ? 4 : 64; /* 2^18 points per dimension */
-    for (int n = 1; n <= 4; n++)
+    for (int n = lo; n <= hi; n++)
         for (int r = 0; r < rounds; r++) {
             for (int i = 0; i < LEN; i++)
                 for (int k = 0; k < 4; k++)
@@ -121,7 +158,7 @@ static void check_table(const pf_noise_table *t)
 /* Every combination of a few integral and half-integral coordinates, signed
  * zeros included: at lattice points the result is a signed zero, whose
  * sign must match too. */
-static void check_lattice(const pf_noise_table *t)
+static void check_lattice(const pf_noise_table *t, int lo, int hi)
 {
     static const float v[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, -0.5f, 255.0f, -256.0f, 0x1p21f};
     enum { K = sizeof v / sizeof v[0], LEN = K * K * K * K };
@@ -130,7 +167,7 @@ static void check_lattice(const pf_noise_table *t)
     for (int i = 0; i < LEN; i++)
         for (int k = 0, j = i; k < 4; k++, j /= K)
             p[k][i] = v[j % K];
-    for (int n = 1; n <= 4; n++) {
+    for (int n = lo; n <= hi; n++) {
         array(t, n, out, pp, LEN);
         for (int i = 0; i < LEN; i++) {
             float q[4] = {p[0][i], p[1][i], p[2][i], p[3][i]};
@@ -145,8 +182,8 @@ static void check_lattice(const pf_noise_table *t)
 static void test_scalar_equals_array_default(void **state)
 {
     (void)state;
-    check_lattice(NULL);
-    check_table(NULL);
+    check_lattice(NULL, 1, 4);
+    check_table(NULL, 1, 4);
 }
 
 static void test_scalar_equals_array_seeded(void **state)
@@ -154,8 +191,27 @@ static void test_scalar_equals_array_seeded(void **state)
     (void)state;
     static pf_noise_table t;
     pf_noise_table_seed(&t, 2026);
-    check_lattice(&t);
-    check_table(&t);
+    check_lattice(&t, 1, 4);
+    check_table(&t, 1, 4);
+}
+
+/* Each 3D body on its own (the public entry runs only one of them here). */
+static void test_each_3d_body(void **state)
+{
+    (void)state;
+    static pf_noise_table t;
+    pf_noise_table_seed(&t, 7);
+    for (body3 = 1; body3 <= 3; body3++) {
+        if (!has_body(body3)) {
+            print_message("no x86-64-v%d CPU: body %d not checked\n", body3 + 1, body3);
+            continue;
+        }
+        check_lattice(NULL, 3, 3);
+        check_table(NULL, 3, 3);
+        check_lattice(&t, 3, 3);
+        check_table(&t, 3, 3);
+    }
+    body3 = 0;
 }
 
 /* Perlin's reference value through every scalar entry of the 3D noise. */
@@ -197,6 +253,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_scalar_equals_array_default),
         cmocka_unit_test(test_scalar_equals_array_seeded),
+        cmocka_unit_test(test_each_3d_body),
         cmocka_unit_test(test_reference_value),
         cmocka_unit_test(test_null_table),
     };
