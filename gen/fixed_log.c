@@ -199,7 +199,7 @@ static void emit16(fx_gen *G, fx_buf *b, int base2)
                  base2 ? "" : " (e ln2 = round(e 2^a K 2^-15), K = round(ln2 2^15) from MPFR, the rounding "
                               "multiply-high)");
     fx_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
-    fx_emit_norm16(&body, nb);
+    fx_emit_norm16(G, &body, nb);
     fx_put(&body, "\n");
     const char *to = fx_opaque16(G, "t");
     fx_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", to);
