@@ -5,9 +5,9 @@
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
  * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
- *              constant shifts and selects), t in [0, 1) the 15 bits below the leading one 
- *              (exact); log2(x) = e + P(t) summed in an int16_t at 2^-11, rounded once; x <= 0 
- *              -> -32768 (most negative)
+ *              constant shifts and selects; on AVX-512 CPUs a leading-zero count, the same n), 
+ *              t in [0, 1) the 15 bits below the leading one (exact); log2(x) = e + P(t) summed 
+ *              in an int16_t at 2^-11, rounded once; x <= 0 -> -32768 (most negative)
  * Domain:      log2(1+t) on t in [0, 1]
  * Order:       4 (5 fixed-point coefficients; int16_t words: 16-bit lanes)
  * Lanes:       every step in 16-bit lanes
@@ -260,8 +260,7 @@ PF_FX_INLINE int16_t pf_log2_uq8_q11_inline(uint16_t x, const int16_t *k, int bw
     int16_t z = (int16_t)(ea + pf_fx_rsh16(p, 3)); /* e + P at 2^-11 */
     int16_t r = z;
     int16_t rc = (int16_t)r;
-    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */
-    return (int16_t)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)-32768 & m));
+    return (int16_t)(x <= 0 ? -32768 : rc);
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */

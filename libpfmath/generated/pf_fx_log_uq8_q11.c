@@ -5,9 +5,10 @@
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
  * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
- *              constant shifts and selects), t in [0, 1) the 15 bits below the leading one 
- *              (exact); log(x) = e ln2 + P(t) summed in an int32_t at 2^-27 (ln2 = K 2^-Ez, K 
- *              from MPFR), rounded once; x <= 0 -> -32768 (most negative)
+ *              constant shifts and selects; on AVX-512 CPUs a leading-zero count, the same n), 
+ *              t in [0, 1) the 15 bits below the leading one (exact); log(x) = e ln2 + P(t) 
+ *              summed in an int32_t at 2^-27 (ln2 = K 2^-Ez, K from MPFR), rounded once; x <= 0 
+ *              -> -32768 (most negative)
  * Domain:      log(1+t) on t in [0, 1]
  * Order:       4 (5 fixed-point coefficients; int16_t words: 16-bit lanes)
  * Lanes:       the sum e ln2 + P and its rounding are in 32-bit lanes: at the 16-bit sum's lsb 
