@@ -228,7 +228,7 @@ PF_FX_INLINE int16_t pf_sin_q12_q14_fast_inline(int16_t x, const int16_t *k, int
     /* phase w = (u + 1) mod 4, 2^-14 units */
     uint16_t ax = pf_fx_abs16(x); /* |x| */
     uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)k[0] + (uint16_t)pf_fx_mulhrs((int16_t)ax, k[1]) + 0x4000u);
-    w = (uint16_t)(w + ((uint16_t)(0u - (uint16_t)(ax == 32768u)) & (uint16_t)(2 * k[1])));
+    w = (uint16_t)(ax == 32768u ? w + 2 * k[1] : w);
     /* fold: v = w - 1 on [0, 2), 3 - w on [2, 4), in [-1, 1] (2^-14), then 2^-15 units */
     uint16_t aw = pf_fx_abs16((int16_t)(w ^ 0x8000u)); /* |w - 2| in [0, 2] */
     aw = (uint16_t)(aw < 1u ? 1u : aw > 32767u ? 32767u : aw); /* +-1 held below */
