@@ -390,6 +390,7 @@ char *fx_emit(const fx_gen *G, size_t *len)
     pf_buf b = {0};
     fx_gen *g = (fx_gen *)G; /* emit() fills the 16-bit constant table */
     g->nk = 0;
+    g->bw16 = 0;
     pf_buf body = {0};
     G->fn->emit(g, &body); /* first: it may note wider steps for the provenance */
     provenance(&b, G);
@@ -404,9 +405,42 @@ char *fx_emit(const fx_gen *G, size_t *len)
             pf_printf(&kl, "\n    %lld,%*s/* k[%d]: %s */", (long long)G->kval[i], 7 - (int)snprintf(NULL, 0, "%lld", (long long)G->kval[i]), "", i, G->kwhat[i]);
         char nk[16];
         snprintf(nk, sizeof nk, "%d", G->nk);
-        const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "NK", nk, "KLIST", kl.s ? kl.s : "", NULL};
+        /* a kernel with an AVX-512BW form gets a loop of its own for CPUs
+           that have it, chosen at run time, ahead of the clones */
+        pf_buf bwa = {0}, bwc = {0};
+        if (G->bw16) {
+            const char *cond = "#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)\n";
+            pf_printf(&bwa,
+                      "/* AVX-512 has a 16-bit per-element shift (vpsrlvw) and a leading-zero count\n"
+                      "   (vplzcntd), AVX2 neither: on a CPU with x86-64-v4 the array form runs this\n"
+                      "   loop, whose kernel (bw = 1) uses them; the clones below keep the forms every\n"
+                      "   level vectorizes (bw = 0), as the scalar form does.  The same values\n"
+                      "   (pfmathgen sweeps the array form on its machine against the scalar one). */\n"
+                      "%s__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
+                      "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n"
+                      "{\n"
+                      "    const int16_t *k = %s_k;\n"
+                      "    __asm__(\"\" : \"+r\"(k));\n"
+                      "#pragma GCC ivdep\n"
+                      "    for (size_t i = 0; i < n; i++)\n"
+                      "        y[i] = %s_inline(x[i], k, 1);\n"
+                      "}\n"
+                      "#endif\n\n",
+                      cond, G->name, G->it, G->ot, G->name, G->name);
+            pf_printf(&bwc,
+                      "%s    if (__builtin_cpu_supports(\"x86-64-v4\")) {\n"
+                      "        %s_array_bw(x, y, n);\n"
+                      "        return;\n"
+                      "    }\n"
+                      "#endif\n",
+                      cond, G->name);
+        }
+        const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "NK", nk, "KLIST", kl.s ? kl.s : "",
+                            "BWARRAY", bwa.s ? bwa.s : "", "BWCALL", bwc.s ? bwc.s : "", NULL};
         pf_subst(&b, pf_template("fx_tail16.c"), kv);
         free(kl.s);
+        free(bwa.s);
+        free(bwc.s);
     } else {
         const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, NULL};
         pf_subst(&b, pf_template("fx_tail.c"), kv);
@@ -692,15 +726,26 @@ void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int
     pf_put(b, ";");
 }
 
-void fx_emit_norm16(pf_buf *b, int nb)
+void fx_emit_norm16(fx_gen *G, pf_buf *b, int nb)
 {
-    /* u = ux 2^(16 - nb), then four (or fewer) stages shift the leading
-       one up to bit 15: constant shifts and selects, 16-bit lanes */
-    pf_printf(b, "    uint16_t u = (uint16_t)(ux << %d);\n    int16_t n = %d; /* bitlen(ux) - 1 */\n", 16 - nb, nb - 1);
+    /* bw = 0: u = ux 2^(16 - nb), then four (or fewer) stages shift the
+       leading one up to bit 15: constant shifts and selects, 16-bit lanes.
+       bw = 1 (AVX-512: vplzcntd, in 32-bit lanes): the leading-zero count
+       of ux >= 1 as a uint32_t, less 16, is the whole shift; about half the
+       vector instructions of the stages, and the same u and n */
+    pf_put(b, "    uint16_t u;\n    int16_t n; /* bitlen(ux) - 1 */\n#if defined(__GNUC__)\n"
+              "    if (bw) {\n"
+              "        int lz = __builtin_clz((uint32_t)ux) - 16; /* ux >= 1: in [0, 15] */\n"
+              "        u = (uint16_t)(ux << lz);\n"
+              "        n = (int16_t)(15 - lz);\n"
+              "    } else\n#endif\n    {\n");
+    pf_printf(b, "        u = (uint16_t)(ux << %d);\n        n = %d;\n", 16 - nb, nb - 1);
     for (int sh = 8; sh >= 1; sh /= 2)
         if (sh < nb)
-            pf_printf(b, "    n = (int16_t)(u < 0x%xu ? n - %d : n);\n    u = (uint16_t)(u < 0x%xu ? u << %d : u);\n",
+            pf_printf(b, "        n = (int16_t)(u < 0x%xu ? n - %d : n);\n        u = (uint16_t)(u < 0x%xu ? u << %d : u);\n",
                       1u << (16 - sh), sh, 1u << (16 - sh), sh);
+    pf_put(b, "    }\n");
+    G->bw16 = 1;
     pf_put(b, "    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */");
 }
 
@@ -716,19 +761,52 @@ void fx_emit_norm(const fx_gen *G, pf_buf *b)
         pf_put(b, "    int64_t t = (int64_t)(((uint64_t)ux << (63 - n)) - UINT64_C(0x8000000000000000)); /* 2^-63 units */");
 }
 
-void fx_emit_vshift16(pf_buf *b, const char *a, const char *sexpr, int smin, int smax)
+void fx_emit_vshift16(fx_gen *G, pf_buf *b, const char *a, int64_t amax, const char *sexpr, int smin, int smax,
+                      int64_t omax)
 {
-    /* h = floor(a 2^(1 + L - s')) with s' = s + L >= 0 (L lifts negative
-       shifts), then r = (h + 1) >> 1 as (h >> 1) + (h & 1): round(a 2^-s),
-       ties up.  In 32-bit lanes: AVX2 has no per-lane 16-bit shift, and
-       a 2^(1 + L) < 2^32 */
+    /* bw = 0, 32-bit lanes: h = floor(a 2^(1 + L - s')) with s' = s + L >= 0
+       (L lifts negative shifts), then r = (h + 1) >> 1 as (h >> 1) + (h & 1):
+       round(a 2^-s), ties up; a 2^(1 + L) < 2^32.  AVX2 has no per-lane
+       16-bit shift, so this is the form of its clone and the scalar one */
     int L = smin < 0 ? -smin : 0;
     int hi = smax + L;
-    pf_printf(b, "    uint32_t sv = (uint32_t)(%s + %d);\n", sexpr, L);
+    int bw = smin >= -1 && amax <= 32767;
+    G->bw16 |= bw;
+    pf_put(b, "    uint16_t r16;\n");
+    if (bw) {
+        /* bw = 1, 16-bit lanes (AVX-512BW's vpsrlvw): 2a < 2^16, so
+           h = floor(2a 2^-s) for s in [0, 16] is a 16-bit shift (s = 16
+           gives 0, as do vpsrlvw and C's shift of the promoted value; every
+           s >= 16 is sent there: a 2^-s < 1/2 rounds to 0) and (h + 1) >> 1
+           cannot overflow; s = -1 gives 2a = h exactly.  Every value as for
+           bw = 0.  (The clamp at 16, not 15, spares GCC a select: 7 vector
+           instructions fewer per loop.) */
+        /* s ^ 0 (a constant of k[]): where GCC can bound s (exp2's comes
+           straight from the clamped input) it widens the shift to 32-bit
+           lanes; one xor hides the range */
+        pf_printf(b, "    if (bw) { /* a = %s */\n        int16_t s = (int16_t)((%s) ^ %s);\n", a, sexpr,
+                  fx_k16(G, 0, "0 (hides s's range from GCC, see the kernel)"));
+        pf_printf(b, "        uint16_t sc = (uint16_t)(%s%s%s); /* s in [0, 16] */\n", smin < 0 ? "s < 0 ? 0 : " : "",
+                  smax > 16 ? "s > 16 ? 16 : " : "", "s");
+        pf_printf(b, "        uint16_t h = (uint16_t)((uint16_t)(%s << 1) >> sc); /* floor(a 2^(1 - s)) */\n", a);
+        pf_put(b, "        r16 = (uint16_t)((uint16_t)(h + 1u) >> 1); /* round(a 2^-s), ties up */\n");
+        if (smin < 0)
+            pf_put(b, "        r16 = (uint16_t)(s < 0 ? h : r16); /* s = -1: 2a */\n");
+        int64_t rmax = smin < 0 ? 2 * amax : amax;
+        if (rmax > omax)
+            pf_printf(b, "        r16 = (uint16_t)(r16 < %lluu ? r16 : %lluu);\n", (unsigned long long)omax,
+                      (unsigned long long)omax);
+        pf_put(b, "    } else {\n");
+    } else {
+        pf_put(b, "    { /* no 16-bit form: a 2 or s do not fit */\n");
+    }
+    pf_printf(b, "        uint32_t sv = (uint32_t)(%s + %d);\n", sexpr, L);
     if (hi > 31)
-        pf_put(b, "    sv = sv < 31u ? sv : 31u;\n");
-    pf_printf(b, "    uint32_t h = ((uint32_t)%s << %d) >> sv;\n", a, 1 + L);
-    pf_put(b, "    uint32_t r = (h >> 1) + (h & 1u);\n");
+        pf_put(b, "        sv = sv < 31u ? sv : 31u;\n");
+    pf_printf(b, "        uint32_t h = ((uint32_t)%s << %d) >> sv;\n", a, 1 + L);
+    pf_put(b, "        uint32_t r = (h >> 1) + (h & 1u);\n");
+    pf_printf(b, "        r16 = (uint16_t)(r < %lluu ? r : %lluu);\n    }\n", (unsigned long long)omax,
+              (unsigned long long)omax);
 }
 
 void fx_emit_horner(fx_gen *G, pf_buf *b, const char *x, const char *ind)

@@ -260,14 +260,15 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
     char sexpr[64];
     snprintf(sexpr, sizeof sexpr, "%lld - (int32_t)kb", (long long)(Ep - G->out.exp + G->exp.k0));
     pf_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
-    fx_emit_vshift16(&body, "(uint16_t)p", sexpr, smin, smax);
+    fx_emit_vshift16(G, &body, "(uint16_t)p", 32767, sexpr, smin, smax, omax);
     snprintf(G->wide_text, sizeof G->wide_text,
-             "the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit per-element "
-             "shift; the error model does not need them)");
+             G->bw16 ? "the scaling by 2^k is a per-element shift: in 16-bit lanes where AVX-512BW has one "
+                       "(vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element shift); the same values, "
+                       "the error model does not need the wider lanes"
+                     : "the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit "
+                       "per-element shift; the error model does not need them)");
     /* overflow saturates through a mask: GCC 12 widens the whole loop to
        32-bit lanes for a select between a 16-bit comparison and r */
-    pf_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
-              (unsigned long long)omax);
     if (G->exp.sat)
         pf_printf(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x >= %lld)); /* all ones from the first overflowing input */\n"
                          "    return (%s)((r16 & ~m) | (%lluu & m));", (long long)G->exp.xsat, G->ot, (unsigned long long)omax);

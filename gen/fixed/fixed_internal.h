@@ -148,6 +148,7 @@ struct fx_gen {
     int64_t kval[64];
     char kwhat[64][64];
     char wide_text[400];       /* steps in wider lanes, and why (provenance) */
+    int bw16;                  /* the kernel has an AVX-512BW form (fx_emit_vshift16) */
 
     /* sweep of the compiled code */
     int swept, exhaustive;
@@ -181,14 +182,18 @@ const char *fx_opaque16(fx_gen *G, const char *expr);
 /* 16-bit lanes: "return (OT)r" with r in [lo, hi] clamped to the output */
 void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int64_t hi);
 /* 16-bit lanes: a staged normalization of ux (unsigned, nb significant
-   bits at most) to u with bit 15 set and n = bitlen - 1, for log/sqrt */
-void fx_emit_norm16(pf_buf *b, int nb);
+   bits at most) to u with bit 15 set and n = bitlen - 1, for log/sqrt
+   (bw = 1: a leading-zero count; sets G->bw16) */
+void fx_emit_norm16(fx_gen *G, pf_buf *b, int nb);
 /* 32/64-bit words: ux = x (x > 0, stored in at most 32 bits), n =
    bitlen(ux) - 1 and t = ux 2^-n - 1 in [0, 1), for log/sqrt */
 void fx_emit_norm(const fx_gen *G, pf_buf *b);
-/* 16-bit lanes: r = round(a 2^-s) (ties up) in 32-bit lanes for the
-   variable shift s = sexpr in [smin, smax] (smin may be negative) */
-void fx_emit_vshift16(pf_buf *b, const char *a, const char *sexpr, int smin, int smax);
+/* 16-bit lanes: r16 = min(round(a 2^-s), omax) (ties up) for a in
+   [0, amax] and the variable shift s = sexpr in [smin, smax] (smin may be
+   negative): in 32-bit lanes for bw = 0 and, where a 2 and s fit, in
+   16-bit lanes for bw = 1 (vpsrlvw: sets G->bw16); the same values */
+void fx_emit_vshift16(fx_gen *G, pf_buf *b, const char *a, int64_t amax, const char *sexpr, int smin, int smax,
+                      int64_t omax);
 /* description of the formats, for the provenance */
 void fx_formats_text(const fx_gen *G, char *buf, size_t n);
 /* largest value of the output type, as a double */

@@ -190,7 +190,7 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
                  base2 ? "" : " (e ln2 = round(e 2^a K 2^-15), K = round(ln2 2^15) from MPFR, the rounding "
                               "multiply-high)");
     pf_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
-    fx_emit_norm16(&body, nb);
+    fx_emit_norm16(G, &body, nb);
     pf_put(&body, "\n");
     const char *to = fx_opaque16(G, "t");
     pf_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", to);
@@ -243,14 +243,20 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
         pf_put(&body, ";\n");
         snprintf(rc, sizeof rc, "rc");
     }
-    /* x <= 0 through a mask (a select on x makes GCC widen the loop) */
-    pf_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */\n");
-    if (G->log.wide)
+    /* x <= 0: with the sum in 32-bit lanes through a mask (a select on x
+       makes GCC widen the loop); in 16-bit lanes as a select, which the
+       AVX-512 loop does in one masked move (the mask took four
+       instructions; the AVX2 clone's loop is the same either way) */
+    if (G->log.wide) {
+        pf_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */\n");
         pf_printf(&body, "    int16_t rc = %s;\n", rc);
-    pf_printf(&body, "    return (%s)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)%lld & m));", G->ot, (long long)mn);
+        pf_printf(&body, "    return (%s)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)%lld & m));", G->ot, (long long)mn);
+    } else {
+        pf_printf(&body, "    return (%s)(x <= 0 ? %lld : rc);", G->ot, (long long)mn);
+    }
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (a staged normalization: constant shifts and "
-             "selects), t in [0, 1) the 15 bits below the leading one (exact); %s(x) = e%s + P(t) summed %s, "
+             "selects; on AVX-512 CPUs a leading-zero count, the same n), t in [0, 1) the 15 bits below the leading one (exact); %s(x) = e%s + P(t) summed %s, "
              "rounded once; x <= 0 -> %lld (most negative)",
              Ei, base2 ? "log2" : "log", base2 ? "" : " ln2", sumtxt, (long long)mn);
     char minout[32];

@@ -142,7 +142,7 @@ static void emit16(fx_gen *G, pf_buf *b)
     int jlo = ceil_half(elo), jhi = ceil_half(ehi);
     int j0 = elo < 0 ? (-elo + 1) / 2 : 0; /* e + 2 j0 >= 0 */
     pf_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
-    fx_emit_norm16(&body, nb);
+    fx_emit_norm16(G, &body, nb);
     pf_put(&body, "\n");
     pf_printf(&body, "    uint16_t eb = (uint16_t)(n + %d); /* e + 2 j0 >= 0, e = n - %d, j0 = %d */\n", 2 * j0 - Ei, Ei, j0);
     pf_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", fx_opaque16(G, "t"));
@@ -157,12 +157,13 @@ static void emit16(fx_gen *G, pf_buf *b)
     snprintf(sexpr, sizeof sexpr, "%d - (int32_t)((eb + 1) >> 1)", Ep - Eo + j0);
     pf_printf(&body, "    /* y 2^ceil(e/2) rounded once to the output, s = %d - ceil(e/2) in [%d, %d] */\n", Ep - Eo, smin,
               smax);
-    fx_emit_vshift16(&body, "(uint16_t)y", sexpr, smin, smax);
+    fx_emit_vshift16(G, &body, "(uint16_t)y", 32767, sexpr, smin, smax, omax);
     snprintf(G->wide_text, sizeof G->wide_text,
-             "the scaling by 2^ceil(e/2) is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit "
-             "per-element shift; the error model does not need them)");
-    pf_printf(&body, "    uint16_t r16 = (uint16_t)(r < %lluu ? r : %lluu);\n", (unsigned long long)omax,
-              (unsigned long long)omax);
+             G->bw16 ? "the scaling by 2^ceil(e/2) is a per-element shift: in 16-bit lanes where AVX-512BW has "
+                       "one (vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element shift); the same "
+                       "values, the error model does not need the wider lanes"
+                     : "the scaling by 2^ceil(e/2) is a per-element shift, done in 32-bit lanes (AVX2 has no "
+                       "16-bit per-element shift; the error model does not need them)");
     pf_put(&body, "    uint16_t m = (uint16_t)(0u - (uint16_t)(x > 0)); /* x <= 0 gives 0, through a mask */\n");
     pf_printf(&body, "    return (%s)(r16 & m);", G->ot);
     const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};

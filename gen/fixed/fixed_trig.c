@@ -235,15 +235,24 @@ static void emit16(fx_gen *G, pf_buf *b, int is_cos)
     const char *ka = fx_k16(G, G->trig.a16 > 32767 ? G->trig.a16 - 65536 : G->trig.a16,
                             "A (as uint16_t): |x| 2^(15-Ei)/pi = |x| (A + B 2^-15)");
     const char *kb = fx_k16(G, G->trig.b16, "B");
-    const char *ko = fx_k16(G, 1, "1 (see the array form)");
-    pf_printf(&body, "    uint16_t ax = (uint16_t)(x < 0 ? -(int32_t)x : x); /* |x| */\n");
-    pf_printf(&body, "    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)%s + (uint16_t)pf_fx_mulhrs((int16_t)(ax * %s), %s) + %s);\n",
-              ka, ko, kb, is_cos ? "0x8000u" : "0x4000u");
-    if (full) /* |x| = 32768 went through the multiply-high as -32768: it gave -B for B */
-        pf_printf(&body, "    w = (uint16_t)(w + ((uint16_t)(0u - (uint16_t)(ax == 32768u)) & (uint16_t)(2 * %s)));\n", kb);
+    /* ax comes from pabsw, whose range GCC does not track: it needs no
+       product by 1 to keep the multiply-high narrow */
+    pf_printf(&body, "    uint16_t ax = pf_fx_abs16(x); /* |x| */\n");
+    pf_printf(&body, "    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)%s + (uint16_t)pf_fx_mulhrs((int16_t)ax, %s) + %s);\n",
+              ka, kb, is_cos ? "0x8000u" : "0x4000u");
+    if (full) /* |x| = 32768 went through the multiply-high as -32768: it gave -B for B
+                 (a select: AVX-512 adds under a mask, one instruction fewer) */
+        pf_printf(&body, "    w = (uint16_t)(ax == 32768u ? w + 2 * %s : w);\n", kb);
+    /* the fold as one abs: with ws = w - 2 (the uint16_t's top bit flipped,
+       read as an int16_t, in [-2, 2)), w - 1 = 1 + ws on [0, 2) and
+       3 - w = 1 - ws on [2, 4) are both 1 - |ws|; |ws| <= 2 fits a
+       uint16_t.  Clamping |ws| to [2^-14, 2 - 2^-14] holds v = +-1 at
+       +-(1 - 2^-14), as a clamp of v would: the same values, 5 vector
+       instructions instead of about 10 */
     pf_put(&body, "    /* fold: v = w - 1 on [0, 2), 3 - w on [2, 4), in [-1, 1] (2^-14), then 2^-15 units */\n"
-                  "    int16_t v14 = (int16_t)(w < 0x8000u ? (int32_t)w - 0x4000 : 0xc000 - (int32_t)w);\n"
-                  "    int16_t vc = (int16_t)(v14 > 16383 ? 16383 : v14 < -16383 ? -16383 : v14); /* +-1 held below */\n");
+                  "    uint16_t aw = pf_fx_abs16((int16_t)(w ^ 0x8000u)); /* |w - 2| in [0, 2] */\n"
+                  "    aw = (uint16_t)(aw < 1u ? 1u : aw > 32767u ? 32767u : aw); /* +-1 held below */\n"
+                  "    int16_t vc = (int16_t)(0x4000 - (int32_t)aw); /* 1 - |w - 2| = v */\n");
     pf_printf(&body, "    int16_t v = (int16_t)(vc * %s); /* 2^-15 units */\n", fx_k16(G, 2, "2 (see the array form)"));
     pf_put(&body, "    int16_t s = pf_fx_mulhrs(v, v); /* v^2 in [0, 1), 2^-15 units */\n");
     pf_put(&body, "    /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner in 16-bit words, one rounding per step */\n");
@@ -265,7 +274,7 @@ static void emit16(fx_gen *G, pf_buf *b, int is_cos)
         if (Eo > Ep)
             pf_put(&body, "    r = x < 0 ? -r : r; /* sin(-x) = -sin(x) */\n");
         else
-            pf_put(&body, "    int16_t sg = (int16_t)-(x < 0); /* sin(-x) = -sin(x), through a mask */\n"
+            pf_put(&body, "    int16_t sg = pf_fx_sgn16(x); /* sin(-x) = -sin(x), through a mask */\n"
                           "    r = (int16_t)((r ^ sg) - sg);\n");
     }
     fx_emit_return16(G, &body, "r", Eo > Ep ? INT32_MIN : -32768, Eo > Ep ? INT32_MAX : 32767);

@@ -148,6 +148,16 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
    the first forms use because GCC recognizes exactly them as pmulhrsw and
    16-bit shifts; other compilers get the same values from unsigned shifts. */
 
+/* The kernels' bw argument: 1 selects the forms of a step that only
+   AVX-512 runs in 16-bit lanes (a per-element 16-bit shift, a leading-zero
+   count), 0 the forms every x86-64 level vectorizes; both give the same
+   values.  Builds for a baseline with AVX-512BW and CD use the first. */
+#if defined(__GNUC__) && defined(__AVX512BW__) && defined(__AVX512CD__)
+#define PF_FX_BW_NATIVE 1
+#else
+#define PF_FX_BW_NATIVE 0
+#endif
+
 /* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
    Never called with a = b = -32768 (whose result, 2^15, does not fit). */
 PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
@@ -157,6 +167,28 @@ PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 #else
     uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
     return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
+}
+
+/* |x| as a uint16_t (|-32768| = 32768): GCC turns abs() of a promoted
+   int16_t into one pabsw, where x < 0 ? -x : x becomes a compare and a
+   select */
+PF_FX_INLINE uint16_t pf_fx_abs16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (uint16_t)__builtin_abs(x);
+#else
+    return (uint16_t)(x < 0 ? -(int32_t)x : x);
+#endif
+}
+
+/* -1 (all ones) for x < 0, else 0: one arithmetic shift (psraw) */
+PF_FX_INLINE int16_t pf_fx_sgn16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (int16_t)(x >> 15);
+#else
+    return (int16_t)-(x < 0);
 #endif
 }
 
@@ -188,42 +220,44 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    the phase w = (u + 2) mod 4 is a uint16_t with 14 fraction bits, and
    cos(x) = sin(pi/2 (w - 1)).  Fold: v = w - 1 on [0, 2), 3 - w on
    [2, 4) (sin(pi/2 v) = sin(pi/2 (2 - v))), so v is in [-1, 1] and
-   cos(x) = sin(pi/2 v) = v P(v^2).  k[] holds the constants. */
-PF_FX_INLINE int16_t pf_cos_q12_q14_fast_inline(int16_t x, const int16_t *k)
+   cos(x) = sin(pi/2 v) = v P(v^2).  k[] holds the constants; bw (the AVX-512BW form, see
+   fx_tail16.c.in) changes nothing here. */
+PF_FX_INLINE int16_t pf_cos_q12_q14_fast_inline(int16_t x, const int16_t *k, int bw)
 {
+    (void)bw;
     /* phase w = (u + 2) mod 4, 2^-14 units */
-    uint16_t ax = (uint16_t)(x < 0 ? -(int32_t)x : x); /* |x| */
-    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)k[0] + (uint16_t)pf_fx_mulhrs((int16_t)(ax * k[2]), k[1]) + 0x8000u);
-    w = (uint16_t)(w + ((uint16_t)(0u - (uint16_t)(ax == 32768u)) & (uint16_t)(2 * k[1])));
+    uint16_t ax = pf_fx_abs16(x); /* |x| */
+    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)k[0] + (uint16_t)pf_fx_mulhrs((int16_t)ax, k[1]) + 0x8000u);
+    w = (uint16_t)(ax == 32768u ? w + 2 * k[1] : w);
     /* fold: v = w - 1 on [0, 2), 3 - w on [2, 4), in [-1, 1] (2^-14), then 2^-15 units */
-    int16_t v14 = (int16_t)(w < 0x8000u ? (int32_t)w - 0x4000 : 0xc000 - (int32_t)w);
-    int16_t vc = (int16_t)(v14 > 16383 ? 16383 : v14 < -16383 ? -16383 : v14); /* +-1 held below */
-    int16_t v = (int16_t)(vc * k[3]); /* 2^-15 units */
+    uint16_t aw = pf_fx_abs16((int16_t)(w ^ 0x8000u)); /* |w - 2| in [0, 2] */
+    aw = (uint16_t)(aw < 1u ? 1u : aw > 32767u ? 32767u : aw); /* +-1 held below */
+    int16_t vc = (int16_t)(0x4000 - (int32_t)aw); /* 1 - |w - 2| = v */
+    int16_t v = (int16_t)(vc * k[2]); /* 2^-15 units */
     int16_t s = pf_fx_mulhrs(v, v); /* v^2 in [0, 1), 2^-15 units */
     /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner in 16-bit words, one rounding per step */
-    int16_t s1 = pf_fx_mulhrs(s, k[4]); /* s rounded to 2^-14 */
-    int16_t p = k[5]; /* c5 = 0.0733032226562 */
-    p = (int16_t)(pf_fx_mulhrs(p, s) + k[6]); /* c3 = -0.643737792969, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, s1) + k[7]); /* c1 = 1.57067871094, 2^-14 units */
+    int16_t s1 = pf_fx_mulhrs(s, k[3]); /* s rounded to 2^-14 */
+    int16_t p = k[4]; /* c5 = 0.0733032226562 */
+    p = (int16_t)(pf_fx_mulhrs(p, s) + k[5]); /* c3 = -0.643737792969, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, s1) + k[6]); /* c1 = 1.57067871094, 2^-14 units */
     int16_t r = pf_fx_mulhrs(v, p); /* v P, rounded once to the output's lsb */
     return (int16_t)r;
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_cos_q12_q14_fast_k[8] = {
+static const int16_t pf_cos_q12_q14_fast_k[7] = {
     3,      /* k[0]: A (as uint16_t): |x| 2^(15-Ei)/pi = |x| (A + B 2^-15) */
     -14861, /* k[1]: B */
-    1,      /* k[2]: 1 (see the array form) */
-    2,      /* k[3]: 2 (see the array form) */
-    16384,  /* k[4]: 2^14: s rounded to 14 fraction bits */
-    2402,   /* k[5]: c5 = 0.0733032226562 */
-    -21094, /* k[6]: c3 = -0.643737792969 */
-    25734,  /* k[7]: c1 = 1.57067871094 */
+    2,      /* k[2]: 2 (see the array form) */
+    16384,  /* k[3]: 2^14: s rounded to 14 fraction bits */
+    2402,   /* k[4]: c5 = 0.0733032226562 */
+    -21094, /* k[5]: c3 = -0.643737792969 */
+    25734,  /* k[6]: c1 = 1.57067871094 */
 };
 
 int16_t pf_cos_q12_q14_fast(int16_t x)
 {
-    return pf_cos_q12_q14_fast_inline(x, pf_cos_q12_q14_fast_k);
+    return pf_cos_q12_q14_fast_inline(x, pf_cos_q12_q14_fast_k, 0);
 }
 
 /* Array form in 16-bit lanes.  The constants come through a pointer that an
@@ -251,5 +285,5 @@ void pf_cos_q12_q14_fast_array(const int16_t *restrict x, int16_t *restrict y, s
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_cos_q12_q14_fast_inline(x[i], k);
+        y[i] = pf_cos_q12_q14_fast_inline(x[i], k, PF_FX_BW_NATIVE);
 }

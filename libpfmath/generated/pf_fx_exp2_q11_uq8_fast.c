@@ -9,8 +9,9 @@
  *              from there
  * Domain:      2^t on t in [0, 1]
  * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 
- *              16-bit per-element shift; the error model does not need them)
+ * Lanes:       the scaling by 2^k is a per-element shift: in 16-bit lanes where AVX-512BW has 
+ *              one (vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element shift); the 
+ *              same values, the error model does not need the wider lanes
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
  *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
  * Constraints: p(0) = 1 (exact powers of 2 at integer t)
@@ -146,6 +147,16 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
    the first forms use because GCC recognizes exactly them as pmulhrsw and
    16-bit shifts; other compilers get the same values from unsigned shifts. */
 
+/* The kernels' bw argument: 1 selects the forms of a step that only
+   AVX-512 runs in 16-bit lanes (a per-element 16-bit shift, a leading-zero
+   count), 0 the forms every x86-64 level vectorizes; both give the same
+   values.  Builds for a baseline with AVX-512BW and CD use the first. */
+#if defined(__GNUC__) && defined(__AVX512BW__) && defined(__AVX512CD__)
+#define PF_FX_BW_NATIVE 1
+#else
+#define PF_FX_BW_NATIVE 0
+#endif
+
 /* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
    Never called with a = b = -32768 (whose result, 2^15, does not fit). */
 PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
@@ -155,6 +166,28 @@ PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 #else
     uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
     return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
+}
+
+/* |x| as a uint16_t (|-32768| = 32768): GCC turns abs() of a promoted
+   int16_t into one pabsw, where x < 0 ? -x : x becomes a compare and a
+   select */
+PF_FX_INLINE uint16_t pf_fx_abs16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (uint16_t)__builtin_abs(x);
+#else
+    return (uint16_t)(x < 0 ? -(int32_t)x : x);
+#endif
+}
+
+/* -1 (all ones) for x < 0, else 0: one arithmetic shift (psraw) */
+PF_FX_INLINE int16_t pf_fx_sgn16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (int16_t)(x >> 15);
+#else
+    return (int16_t)-(x < 0);
 #endif
 }
 
@@ -187,9 +220,12 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    2^f = P(f) in [1, 2), and the result is P(f) 2^k, rounded once.  Inputs
    at or above 16384 (stored) saturate to the output's max; inputs below
    -20481 (stored), where the result is below 1/4 lsb, compute as -20481 (0).
-   k[] holds the constants. */
-PF_FX_INLINE uint16_t pf_exp2_q11_uq8_fast_inline(int16_t x, const int16_t *k)
+   k[] holds the constants; bw picks the form of the per-element
+   shift (1: 16-bit lanes, for AVX-512BW's vpsrlvw; 0: 32-bit lanes), which
+   give the same values. */
+PF_FX_INLINE uint16_t pf_exp2_q11_uq8_fast_inline(int16_t x, const int16_t *k, int bw)
 {
+    (void)bw; /* unused where no step has an AVX-512BW form */
     int16_t xc = (int16_t)x;
     xc = (int16_t)(xc < -20481 ? -20481 : xc);
     xc = (int16_t)(xc > 16383 ? 16383 : xc);
@@ -203,28 +239,55 @@ PF_FX_INLINE uint16_t pf_exp2_q11_uq8_fast_inline(int16_t x, const int16_t *k)
     p = (int16_t)(pf_fx_mulhrs(p, f) + k[4]); /* c1 = 0.695037841797, 2^-15 units */
     p = (int16_t)(pf_fx_mulhrs(p, f1) + k[5]); /* c0 = 1, 2^-14 units */
     /* P 2^k rounded once to the output, s = 6 - k in [-1, 17] */
-    uint32_t sv = (uint32_t)(17 - (int32_t)kb + 1);
-    uint32_t h = ((uint32_t)(uint16_t)p << 2) >> sv;
-    uint32_t r = (h >> 1) + (h & 1u);
-    uint16_t r16 = (uint16_t)(r < 65535u ? r : 65535u);
+    uint16_t r16;
+    if (bw) { /* a = (uint16_t)p */
+        int16_t s = (int16_t)((17 - (int32_t)kb) ^ k[6]);
+        uint16_t sc = (uint16_t)(s < 0 ? 0 : s > 16 ? 16 : s); /* s in [0, 16] */
+        uint16_t h = (uint16_t)((uint16_t)((uint16_t)p << 1) >> sc); /* floor(a 2^(1 - s)) */
+        r16 = (uint16_t)((uint16_t)(h + 1u) >> 1); /* round(a 2^-s), ties up */
+        r16 = (uint16_t)(s < 0 ? h : r16); /* s = -1: 2a */
+    } else {
+        uint32_t sv = (uint32_t)(17 - (int32_t)kb + 1);
+        uint32_t h = ((uint32_t)(uint16_t)p << 2) >> sv;
+        uint32_t r = (h >> 1) + (h & 1u);
+        r16 = (uint16_t)(r < 65535u ? r : 65535u);
+    }
     uint16_t m = (uint16_t)(0u - (uint16_t)(x >= 16384)); /* all ones from the first overflowing input */
     return (uint16_t)((r16 & ~m) | (65535u & m));
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_exp2_q11_uq8_fast_k[6] = {
+static const int16_t pf_exp2_q11_uq8_fast_k[7] = {
     16,     /* k[0]: 2^4: f to 2^-15 units */
     16384,  /* k[1]: 2^14: f rounded to 14 fraction bits */
     2501,   /* k[2]: c3 = 0.0763244628906 */
     7481,   /* k[3]: c2 = 0.228302001953 */
     22775,  /* k[4]: c1 = 0.695037841797 */
     16384,  /* k[5]: c0 = 1 */
+    0,      /* k[6]: 0 (hides s's range from GCC, see the kernel) */
 };
 
 uint16_t pf_exp2_q11_uq8_fast(int16_t x)
 {
-    return pf_exp2_q11_uq8_fast_inline(x, pf_exp2_q11_uq8_fast_k);
+    return pf_exp2_q11_uq8_fast_inline(x, pf_exp2_q11_uq8_fast_k, 0);
 }
+
+/* AVX-512 has a 16-bit per-element shift (vpsrlvw) and a leading-zero count
+   (vplzcntd), AVX2 neither: on a CPU with x86-64-v4 the array form runs this
+   loop, whose kernel (bw = 1) uses them; the clones below keep the forms every
+   level vectorizes (bw = 0), as the scalar form does.  The same values
+   (pfmathgen sweeps the array form on its machine against the scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_exp2_q11_uq8_fast_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    const int16_t *k = pf_exp2_q11_uq8_fast_k;
+    __asm__("" : "+r"(k));
+#pragma GCC ivdep
+    for (size_t i = 0; i < n; i++)
+        y[i] = pf_exp2_q11_uq8_fast_inline(x[i], k, 1);
+}
+#endif
 
 /* Array form in 16-bit lanes.  The constants come through a pointer that an
    empty asm hides from GCC: GCC 12 rewrites a product by a known constant
@@ -243,6 +306,12 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_exp2_q11_uq8_fast_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+    if (__builtin_cpu_supports("x86-64-v4")) {
+        pf_exp2_q11_uq8_fast_array_bw(x, y, n);
+        return;
+    }
+#endif
     const int16_t *k = pf_exp2_q11_uq8_fast_k;
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
@@ -251,5 +320,5 @@ void pf_exp2_q11_uq8_fast_array(const int16_t *restrict x, uint16_t *restrict y,
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_exp2_q11_uq8_fast_inline(x[i], k);
+        y[i] = pf_exp2_q11_uq8_fast_inline(x[i], k, PF_FX_BW_NATIVE);
 }

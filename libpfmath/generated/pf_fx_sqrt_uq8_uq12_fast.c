@@ -10,8 +10,10 @@
  *              2^-15 = P 23170 2^-15 by the rounding multiply-high, MPFR); x <= 0 -> 0
  * Domain:      sqrt(1+t) on t in [0, 1]
  * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       the scaling by 2^ceil(e/2) is a per-element shift, done in 32-bit lanes (AVX2 
- *              has no 16-bit per-element shift; the error model does not need them)
+ * Lanes:       the scaling by 2^ceil(e/2) is a per-element shift: in 16-bit lanes where 
+ *              AVX-512BW has one (vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit 
+ *              per-element shift); the same values, the error model does not need the wider 
+ *              lanes
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
  *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
  * Constraints: p(0) = 1 (exact at powers of 4)
@@ -147,6 +149,16 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
    the first forms use because GCC recognizes exactly them as pmulhrsw and
    16-bit shifts; other compilers get the same values from unsigned shifts. */
 
+/* The kernels' bw argument: 1 selects the forms of a step that only
+   AVX-512 runs in 16-bit lanes (a per-element 16-bit shift, a leading-zero
+   count), 0 the forms every x86-64 level vectorizes; both give the same
+   values.  Builds for a baseline with AVX-512BW and CD use the first. */
+#if defined(__GNUC__) && defined(__AVX512BW__) && defined(__AVX512CD__)
+#define PF_FX_BW_NATIVE 1
+#else
+#define PF_FX_BW_NATIVE 0
+#endif
+
 /* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
    Never called with a = b = -32768 (whose result, 2^15, does not fit). */
 PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
@@ -156,6 +168,28 @@ PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 #else
     uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
     return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
+}
+
+/* |x| as a uint16_t (|-32768| = 32768): GCC turns abs() of a promoted
+   int16_t into one pabsw, where x < 0 ? -x : x becomes a compare and a
+   select */
+PF_FX_INLINE uint16_t pf_fx_abs16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (uint16_t)__builtin_abs(x);
+#else
+    return (uint16_t)(x < 0 ? -(int32_t)x : x);
+#endif
+}
+
+/* -1 (all ones) for x < 0, else 0: one arithmetic shift (psraw) */
+PF_FX_INLINE int16_t pf_fx_sgn16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (int16_t)(x >> 15);
+#else
+    return (int16_t)-(x < 0);
 #endif
 }
 
@@ -187,20 +221,35 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    e from a staged normalization of the stored integer, t its remaining bits
    (exact).  sqrt(x) = 2^ceil(e/2) P(t) (divided by sqrt 2 if e is odd),
    P(t) ~ sqrt(1 + t).  x <= 0 gives 0 (sqrt of a negative number is
-   defined as 0).  k[] holds the constants. */
-PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_fast_inline(uint16_t x, const int16_t *k)
+   defined as 0).  k[] holds the constants; bw = 1 (AVX-512 CPUs, see
+   fx_tail16.c.in) takes the leading-zero count for the normalization and,
+   where it fits, a 16-bit per-element shift (vpsrlvw); bw = 0 the staged
+   normalization and a shift in 32-bit lanes: the same values. */
+PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_fast_inline(uint16_t x, const int16_t *k, int bw)
 {
+    (void)bw; /* unused where no step has an AVX-512BW form */
     uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */
-    uint16_t u = (uint16_t)(ux << 0);
-    int16_t n = 15; /* bitlen(ux) - 1 */
-    n = (int16_t)(u < 0x100u ? n - 8 : n);
-    u = (uint16_t)(u < 0x100u ? u << 8 : u);
-    n = (int16_t)(u < 0x1000u ? n - 4 : n);
-    u = (uint16_t)(u < 0x1000u ? u << 4 : u);
-    n = (int16_t)(u < 0x4000u ? n - 2 : n);
-    u = (uint16_t)(u < 0x4000u ? u << 2 : u);
-    n = (int16_t)(u < 0x8000u ? n - 1 : n);
-    u = (uint16_t)(u < 0x8000u ? u << 1 : u);
+    uint16_t u;
+    int16_t n; /* bitlen(ux) - 1 */
+#if defined(__GNUC__)
+    if (bw) {
+        int lz = __builtin_clz((uint32_t)ux) - 16; /* ux >= 1: in [0, 15] */
+        u = (uint16_t)(ux << lz);
+        n = (int16_t)(15 - lz);
+    } else
+#endif
+    {
+        u = (uint16_t)(ux << 0);
+        n = 15;
+        n = (int16_t)(u < 0x100u ? n - 8 : n);
+        u = (uint16_t)(u < 0x100u ? u << 8 : u);
+        n = (int16_t)(u < 0x1000u ? n - 4 : n);
+        u = (uint16_t)(u < 0x1000u ? u << 4 : u);
+        n = (int16_t)(u < 0x4000u ? n - 2 : n);
+        u = (uint16_t)(u < 0x4000u ? u << 2 : u);
+        n = (int16_t)(u < 0x8000u ? n - 1 : n);
+        u = (uint16_t)(u < 0x8000u ? u << 1 : u);
+    }
     int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
     uint16_t eb = (uint16_t)(n + 0); /* e + 2 j0 >= 0, e = n - 8, j0 = 4 */
     int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
@@ -213,10 +262,13 @@ PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_fast_inline(uint16_t x, const int16_t *k)
     int16_t pq = pf_fx_mulhrs(p, k[6]); /* P / sqrt2 (computed for every element: branch-free) */
     int16_t y = (eb & 1) ? pq : p; /* P, or P / sqrt2 for odd e: sqrt(x) = 2^ceil(e/2) y */
     /* y 2^ceil(e/2) rounded once to the output, s = 2 - ceil(e/2) in [-2, 6] */
-    uint32_t sv = (uint32_t)(6 - (int32_t)((eb + 1) >> 1) + 2);
-    uint32_t h = ((uint32_t)(uint16_t)y << 3) >> sv;
-    uint32_t r = (h >> 1) + (h & 1u);
-    uint16_t r16 = (uint16_t)(r < 65535u ? r : 65535u);
+    uint16_t r16;
+    { /* no 16-bit form: a 2 or s do not fit */
+        uint32_t sv = (uint32_t)(6 - (int32_t)((eb + 1) >> 1) + 2);
+        uint32_t h = ((uint32_t)(uint16_t)y << 3) >> sv;
+        uint32_t r = (h >> 1) + (h & 1u);
+        r16 = (uint16_t)(r < 65535u ? r : 65535u);
+    }
     uint16_t m = (uint16_t)(0u - (uint16_t)(x > 0)); /* x <= 0 gives 0, through a mask */
     return (uint16_t)(r16 & m);
 }
@@ -234,8 +286,25 @@ static const int16_t pf_sqrt_uq8_uq12_fast_k[7] = {
 
 uint16_t pf_sqrt_uq8_uq12_fast(uint16_t x)
 {
-    return pf_sqrt_uq8_uq12_fast_inline(x, pf_sqrt_uq8_uq12_fast_k);
+    return pf_sqrt_uq8_uq12_fast_inline(x, pf_sqrt_uq8_uq12_fast_k, 0);
 }
+
+/* AVX-512 has a 16-bit per-element shift (vpsrlvw) and a leading-zero count
+   (vplzcntd), AVX2 neither: on a CPU with x86-64-v4 the array form runs this
+   loop, whose kernel (bw = 1) uses them; the clones below keep the forms every
+   level vectorizes (bw = 0), as the scalar form does.  The same values
+   (pfmathgen sweeps the array form on its machine against the scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_sqrt_uq8_uq12_fast_array_bw(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    const int16_t *k = pf_sqrt_uq8_uq12_fast_k;
+    __asm__("" : "+r"(k));
+#pragma GCC ivdep
+    for (size_t i = 0; i < n; i++)
+        y[i] = pf_sqrt_uq8_uq12_fast_inline(x[i], k, 1);
+}
+#endif
 
 /* Array form in 16-bit lanes.  The constants come through a pointer that an
    empty asm hides from GCC: GCC 12 rewrites a product by a known constant
@@ -254,6 +323,12 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_sqrt_uq8_uq12_fast_array(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+    if (__builtin_cpu_supports("x86-64-v4")) {
+        pf_sqrt_uq8_uq12_fast_array_bw(x, y, n);
+        return;
+    }
+#endif
     const int16_t *k = pf_sqrt_uq8_uq12_fast_k;
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
@@ -262,5 +337,5 @@ void pf_sqrt_uq8_uq12_fast_array(const uint16_t *restrict x, uint16_t *restrict 
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_sqrt_uq8_uq12_fast_inline(x[i], k);
+        y[i] = pf_sqrt_uq8_uq12_fast_inline(x[i], k, PF_FX_BW_NATIVE);
 }
