@@ -18,7 +18,8 @@
  * of the result, so its roundings weigh 1/20 of an ULP, and everything
  * else (the fold's constant, the square root, the quotient) is kept exact
  * as hi + lo floats up to one final rounding.  gen/funcs_atrig_model.c
- * bounds each scheme (the provenance's "Error model:" line).
+ * bounds each scheme (the provenance's "Error model:" line), the fast asin
+ * and acos too (as a fraction of the fast bound).
  * The fast rows match value and slope at both ends of the reduced domain:
  * at t = 0 the slope 1 (c1 = 1), at the outer end the value and slope of the
  * target.  The identities map p's value and slope at the outer end onto both
@@ -179,7 +180,7 @@ static int extra_pi_float(char *buf, size_t n)
      .reduction_text = red, .target_text = "asin(t)", .g = g_asin, .a = 0, .b = 0.5,              \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = ASIN_FAST_CON,               \
      .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float,          \
-     .model = mo}
+     .model = mo, .tail = "asin_acos_tail.c"}
 #define ROW_ATAN_EXACT(fn, tm, ar, red)                                                           \
     {.func = fn, .reduction = "recip", .variant = "exact", .tmpl = tm, .arity = ar,               \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 0.5,              \

@@ -121,7 +121,15 @@ static const float pf_acosf_fast_C[3] = {
    included) gives S = NaN, hence a NaN result (the domain error); a NaN x
    stays NaN through t = -x.  No select after the polynomial. */
 /* Build flags: -fno-math-errno (for vsqrtps; tests/check-vectorize.sh reads this line) */
-static inline float pf_acosf_fast_inline(float x)
+/* c ? a : b: as ?: in the array loop (vec = 1), on the bits in the scalar
+   form (vec = 0, a constant after inlining; see the tail below) */
+static inline float pf_acosf_fast_sel(int vec, int c, float a, float b)
+{
+    uint32_t m = 0u - (uint32_t)c;
+    return vec ? (c ? a : b) : pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
+}
+
+static inline float pf_acosf_fast_body(float x, int vec)
 {
     uint32_t ix = pf_asuint(x);
     float a = fabsf(x);
@@ -129,10 +137,10 @@ static inline float pf_acosf_fast_inline(float x)
     /* all ones when x's sign bit is set: for |x| > 1/2 the x < -1/2 lanes
        (an integer shift, not a second float compare) */
     uint32_t neg = 0u - (ix >> 31);
-    float z = big ? fmaf(-0.5f, a, 0.5f) : x * x;
+    float z = pf_acosf_fast_sel(vec, big, fmaf(-0.5f, a, 0.5f), x * x);
     float S = sqrtf(fmaf(-2.0f, a, 2.0f));
-    float t = big ? pf_asfloat(pf_asuint(S) ^ (neg & 0x80000000u)) : -x;
-    float k = big ? pf_asfloat(pf_asuint(PF_PI_HI) & neg) : PF_PIO2_HI;
+    float t = pf_acosf_fast_sel(vec, big, pf_asfloat(pf_asuint(S) ^ (neg & 0x80000000u)), -x);
+    float k = pf_acosf_fast_sel(vec, big, pf_asfloat(pf_asuint(PF_PI_HI) & neg), PF_PIO2_HI);
     float q = pf_horner_fma(z, pf_acosf_fast_C, 3);   /* 1 + c3 z + ... */
     /* acos >= 0: the sign bit cleared changes no result but a NaN's (x NaN
        takes the small lanes, where t = -x and z = x x carry it with
@@ -142,17 +150,20 @@ static inline float pf_acosf_fast_inline(float x)
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
-   CPU has FMA (the result is the same on every clone). */
+   CPU has FMA (the result is the same on every clone).  It selects on the
+   bits (pf_acosf_fast_body(x, 0)): GCC turns a scalar ?: into a jump, mispredicted
+   half the time on random x; the array loop keeps ?: (one compare, masked
+   moves).  The selects are exact either way: the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 float pf_acosf_fast(float x)
 {
-    return pf_acosf_fast_inline(x);
+    return pf_acosf_fast_body(x, 0);
 }
 
-/* Array form: the body above is branch-free, so this loop vectorizes; one
-   clone per x86-64 level, the widest the CPU has is picked at load time. */
+/* Array form: the body is branch-free, so this loop vectorizes; one clone
+   per x86-64 level, the widest the CPU has is picked at load time. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
@@ -162,5 +173,5 @@ void pf_acosf_fast_array(const float *restrict x, float *restrict y, size_t n)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_acosf_fast_inline(x[i]);
+        y[i] = pf_acosf_fast_body(x[i], 1);
 }

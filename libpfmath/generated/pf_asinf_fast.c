@@ -131,7 +131,15 @@ static const float pf_asinf_fast_C[3] = {
    not matter, so every clone returns the same bits.  No select after the
    polynomial, one evaluation of q. */
 /* Build flags: -fno-math-errno (for vsqrtps; tests/check-vectorize.sh reads this line) */
-static inline float pf_asinf_fast_inline(float x)
+/* c ? a : b: as ?: in the array loop (vec = 1), on the bits in the scalar
+   form (vec = 0, a constant after inlining; see the tail below) */
+static inline float pf_asinf_fast_sel(int vec, int c, float a, float b)
+{
+    uint32_t m = 0u - (uint32_t)c;
+    return vec ? (c ? a : b) : pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
+}
+
+static inline float pf_asinf_fast_body(float x, int vec)
 {
     uint32_t sx = pf_asuint(x) & 0x80000000u;
     float a = fabsf(x);
@@ -139,26 +147,29 @@ static inline float pf_asinf_fast_inline(float x)
        emits one compare and masked operations (a > 1/2 in some selects and
        a <= 1/2 in others costs a compare each, as they differ for NaN) */
     int small = !(a > 0.5f);
-    float z = small ? x * x : fmaf(-0.5f, a, 0.5f);
+    float z = pf_asinf_fast_sel(vec, small, x * x, fmaf(-0.5f, a, 0.5f));
     float S = sqrtf(fmaf(-2.0f, a, 2.0f));
-    float t = small ? x : pf_asfloat(pf_asuint(S) ^ sx ^ 0x80000000u);
-    float k = pf_asfloat(small ? sx : pf_asuint(PF_PIO2_HI) ^ sx);
+    float t = pf_asinf_fast_sel(vec, small, x, pf_asfloat(pf_asuint(S) ^ sx ^ 0x80000000u));
+    float k = pf_asinf_fast_sel(vec, small, pf_asfloat(sx), pf_asfloat(pf_asuint(PF_PIO2_HI) ^ sx));
     float q = pf_horner_fma(z, pf_asinf_fast_C, 3);   /* 1 + c3 z + ... */
     return fmaf(t, q, k);
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
-   CPU has FMA (the result is the same on every clone). */
+   CPU has FMA (the result is the same on every clone).  It selects on the
+   bits (pf_asinf_fast_body(x, 0)): GCC turns a scalar ?: into a jump, mispredicted
+   half the time on random x; the array loop keeps ?: (one compare, masked
+   moves).  The selects are exact either way: the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 float pf_asinf_fast(float x)
 {
-    return pf_asinf_fast_inline(x);
+    return pf_asinf_fast_body(x, 0);
 }
 
-/* Array form: the body above is branch-free, so this loop vectorizes; one
-   clone per x86-64 level, the widest the CPU has is picked at load time. */
+/* Array form: the body is branch-free, so this loop vectorizes; one clone
+   per x86-64 level, the widest the CPU has is picked at load time. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
@@ -168,5 +179,5 @@ void pf_asinf_fast_array(const float *restrict x, float *restrict y, size_t n)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_asinf_fast_inline(x[i]);
+        y[i] = pf_asinf_fast_body(x[i], 1);
 }
