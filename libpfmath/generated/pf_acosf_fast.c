@@ -110,10 +110,10 @@ static const float pf_acosf_fast_C[3] = {
      x  >  1/2:  acos x = S q(z),            S = sqrt(2 - 2|x|) = 2 sqrt(w),
      x  < -1/2:  acos x = pi - S q(z),       z = w = (1 - |x|)/2
    all one fmaf t q + k with (t, k) = (-x, pi/2), (S, 0), (-S, pi): above
-   |x| = 1/2, S takes x's sign and k is pi or 0 by x's sign bit.  2 - 2|x| and w are exact
-   for |x| in [1/2, 1], S is correctly rounded, so near x = 1 the result
-   S q keeps the fit's relative error (2^-12.6) and a few roundings; the
-   other branches are >= pi/3.  At |x| = 1/2, S = 1 exactly and both sides
+   |x| = 1/2, S takes x's sign and k is pi or 0 by x's sign bit.  2 - 2|x|
+   and w are exact for |x| in [1/2, 1], S is correctly rounded, so near
+   x = 1 the result S q keeps the fit's relative error (2^-12.6) and a few
+   roundings; the other branches are >= pi/3.  At |x| = 1/2, S = 1 exactly and both sides
    are q(1/4) terms: p's value and slope constraints make the seams C1.
 
    The square root is sqrtf, vectorized (vsqrtps) only without errno
