@@ -144,8 +144,8 @@ static inline float pf_asinf_fast_body(float x, int vec)
     uint32_t sx = pf_asuint(x) & 0x80000000u;
     float a = fabsf(x);
     /* every select on the one test !(a > 1/2), in the same sense: GCC then
-       emits one compare and masked operations (a > 1/2 in some selects and
-       a <= 1/2 in others costs a compare each, as they differ for NaN) */
+       emits masked moves on two compares (a > 1/2 in some selects and
+       a <= 1/2 in others, which differ for NaN, cost it a third one) */
     int small = !(a > 0.5f);
     float z = pf_asinf_fast_sel(vec, small, x * x, fmaf(-0.5f, a, 0.5f));
     float S = sqrtf(fmaf(-2.0f, a, 2.0f));
