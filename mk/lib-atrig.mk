@@ -30,3 +30,11 @@ $(BUILD)/fastsweep_atrig: tests/fastsweep_atrig.c $(BUILD)/libpfref.a $(BUILD)/l
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -fopenmp -MMD -MP $< -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a \
 	  $(BUILD)/libpfref.a -fopenmp $(LIBS_NUM)
+
+# asin and acos (exact and fast) take their square root from sqrtf, whose
+# loop GCC vectorizes (vsqrtps) only without errno semantics; sqrtf is
+# correctly rounded either way, so the flag changes speed, not bits (it
+# cannot be a pragma: GCC 12 ignores optimize("no-math-errno") for sqrtf).
+# Each of these files names the flag on a "Build flags:" line.
+ATRIG_NOERRNO := pf_asinf pf_asinf_fast pf_acosf pf_acosf_fast
+$(ATRIG_NOERRNO:%=$(BUILD)/pic/libpfmath/generated/%.o): ALL_CFLAGS += -fno-math-errno

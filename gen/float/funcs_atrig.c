@@ -18,7 +18,8 @@
  * of the result, so its roundings weigh 1/20 of an ULP, and everything
  * else (the fold's constant, the square root, the quotient) is kept exact
  * as hi + lo floats up to one final rounding.  gen/funcs_atrig_model.c
- * bounds each scheme (the provenance's "Error model:" line).
+ * bounds each scheme (the provenance's "Error model:" line), the fast asin
+ * and acos too (as a fraction of the fast bound).
  * The fast rows match value and slope at both ends of the reduced domain:
  * at t = 0 the slope 1 (c1 = 1), at the outer end the value and slope of the
  * target.  The identities map p's value and slope at the outer end onto both
@@ -40,6 +41,8 @@ int pf_model_asin(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_acos(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_atan(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_atan2(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_asin_fast(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_acos_fast(const fit_poly *p, int order, pf_scheme *sc);
 
 /* ---- fit targets, in the fit variable t ---- */
 static void g_asin(mpfr_t y, const mpfr_t t, const void *c)
@@ -172,11 +175,12 @@ static int extra_pi_float(char *buf, size_t n)
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
      .default_order = ASIN_EXACT_ORDER, .real = "fma", .ulp_bound = 1.0,                          \
      .extra = extra_pi_ff, .model = mo}
-#define ROW_ASIN_FAST(fn, tm, red)                                                                \
+#define ROW_ASIN_FAST(fn, tm, red, mo)                                                            \
     {.func = fn, .reduction = "sqrthalf", .variant = "fast", .tmpl = tm, .arity = 1,              \
      .reduction_text = red, .target_text = "asin(t)", .g = g_asin, .a = 0, .b = 0.5,              \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = ASIN_FAST_CON,               \
-     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float}
+     .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float,          \
+     .model = mo, .tail = "asin_acos_tail.c"}
 #define ROW_ATAN_EXACT(fn, tm, ar, red)                                                           \
     {.func = fn, .reduction = "recip", .variant = "exact", .tmpl = tm, .arity = ar,               \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 0.5,              \
@@ -191,9 +195,9 @@ static int extra_pi_float(char *buf, size_t n)
 
 const pf_spec pf_specs_atrig[] = {
     ROW_ASIN_EXACT("asin", "asin_ff", ASIN_RED, pf_model_asin),
-    ROW_ASIN_FAST("asin", "asin_fast", ASIN_RED),
+    ROW_ASIN_FAST("asin", "asin_fast", ASIN_RED, pf_model_asin_fast),
     ROW_ASIN_EXACT("acos", "acos_ff", ACOS_RED, pf_model_acos),
-    ROW_ASIN_FAST("acos", "acos_fast", ACOS_RED),
+    ROW_ASIN_FAST("acos", "acos_fast", ACOS_RED, pf_model_acos_fast),
     ROW_ATAN_EXACT("atan", "atan_ff", 1, ATAN_RED),
     ROW_ATAN_FAST("atan", "atan_fast", 1, ATAN_RED_FAST),
     ROW_ATAN_EXACT("atan2", "atan2_ff", 2, ATAN2_RED),

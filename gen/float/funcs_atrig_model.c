@@ -11,7 +11,7 @@
  *   |T z q| (u + T's relative error) for fl(T z), u |c| for the fmaf,
  *   2u (|c| + |klo| + |l|) for the two adds before the last (|l| <= u |K|;
  *   exact when K = 0),
- *   the reduction's error (sqrt: 2^-35 of S; quotient: 2^-44 of q) and K's
+ *   the reduction's error (sqrt: 2^-46 of S; quotient: 2^-44 of q) and K's
  *   representation (hi + lo floats: 2^-48 |K|; atan2's m A + m B: 2^-45).
  * The max over a grid of each branch's reduced argument is the model's
  * figure; the exhaustive sweep (pfsweep --all) is the proof. */
@@ -91,13 +91,14 @@ static int finish(const model *m, pf_scheme *sc, const char *text)
 /* ---- asin, acos: v = |x| (or x) for |x| <= 1/2, else S = 2 sqrt((1 - |x|)/2) ---- */
 #define SQRT_TEXT                                                                                  \
     "q(z) by fmaf Horner in float; p = v + fmaf(T z, q, lo); 2 sqrt((1-|x|)/2) = s + lo to "     \
-    "2^-35 (integer estimate, 1 Newton and 1 coupled step, fmaf residual); K + sg v exact "       \
+    "2^-46 (s = sqrtf, lo = fmaf residual times 0.5/s); K + sg v exact "                           \
     "(Fast2Sum), pi/2 and pi as float hi + lo; one final rounding"
 
 static void sqrt_branch(model *m, double x, double truth, double K, double klo)
 {
     double w = (1 - fabs(x)) / 2, S = 2 * sqrt(w);
-    point(m, x, truth, K, klo, S, w, 0, U, 5e-6 * S, 0x1p-35 * S * 1.1, 0x1p-48 * K);
+    /* s = sqrtf(4w) correctly rounded, |lo| <= 2^-24 S, s + lo within 2^-46 S */
+    point(m, x, truth, K, klo, S, w, 0, U, 0x1p-24 * S, 0x1p-46 * S, 0x1p-48 * K);
 }
 
 static int model_asin_acos(const fit_poly *p, int order, pf_scheme *sc, int acos_)
@@ -193,4 +194,99 @@ int pf_model_atan2(const fit_poly *p, int order, pf_scheme *sc)
                 }
             }
     return finish(&m, sc, QUOT_TEXT);
+}
+
+/* ---- fast asin, acos (gen/templates/{asin,acos}_fast.c.in) ----
+ * r = fmaf(t, q(z), k), q(z) = 1 + c3 z + ... by fmaf Horner (c1 = 1 its
+ * constant term): t = x, z = fl(x^2) for |x| <= 1/2 (asin: k = +-0; acos:
+ * t = -x, k = pi/2), else t = -+S (asin, k = +-pi/2) or +-S (acos, k = 0 or
+ * pi) with S = sqrtf(2 - 2|x|) correctly rounded and z = (1 - |x|)/2 exact.
+ * The absolute error bound at a point: the fit's relative error times |t q|
+ * (p(t) = t q(t^2) ~ asin t, and above 1/2 S q(w) = 2 p(sqrt w)), |t| times
+ * q's running Horner bound, u |S q| for S's rounding, k's representation
+ * (the nearest floats of pi/2, pi) and u |r| for the last rounding.  The
+ * figure is its max over a grid as a fraction of the fast allowance
+ * max(2^-10 |f|, 2^-11), and in ULPs of the result; fastsweep_atrig (every
+ * float) is the proof. */
+typedef struct {
+    const fit_poly *p;
+    int order;
+    double frac, frac_at, ulps;
+} fmodel;
+
+/* q(z) = 1 + c3 z + c5 z^2 + ... by fmaf Horner, *err its running bound */
+static double q_full(const fmodel *m, double z, double dz, double *err)
+{
+    double s = (double)m->p->c[m->order], e = 0;
+    for (int k = m->order - 2; k >= 1; k -= 2) {
+        double sn = s * z + (double)m->p->c[k];
+        e = e * fabs(z) + fabs(s) * dz + U * fabs(sn);
+        s = sn;
+    }
+    *err = e;
+    return s;
+}
+
+/* t the main term (|t| = |x| or S, rel_t its relative rounding), z, dz,
+   kerr the constant's representation error, truth the true result */
+static void fpoint(fmodel *m, double x, double truth, double t, double rel_t, double z, double dz,
+                   double kerr)
+{
+    double eq, q = q_full(m, z, dz, &eq);
+    double tq = fabs(t * q);
+    double b = m->p->max_err * tq + fabs(t) * eq + rel_t * tq + kerr + U * fabs(truth) * 1.001;
+    double allow = fmax(0x1p-10 * fabs(truth), 0x1p-11);
+    if (b / allow > m->frac) {
+        m->frac = b / allow;
+        m->frac_at = x;
+    }
+    m->ulps = fmax(m->ulps, b / ulp_of(truth));
+}
+
+static int model_asin_acos_fast(const fit_poly *p, int order, pf_scheme *sc, int acos_)
+{
+    fmodel m = {p, order, 0, 0, 0};
+    double pio2 = acos(-1.0) / 2;
+    double e2 = fabs((double)(float)pio2 - pio2), e1 = fabs((double)(float)(2 * pio2) - 2 * pio2);
+    for (int i = 1; i <= NGRID; i++) {
+        double x = 0.5 * i / NGRID;              /* (0, 1/2] */
+        double xt = ldexp(0.5, -i * 40 / NGRID); /* toward 0 */
+        double xb = 0.5 + 0.5 * i / NGRID;       /* (1/2, 1] */
+        xb = xb < 1 ? xb : 1 - 0x1p-24;
+        double w = (1 - xb) / 2, S = 2 * sqrt(w);
+        if (!acos_) {
+            fpoint(&m, x, asin(x), x, 0, x * x, U * x * x, 0);
+            fpoint(&m, xt, asin(xt), xt, 0, xt * xt, U * xt * xt, 0);
+            fpoint(&m, xb, asin(xb), S, U, w, 0, e2);
+        } else {
+            fpoint(&m, x, acos(x), x, 0, x * x, U * x * x, e2);
+            fpoint(&m, -x, acos(-x), x, 0, x * x, U * x * x, e2);
+            fpoint(&m, xb, acos(xb), S, U, w, 0, 0);
+            fpoint(&m, -xb, acos(-xb), S, U, w, 0, e1);
+        }
+    }
+    sc->ncomp = 0;
+    sc->bound_ulp = m.ulps;
+    snprintf(sc->text, sizeof sc->text,
+             "q(z) = 1 + c3 z + ... by fmaf Horner in float; r = fmaf(t, q, k), t = x or S = "
+             "sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, "
+             "pi/2 or pi as the nearest float; at most %.3f of the fast bound max(2^-10 |f|, "
+             "2^-11) (at x = %a)",
+             m.frac, m.frac_at);
+    if (m.frac > 1) /* a lower order asked for: said, not refused; the sweep decides */
+        snprintf(sc->text, sizeof sc->text,
+                 "q(z) by fmaf Horner, r = fmaf(t, q, k); the model does not prove the fast bound "
+                 "at this order (%.3f of it at x = %a)",
+                 m.frac, m.frac_at);
+    return 0;
+}
+
+int pf_model_asin_fast(const fit_poly *p, int order, pf_scheme *sc)
+{
+    return model_asin_acos_fast(p, order, sc, 0);
+}
+
+int pf_model_acos_fast(const fit_poly *p, int order, pf_scheme *sc)
+{
+    return model_asin_acos_fast(p, order, sc, 1);
 }

@@ -4,7 +4,7 @@
  * Reduction:   |x| <= 1/2: acos x = pi/2 - asin x; x > 1/2: 2 asin(t), t = sqrt((1 - x)/2); x < -1/2: pi - 2 asin(t), t = sqrt((1 + x)/2)
  * Domain:      asin(t) on t in [0x0p+0, 0x1p-1]  (0 .. 0.5)
  * Order:       13 (float coefficients, Horner in float with fmaf)
- * Evaluation:  q(z) by fmaf Horner in float; p = v + fmaf(T z, q, lo); 2 sqrt((1-|x|)/2) = s + lo to 2^-35 (integer estimate, 1 Newton and 1 coupled step, fmaf residual); K + sg v exact (Fast2Sum), pi/2 and pi as float hi + lo; one final rounding
+ * Evaluation:  q(z) by fmaf Horner in float; p = v + fmaf(T z, q, lo); 2 sqrt((1-|x|)/2) = s + lo to 2^-46 (s = sqrtf, lo = fmaf residual times 0.5/s); K + sg v exact (Fast2Sum), pi/2 and pi as float hi + lo; one final rounding
  * Error model: at most 0.675 ULP (fit error and every rounding of the scheme)
  * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1
@@ -114,30 +114,28 @@ static const float pf_acosf_C[7] = {
    Each is K + sg (v + c) with v a float and c a correction of at most 4.5%
    of v, so the correction's roundings weigh 1/20 of an ULP.  2 - 2|x| = 4w
    is exact for |x| in [1/2, 1] (Sterbenz; the fma rounds once), S is s + lo
-   to 2^-35, K + sg v is h + l exactly (Fast2Sum: |K| >= |v| or K = 0), pi/2
+   to 2^-46, K + sg v is h + l exactly (Fast2Sum: |K| >= |v| or K = 0), pi/2
    and pi are hi + lo: the one rounding left is the last add.  Near x = 1 the
    result S (1 + w q) keeps S's relative accuracy.  Branch-free: q is
    evaluated once, at z = w or x^2. */
-/* sqrt(W) for W in [0, 2] as s + *lo, without libm's sqrtf: with errno
-   semantics GCC calls it in a branch, which stops the array loop from
-   vectorizing (-fno-math-errno cannot be set by a pragma).  The integer
-   estimate of 1/sqrt(W) is within 3.5%; one Newton step y (3/2 - (W/2) y^2)
-   leaves 1.8e-3; one coupled step on s = W y, h = y/2 (r = 1/2 - s h,
-   s += s r, h += h r) squares it to 5e-6; the residual W - s^2 (one fmaf,
-   rounded at 2^-40 of it) times h gives lo with s + lo within 2^-35 of
-   sqrt(W).  W = 0 gives s = lo = 0 (y = 1.3e19, y^2 still finite); W < 0
-   (|x| > 1) gives garbage, replaced by NaN. */
+/* sqrt(W) for W in [0, 2] as s + *lo: s = sqrtf(W), correctly rounded (one
+   vsqrtps; the loop vectorizes only without errno semantics, see the Build
+   flags line below), so the residual W - s^2 is a float and one fmaf gives
+   it exactly; lo = residual / (2s) by a correctly rounded 1/(2s) and one
+   product is within 2^-23 of itself (two roundings), |lo| <= ulp(s)/2 <=
+   2^-24 s, and the series' next term is lo^2/(2s) <= 2^-49 s: s + lo is
+   within 2^-46 of sqrt(W).  The 2^-100 keeps W = 0 (|x| = 1) from 0 / 0:
+   h is then 2^99 and lo = 0; it changes no other s (s >= 2^-11.5 for
+   W >= 2^-23).  W < 0 (|x| > 1) gives NaN, replaced by the domain's NaN. */
 static inline float pf_acosf_sqrt(float W, float *lo)
 {
-    float y = pf_asfloat(0x5f3759dfu - (pf_asuint(W) >> 1));
-    y = y * fmaf(-0.5f * W, y * y, 1.5f);
-    float s = W * y, h = 0.5f * y;
-    float r = fmaf(-s, h, 0.5f);
-    s = fmaf(s, r, s);
-    h = fmaf(h, r, h);
+    float s = sqrtf(W);
+    float h = 0.5f / (s + 0x1p-100f);
     *lo = fmaf(-s, s, W) * h;
     return s;
 }
+
+/* Build flags: -fno-math-errno (for vsqrtps; tests/check-vectorize.sh reads this line) */
 
 /* m ? a : b for a mask m of all ones or zeros, on the bits: one vpternlogd
    or blend in the array loop, and no branch in the scalar form (GCC turns

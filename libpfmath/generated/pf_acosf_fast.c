@@ -4,10 +4,12 @@
  * Reduction:   |x| <= 1/2: acos x = pi/2 - asin x; x > 1/2: 2 asin(t), t = sqrt((1 - x)/2); x < -1/2: pi - 2 asin(t), t = sqrt((1 + x)/2)
  * Domain:      asin(t) on t in [0x0p+0, 0x1p-1]  (0 .. 0.5)
  * Order:       5 (float coefficients, Horner in float with fmaf)
+ * Evaluation:  q(z) = 1 + c3 z + ... by fmaf Horner in float; r = fmaf(t, q, k), t = x or S = sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, pi/2 or pi as the nearest float; at most 0.163 of the fast bound max(2^-10 |f|, 2^-11) (at x = 0x1.001p-1)
+ * Error model: at most 2667.997 ULP (fit error and every rounding of the scheme)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1, p(1/2) = pi/6, p'(1/2) = 2/sqrt(3)
  * Max relative error of this polynomial on the domain: 1.589e-04 (2^-12.62) at t = 0x1.2c60794a3d068p-2
- * Sweep:       max 5863.373 ULP at x = 0x1.d442ep-1 (0x3f6a2170), mean 439.3758 ULP, 16.84% correctly
+ * Sweep:       max 2479.588 ULP at x = 0x1.c152ep-1 (0x3f60a970), mean 214.4312 ULP, 16.83% correctly
  *              rounded; sampled sweep of 3932785 inputs (every 16th float in [0x1p-7, 0x1p+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -102,66 +104,66 @@ static const float pf_acosf_fast_C[3] = {
 #define PF_PIO4 0x1.921fb6p-1f
 
 /* acos(x), fast variant, in float lanes with fmaf, from the odd polynomial
-   p(t) = t + t z q(z) ~ asin on [0, 1/2] (value and slope matched at both
-   ends) that asin uses:
-     |x| <= 1/2:  acos x = pi/2 - p(x),       z = x^2
-     x  >  1/2:  acos x = 2 p(s),            s = sqrt(w), z = w = (1 - |x|)/2
-     x  < -1/2:  acos x = pi - 2 p(s)
-   all one fmaf m p + k with (m, k) = (-1, pi/2), (2, 0), (-2, pi).  Near
-   x = 1 the result 2 p(s) keeps s's relative error (2^-11.7); the other
-   branches are >= pi/3.  Branch-free: mask blends, one polynomial. */
-/* m ? a : b for a mask m of all ones or zeros, on the bits: one blend in
-   the array loop, no branch in the scalar form */
-static inline float pf_acosf_fast_pick(uint32_t m, float a, float b)
+   p(t) = t q(z), z = t^2, q(z) = 1 + c3 z + ... ~ asin(t)/t on [0, 1/2]
+   (value and slope matched at both ends) that asin uses:
+     |x| <= 1/2:  acos x = pi/2 - x q(z),     z = x^2
+     x  >  1/2:  acos x = S q(z),            S = sqrt(2 - 2|x|) = 2 sqrt(w),
+     x  < -1/2:  acos x = pi - S q(z),       z = w = (1 - |x|)/2
+   all one fmaf t q + k with (t, k) = (-x, pi/2), (S, 0), (-S, pi): above
+   |x| = 1/2, S takes x's sign and k is pi or 0 by x's sign bit.  2 - 2|x|
+   and w are exact for |x| in [1/2, 1], S is correctly rounded, so near
+   x = 1 the result S q keeps the fit's relative error (2^-12.6) and a few
+   roundings; the other branches are >= pi/3.  At |x| = 1/2, S = 1 exactly and both sides
+   are q(1/4) terms: p's value and slope constraints make the seams C1.
+
+   The square root is sqrtf, vectorized (vsqrtps) only without errno
+   semantics: see asin_fast.c.in and mk/lib-atrig.mk.  |x| > 1 (inf
+   included) gives S = NaN, hence a NaN result (the domain error); a NaN x
+   stays NaN through t = -x.  No select after the polynomial. */
+/* Build flags: -fno-math-errno (for vsqrtps; tests/check-vectorize.sh reads this line) */
+/* c ? a : b: as ?: in the array loop (vec = 1), on the bits in the scalar
+   form (vec = 0, a constant after inlining; see the tail below) */
+static inline float pf_acosf_fast_sel(int vec, int c, float a, float b)
 {
-    return pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
+    uint32_t m = 0u - (uint32_t)c;
+    return vec ? (c ? a : b) : pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
 }
 
-/* sqrt(w) for w in [0, 1/2] to 2^-11.7, without libm's sqrtf (with errno
-   semantics GCC calls it in a branch, which stops the loop vectorizing):
-   s = w y from the integer estimate y of 1/sqrt(w), then one step
-   s (1 + e/2 + 3e^2/8 + 5e^3/16), e = 1 - s y = 1 - w y^2, the series of
-   (1 - e)^(-1/2) to its remainder 35e^4/128.  The estimate's constant
-   0x5f400000 makes y exact at powers of 4 (within +8.9% elsewhere, so the
-   step leaves 3.0e-4): at the fold |x| = 1/2, w = 1/4, s = 1/2 exactly and
-   the two sides meet (C1 seam) instead of differing by the step's error.
-   w = 0 gives s = 0, e = 1, 0 (y is not squared: no overflow).  w < 0
-   (|x| > 1) gives garbage, replaced by NaN. */
-static inline float pf_acosf_fast_sqrt(float w)
-{
-    float y = pf_asfloat(0x5f400000u - (pf_asuint(w) >> 1));
-    float s = w * y;
-    float e = fmaf(-s, y, 1.0f);
-    return fmaf(s * e, fmaf(fmaf(e, 0.3125f, 0.375f), e, 0.5f), s);
-}
-
-static inline float pf_acosf_fast_inline(float x)
+static inline float pf_acosf_fast_body(float x, int vec)
 {
     uint32_t ix = pf_asuint(x);
-    float a = pf_asfloat(ix & 0x7fffffffu);
-    uint32_t big = 0u - (uint32_t)(a > 0.5f), pos = 0u - (uint32_t)(x > 0.5f);
-    float w = fmaf(-0.5f, a, 0.5f);   /* exact for a in [1/2, 1] */
-    float s = pf_acosf_fast_sqrt(w);
-    float t = pf_acosf_fast_pick(big, s, x), z = pf_acosf_fast_pick(big, w, x * x);
-    float m = pf_acosf_fast_pick(big, pf_acosf_fast_pick(pos, 2.0f, -2.0f), -1.0f);
-    float k = pf_acosf_fast_pick(big, pf_asfloat(pf_asuint(PF_PI_HI) & ~pos), PF_PIO2_HI);
-    float p = fmaf(t * z, pf_horner_fma(z, pf_acosf_fast_C + 1, 3 - 1), t);   /* c1 = 1 */
-    /* |x| > 1 (inf included): domain error, NaN; NaN in gives NaN through t */
-    return a > 1 ? (float)NAN : fmaf(m, p, k);
+    float a = fabsf(x);
+    int big = a > 0.5f;
+    /* all ones when x's sign bit is set: for |x| > 1/2 the x < -1/2 lanes
+       (an integer shift, not a second float compare) */
+    uint32_t neg = 0u - (ix >> 31);
+    float z = pf_acosf_fast_sel(vec, big, fmaf(-0.5f, a, 0.5f), x * x);
+    float S = sqrtf(fmaf(-2.0f, a, 2.0f));
+    float t = pf_acosf_fast_sel(vec, big, pf_asfloat(pf_asuint(S) ^ (neg & 0x80000000u)), -x);
+    float k = pf_acosf_fast_sel(vec, big, pf_asfloat(pf_asuint(PF_PI_HI) & neg), PF_PIO2_HI);
+    float q = pf_horner_fma(z, pf_acosf_fast_C, 3);   /* 1 + c3 z + ... */
+    /* acos >= 0: the sign bit cleared changes no result but a NaN's (x NaN
+       takes the small lanes, where t = -x and z = x x carry it with
+       opposite signs, and which one the fmaf passes on depends on the
+       clone's operand order) */
+    return fabsf(fmaf(t, q, k));
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
-   CPU has FMA (the result is the same on every clone). */
+   CPU has FMA (the result is the same on every clone).  It selects on the
+   bits (pf_acosf_fast_body(x, 0)): GCC turns a scalar ?: into a jump, mispredicted
+   half the time on random x; the array loop keeps ?: (one compare, masked
+   moves).  The selects are exact either way: the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 float pf_acosf_fast(float x)
 {
-    return pf_acosf_fast_inline(x);
+    return pf_acosf_fast_body(x, 0);
 }
 
-/* Array form: the body above is branch-free, so this loop vectorizes; one
-   clone per x86-64 level, the widest the CPU has is picked at load time. */
+/* Array form: the body is branch-free, so this loop vectorizes; one clone
+   per x86-64 level, the widest the CPU has is picked at load time. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
@@ -171,5 +173,5 @@ void pf_acosf_fast_array(const float *restrict x, float *restrict y, size_t n)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_acosf_fast_inline(x[i]);
+        y[i] = pf_acosf_fast_body(x[i], 1);
 }

@@ -4,10 +4,12 @@
  * Reduction:   |x| <= 1/2: t = |x|; |x| > 1/2: asin|x| = pi/2 - 2 asin(t), t = sqrt((1 - |x|)/2)
  * Domain:      asin(t) on t in [0x0p+0, 0x1p-1]  (0 .. 0.5)
  * Order:       5 (float coefficients, Horner in float with fmaf)
+ * Evaluation:  q(z) = 1 + c3 z + ... by fmaf Horner in float; r = fmaf(t, q, k), t = x or S = sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, pi/2 or pi as the nearest float; at most 0.326 of the fast bound max(2^-10 |f|, 2^-11) (at x = 0x1.001p-1)
+ * Error model: at most 2794.119 ULP (fit error and every rounding of the scheme)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1, p(1/2) = pi/6, p'(1/2) = 2/sqrt(3)
  * Max relative error of this polynomial on the domain: 1.589e-04 (2^-12.62) at t = 0x1.2c60794a3d068p-2
- * Sweep:       max 5415.450 ULP at x = 0x1.56022p-1 (0x3f2b0110), mean 715.3144 ULP, 6.57% correctly
+ * Sweep:       max 2479.678 ULP at x = 0x1.faaaap-3 (0x3e7d5550), mean 533.8361 ULP, 6.56% correctly
  *              rounded; sampled sweep of 3932785 inputs (every 16th float in [0x1p-7, 0x1p+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -102,68 +104,72 @@ static const float pf_asinf_fast_C[3] = {
 #define PF_PIO4 0x1.921fb6p-1f
 
 /* asin(x), fast variant, in float lanes with fmaf, from one odd polynomial
-   p(t) = t + t z q(z), z = t^2, p ~ asin on [0, 1/2] with value and slope
-   matched at both ends:
-     |x| <= 1/2:  asin|x| = p(a),             z = a^2
-     |x| >  1/2:  asin|x| = pi/2 - 2 p(s),    s = sqrt(w), z = w = (1 - a)/2
-   (z = w is s^2 without s's error).  Both are one fmaf, m p + k, with
-   (m, k) = (1, 0) or (-2, pi/2).  Error budget (2^-10 relative): the fit,
-   the square root's 2^-11.7 (times at most 1.9 above |x| = 1/2, where the
-   result is >= pi/6 and 2s <= 1), a few float roundings.  Branch-free:
-   mask blends, one polynomial evaluation. */
-/* m ? a : b for a mask m of all ones or zeros, on the bits: one blend in
-   the array loop, no branch in the scalar form */
-static inline float pf_asinf_fast_pick(uint32_t m, float a, float b)
+   p(t) = t q(z), z = t^2, q(z) = 1 + c3 z + c5 z^2 + ... (c1 = 1 is q's
+   constant term), p ~ asin on [0, 1/2] with value and slope matched at both
+   ends:
+     |x| <= 1/2:  asin x = x q(z),             z = x^2
+     |x| >  1/2:  asin|x| = pi/2 - S q(z),     S = sqrt(2 - 2a) = 2 sqrt(w),
+                  a = |x|                      z = w = (1 - a)/2
+   (asin a = pi/2 - 2 asin sqrt(w); z = w is (S/2)^2 without S's rounding).
+   With x's sign both are one fmaf t q + k: (t, k) = (x, +-0) or
+   (-+S, +-pi/2), the sign of x on t and k (k = x's zero keeps asin(-0) =
+   -0).  2 - 2a and w are exact for a in [1/2, 1] (Sterbenz; the fmaf
+   rounds once), S is correctly rounded, so what is left is the fit (2^-12.6
+   of p) and a few float roundings; above 1/2 the fit's error is scaled by
+   at most S q / result <= (pi/3) / (pi/6) = 2 (at the fold).  At the fold
+   a = 1/2, S = sqrt(1) = 1 exactly and both sides are q(1/4) terms: p's
+   value and slope constraints make the seam C1.
+
+   The square root is sqrtf: one vsqrtps a vector.  It vectorizes only
+   without errno semantics (-fno-math-errno: the library builds this file
+   so, see mk/lib-atrig.mk; the flag cannot be set by a pragma); compiled
+   with errno semantics the array loop runs one lane at a time and gives
+   the same bits (sqrtf is correctly rounded either way).  |x| > 1 (inf
+   included) makes 2 - 2a < 0 and S, hence the result, NaN (the domain
+   error) in the big lanes.  A NaN x takes the small lanes, where t = x and
+   z = x x carry the same NaN: which operand the final fmaf passes on does
+   not matter, so every clone returns the same bits.  No select after the
+   polynomial, one evaluation of q. */
+/* Build flags: -fno-math-errno (for vsqrtps; tests/check-vectorize.sh reads this line) */
+/* c ? a : b: as ?: in the array loop (vec = 1), on the bits in the scalar
+   form (vec = 0, a constant after inlining; see the tail below) */
+static inline float pf_asinf_fast_sel(int vec, int c, float a, float b)
 {
-    return pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
+    uint32_t m = 0u - (uint32_t)c;
+    return vec ? (c ? a : b) : pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
 }
 
-/* sqrt(w) for w in [0, 1/2] to 2^-11.7, without libm's sqrtf (with errno
-   semantics GCC calls it in a branch, which stops the loop vectorizing):
-   s = w y from the integer estimate y of 1/sqrt(w), then one step
-   s (1 + e/2 + 3e^2/8 + 5e^3/16), e = 1 - s y = 1 - w y^2, the series of
-   (1 - e)^(-1/2) to its remainder 35e^4/128.  The estimate's constant
-   0x5f400000 makes y exact at powers of 4 (within +8.9% elsewhere, so the
-   step leaves 3.0e-4): at the fold |x| = 1/2, w = 1/4, s = 1/2 exactly and
-   the two sides meet (C1 seam) instead of differing by the step's error.
-   w = 0 gives s = 0, e = 1, 0 (y is not squared: no overflow).  w < 0
-   (|x| > 1) gives garbage, replaced by NaN. */
-static inline float pf_asinf_fast_sqrt(float w)
+static inline float pf_asinf_fast_body(float x, int vec)
 {
-    float y = pf_asfloat(0x5f400000u - (pf_asuint(w) >> 1));
-    float s = w * y;
-    float e = fmaf(-s, y, 1.0f);
-    return fmaf(s * e, fmaf(fmaf(e, 0.3125f, 0.375f), e, 0.5f), s);
-}
-
-static inline float pf_asinf_fast_inline(float x)
-{
-    uint32_t ix = pf_asuint(x);
-    float a = pf_asfloat(ix & 0x7fffffffu);
-    uint32_t big = 0u - (uint32_t)(a > 0.5f);
-    float w = fmaf(-0.5f, a, 0.5f);   /* exact for a in [1/2, 1] */
-    float s = pf_asinf_fast_sqrt(w);
-    float t = pf_asinf_fast_pick(big, s, a), z = pf_asinf_fast_pick(big, w, a * a);
-    float m = pf_asinf_fast_pick(big, -2.0f, 1.0f);
-    float k = pf_asfloat(pf_asuint(PF_PIO2_HI) & big);
-    float p = fmaf(t * z, pf_horner_fma(z, pf_asinf_fast_C + 1, 3 - 1), t);   /* c1 = 1 */
-    float res = pf_asfloat(pf_asuint(fmaf(m, p, k)) | (ix & 0x80000000u));
-    /* |x| > 1 (inf included): domain error, NaN; NaN in gives NaN through t */
-    return a > 1 ? (float)NAN : res;
+    uint32_t sx = pf_asuint(x) & 0x80000000u;
+    float a = fabsf(x);
+    /* every select on the one test !(a > 1/2), in the same sense: GCC then
+       emits masked moves on two compares (a > 1/2 in some selects and
+       a <= 1/2 in others, which differ for NaN, cost it a third one) */
+    int small = !(a > 0.5f);
+    float z = pf_asinf_fast_sel(vec, small, x * x, fmaf(-0.5f, a, 0.5f));
+    float S = sqrtf(fmaf(-2.0f, a, 2.0f));
+    float t = pf_asinf_fast_sel(vec, small, x, pf_asfloat(pf_asuint(S) ^ sx ^ 0x80000000u));
+    float k = pf_asinf_fast_sel(vec, small, pf_asfloat(sx), pf_asfloat(pf_asuint(PF_PIO2_HI) ^ sx));
+    float q = pf_horner_fma(z, pf_asinf_fast_C, 3);   /* 1 + c3 z + ... */
+    return fmaf(t, q, k);
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
-   CPU has FMA (the result is the same on every clone). */
+   CPU has FMA (the result is the same on every clone).  It selects on the
+   bits (pf_asinf_fast_body(x, 0)): GCC turns a scalar ?: into a jump, mispredicted
+   half the time on random x; the array loop keeps ?: (one compare, masked
+   moves).  The selects are exact either way: the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 float pf_asinf_fast(float x)
 {
-    return pf_asinf_fast_inline(x);
+    return pf_asinf_fast_body(x, 0);
 }
 
-/* Array form: the body above is branch-free, so this loop vectorizes; one
-   clone per x86-64 level, the widest the CPU has is picked at load time. */
+/* Array form: the body is branch-free, so this loop vectorizes; one clone
+   per x86-64 level, the widest the CPU has is picked at load time. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
@@ -173,5 +179,5 @@ void pf_asinf_fast_array(const float *restrict x, float *restrict y, size_t n)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_asinf_fast_inline(x[i]);
+        y[i] = pf_asinf_fast_body(x[i], 1);
 }
