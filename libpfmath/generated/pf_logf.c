@@ -4,7 +4,7 @@
  * Reduction:   x = 2^k m, m in [0x1.6a09e6p-1, 0x1.6a09e6p+0) (balanced about 1), t = m - 1
  * Domain:      log(1+t) on t in [-0x1.2bec34p-2, 0x1.a82798p-2]  (-0.292893231 .. 0.414213538)
  * Order:       10 (float coefficients, Horner in float with fmaf)
- * Evaluation:  q(r) = (p(r) - r)/r^2 by Horner in float with fmaf; k LN2HI + r exact (two-sum), the small rest summed in float, one rounding into the result (the model's worst point is k = 0, r = 0.2839)
+ * Evaluation:  q(r) = (p(r) - r)/r^2 in float with fmaf; q(r) by Horner; k LN2HI + r exact (two-sum), the small rest summed in float, one rounding into the result (the model's worst point is k = 0, r = 0.2839)
  * Error model: at most 0.909 ULP (fit error and every rounding of the scheme)
  * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), coefficients rounded to float by pin-and-refit
  * Constraints: p(0) = 0, p'(0) = 1
