@@ -91,7 +91,7 @@ static double ulp_of(double v)
 
 /* q(r) = c2 + c3 r + ... and a bound on its evaluation error, following
    the steps of the template's evaluation: plain fmaf Horner (estrin = 0,
-   log), or log_q.h.in's split (log2): Horner for c2, c3, c4 and Estrin's
+   log), or exp_log_poly.h.in's split (log2): Horner for c2, c3, c4 and Estrin's
    scheme for the rest on r and r2 = r*r rounded.  Each fmaf(a, b, c) with
    errors ea, eb, ec adds |a| eb + |b| ea + ea eb + ec and half an ulp of its
    result; r is exact. */
@@ -239,8 +239,8 @@ const pf_spec pf_specs_log[] = {
      0, 0x1p-10, "float", "0x1.62e42fefa39efp-1", 0, NULL, NULL, NULL, NULL, NULL},
     {"log2", "balanced", "exact", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
-     NULL, 1.0, NULL, extra_log2, model_log2, "log_q.h", "exp_log_tail.c"},
+     NULL, 1.0, NULL, extra_log2, model_log2, "exp_log_poly.h", "exp_log_tail.c"},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "log_q.h", "exp_log_tail.c"},
+     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_tail.c"},
     {0},
 };

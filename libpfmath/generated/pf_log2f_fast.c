@@ -99,15 +99,21 @@ static const float pf_log2f_fast_C[6] = {
 static const float PF_LOG2_LH PF_UNUSED = 0x1.715476p+0f;
 static const float PF_LOG2_LL PF_UNUSED = 0x1.4ae0cp-26f;
 
-/* q(r) = c2 + c3 r + ... for the log templates, split for a shorter
-   dependency chain: the first three coefficients by Horner with fmaf, the
-   rest h(r) = d0 + d1 r + ... by Estrin's scheme on r and r2 = r*r rounded
-   (pairs fmaf(d1, r, d0), then levels fmaf(p1, r2^(2^j), p0)).  h enters q
-   multiplied by r^3 (|r| < 0.42, so by less than 0.075), which damps the
-   extra roundings of Estrin's scheme and of r2; the error model in the
-   provenance follows the same steps (gen/funcs_log.c: model_q).  The loops
-   have constant trip counts and unroll fully after inlining. */
-static inline PF_UNUSED float pf_log2f_fast_q(float r, float r2, const float *c, int n)
+/* c0 + c1 r + ... + c_{n-1} r^{n-1} in float with fmaf, split for a
+   shorter dependency chain: the first three coefficients by Horner, the
+   rest h(r) = c3 + c4 r + ... by Estrin's scheme on r and r2 = r*r rounded
+   (pairs fmaf(c_{2i+4}, r, c_{2i+3}), then levels fmaf(p1, r2^(2^j), p0)).
+   h enters the sum multiplied by r^3 (|r| < 0.42 in log2's q), which damps
+   the extra roundings of Estrin's scheme and of r2; the error model in the
+   provenance follows the same steps (gen/funcs_log.c: model_q).  Up to four
+   coefficients (and for five, where the one pair is Horner's own step) this
+   is Horner's rule, the same bits.  The loops have constant trip counts and
+   unroll fully after inlining, so array loops calling it vectorize.
+   Used by log2 (q of order 8: scalar latency -23%, array time +2%); tried
+   on exp and exp2 (order 6), it shortened their scalar latency by 6% but
+   cost 5-6% in the arrays (one more product per vector), so they keep
+   Horner. */
+static inline PF_UNUSED float pf_log2f_fast_poly(float r, float r2, const float *c, int n)
 {
     if (n <= 4 || n > 35)
         return pf_horner_fma(r, c, n);
@@ -149,7 +155,7 @@ static inline PF_UNUSED float pf_log2f_fast_q(float r, float r2, const float *c,
    below 2^-16, so their roundings are below 2^-41) into the last
    fmaf(q, v, .): r^2 q(r) LH and the rest are rounded once before the last
    addition, which is the result's own rounding.  v and v_lo do not wait
-   for q, so only two fmaf and the addition follow q (pf_log2f_fast_q: Horner for
+   for q, so only two fmaf and the addition follow q (pf_log2f_fast_poly: Horner for
    its first three coefficients, Estrin's scheme for the rest).
    Without (the fast variant): fmaf(p(r), 1/ln2, k), one rounding.
    Powers of two give r = 0 and k exactly.
@@ -168,7 +174,7 @@ static inline float pf_log2f_fast_core(uint32_t iy, uint32_t off)
     float y;
     if (0 > 0) {
         float r2 = r * r, r2_lo = fmaf(r, r, -r2); /* r^2 = r2 + r2_lo exactly */
-        float q = pf_log2f_fast_q(r, r2, pf_log2f_fast_C + 2, 6 - 2);
+        float q = pf_log2f_fast_poly(r, r2, pf_log2f_fast_C + 2, 6 - 2);
         float v = r2 * PF_LOG2_LH, v_lo = fmaf(r2, PF_LOG2_LH, -v); /* r2 LH = v + v_lo exactly */
         v_lo = fmaf(r2_lo, PF_LOG2_LH, v_lo);
         float a = r * PF_LOG2_LH;
