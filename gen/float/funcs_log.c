@@ -89,6 +89,61 @@ static double ulp_of(double v)
 }
 #define H(v) (0.5 * ulp_of(v))
 
+/* q(r) = c2 + c3 r + ... and a bound on its evaluation error, following
+   the steps of the template's evaluation: plain fmaf Horner (estrin = 0,
+   log), or exp_log_poly.h.in's split (log2): Horner for c2, c3, c4 and Estrin's
+   scheme for the rest on r and r2 = r*r rounded.  Each fmaf(a, b, c) with
+   errors ea, eb, ec adds |a| eb + |b| ea + ea eb + ec and half an ulp of its
+   result; r is exact. */
+static void model_q(const fit_poly *p, int order, double r, int estrin, double *qv, double *qe)
+{
+    int n = order - 1; /* coefficients c2 .. c_order */
+    const fit_real *c = p->c + 2;
+    if (!estrin || n <= 4 || n > 35) {
+        double q = (double)c[n - 1], eq = 0;
+        for (int j = n - 2; j >= 0; j--) {
+            q = q * r + (double)c[j];
+            eq = eq * fabs(r) + H(fabs(q) + eq);
+        }
+        *qv = q, *qe = eq;
+        return;
+    }
+    double pv[16], pe[16];
+    int m = n - 3;
+    for (int i = 0; 2 * i < m; i++) {
+        if (2 * i + 1 < m) {
+            pv[i] = (double)c[3 + 2 * i + 1] * r + (double)c[3 + 2 * i];
+            pe[i] = H(pv[i]);
+        } else {
+            pv[i] = (double)c[3 + 2 * i], pe[i] = 0;
+        }
+    }
+    double w = r * r, ew = H(w);
+    int cnt = (m + 1) / 2;
+    while (cnt > 1) {
+        for (int i = 0; 2 * i < cnt; i++) {
+            if (2 * i + 1 < cnt) {
+                double a = pv[2 * i + 1], ea = pe[2 * i + 1];
+                double v = a * w + pv[2 * i];
+                pe[i] = fabs(a) * ew + fabs(w) * ea + ea * ew + pe[2 * i] + H(fabs(v) + fabs(a) * ew + fabs(w) * ea);
+                pv[i] = v;
+            } else {
+                pv[i] = pv[2 * i], pe[i] = pe[2 * i];
+            }
+        }
+        cnt = (cnt + 1) / 2;
+        double w2 = w * w;
+        ew = 2 * fabs(w) * ew + ew * ew + H(w2);
+        w = w2;
+    }
+    double q = pv[0], eq = pe[0];
+    for (int j = 2; j >= 0; j--) {
+        q = q * r + (double)c[j];
+        eq = eq * fabs(r) + H(fabs(q) + eq);
+    }
+    *qv = q, *qe = eq;
+}
+
 static int model_log_common(const fit_poly *p, int order, pf_scheme *sc, int is_log2)
 {
     if (order < 3 || p->c[0] != 0 || p->c[1] != 1) {
@@ -101,11 +156,8 @@ static int model_log_common(const fit_poly *p, int order, pf_scheme *sc, int is_
     const int n = 4096;
     for (int i = 0; i <= n; i++) {
         double r = BAL_LO + (BAL_HI - BAL_LO) * i / n;
-        double q = (double)p->c[order], eq = 0;
-        for (int j = order - 1; j >= 2; j--) {
-            q = q * r + (double)p->c[j];
-            eq = eq * fabs(r) + H(fabs(q) + eq);
-        }
+        double q, eq;
+        model_q(p, order, r, is_log2, &q, &eq);
         double r2 = r * r, g = log1p(r);
         double et = r2 * eq + fabs(q) * H(r2); /* r^2 q(r), before its own rounding */
         for (int k = -149; k <= 128; k++) {
@@ -120,11 +172,12 @@ static int model_log_common(const fit_poly *p, int order, pf_scheme *sc, int is_
                 f = k * M_LN2 + g;
             } else {
                 /* |a_lo| <= half an ulp of r LH, |lo| half an ulp of hi, |r LL| < 2^-25 |r|;
-                   t + t_lo = r2 q exactly, then r2_lo q is added (|r2_lo| <= 2^-24 r^2) */
-                double alo = H(r * L), lo = k ? H(k + r * L) : 0, t = r2 * q;
-                double tlo = H(t) + 0x1p-24 * r2 * fabs(q), w0 = alo + lo;
-                double w1 = fabs(r) * 0x1p-25 + w0, w2 = w1 + tlo * L, s = t * L + w2;
-                e = r2 * eq * L + H(tlo) + H(w0) + H(w1) + H(w2) + H(s) + fabs(r) * 0x1p-48 +
+                   v + v_lo0 = r2 LH exactly, then r2_lo LH is added (|r2_lo| <= 2^-24 r^2)
+                   and v_lo rounded; i = fmaf(q, v_lo, w1), s = fmaf(q, v, i) */
+                double alo = H(r * L), lo = k ? H(k + r * L) : 0, v = r2 * L;
+                double vlo = H(v) + 0x1p-24 * r2 * L, w0 = alo + lo;
+                double w1 = fabs(r) * 0x1p-25 + w0, i = w1 + fabs(q) * vlo, s = v * fabs(q) + i;
+                e = r2 * eq * L + fabs(q) * H(vlo) + H(w0) + H(w1) + H(i) + H(s) + fabs(r) * 0x1p-48 +
                     r2 * fabs(q) * 0x1p-25 + p->max_err * fabs(g) * L;
                 f = k + g * L;
             }
@@ -138,11 +191,13 @@ static int model_log_common(const fit_poly *p, int order, pf_scheme *sc, int is_
     sc->ncomp = 1;
     sc->bound_ulp = worst;
     snprintf(sc->text, sizeof sc->text,
-             "q(r) = (p(r) - r)/r^2 by Horner in float with fmaf; %s, "
+             "q(r) = (p(r) - r)/r^2 in float with fmaf; %s, "
              "the small rest summed in float, one rounding into the result (the model's worst "
              "point is k = %d, r = %.4f)",
-             is_log2 ? "k + r LH exact (two-sum), r^2 q(r) exact but for r2_lo q (two products)"
-                     : "k LN2HI + r exact (two-sum)",
+             is_log2 ? "k + r LH exact (two-sum), r^2 LH = v + v_lo exact but for v_lo's rounding "
+                       "(two products, independent of q), q(r) by Horner for c2..c4 and Estrin's "
+                       "scheme above"
+                     : "q(r) by Horner; k LN2HI + r exact (two-sum)",
              worst_k, worst_r);
     /* A bound above 1 ULP is stated, not refused: --order or --target may ask
        for less than the library's exact variant (whose default order the
@@ -168,9 +223,9 @@ static int model_log2(const fit_poly *p, int order, pf_scheme *sc) { return mode
 const pf_spec pf_specs_log[] = {
     {"log", "balanced", "exact", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
-     NULL, 1.0, NULL, extra_log, model_log, NULL, NULL},
+     NULL, 1.0, NULL, extra_log, model_log, NULL, "exp_log_tail.c"},
     {"log", "balanced", "fast", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, NULL},
+     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_tail.c"},
     {"log", "seed", "exact", "log_seed", 1,
      "x = 2^k m, m in [1, 2) (the seed's reduction), t = m - 1",
      "log(1+t)", g_log1p, 0, 1, FIT_PARITY_NONE, FIT_REL, 2,
@@ -184,8 +239,8 @@ const pf_spec pf_specs_log[] = {
      0, 0x1p-10, "float", "0x1.62e42fefa39efp-1", 0, NULL, NULL, NULL, NULL, NULL},
     {"log2", "balanced", "exact", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
-     NULL, 1.0, NULL, extra_log2, model_log2, NULL, NULL},
+     NULL, 1.0, NULL, extra_log2, model_log2, "exp_log_poly.h", "exp_log_tail.c"},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, NULL, NULL},
+     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_tail.c"},
     {0},
 };

@@ -111,8 +111,13 @@ static const float pf_exp2f_C[7] = {
    - Past x = 160 the result is +inf and below -160 +0, selected at the
      end, where every lane has been computed: the arithmetic above stays
      valid up to there, and whatever it gives beyond is discarded (+-inf
-     included).  NaN fails both tests and stays NaN through the arithmetic. */
-static inline float pf_exp2f_inline(float x)
+     included).  NaN fails both tests and stays NaN through the arithmetic.
+   With plain = 1 (the scalar form, for x where pf_exp2f_plain holds: k in
+   [-126, 126], so 2^k and the result are normal) y 2^k is one exact
+   product, the bits of y s1 s2, and the selects are left out. */
+static inline int pf_exp2f_plain(float x) { return fabsf(x) <= 126.0f; }
+
+static inline float pf_exp2f_body(float x, int plain)
 {
     /* 1.5 * 2^23 + 254: z's bit pattern is 0x4b4000fe + k */
     const float shift = 0x1.8001fcp23f;
@@ -123,6 +128,8 @@ static inline float pf_exp2f_inline(float x)
        (zb >> 1) << 23 is (k1 + 127) << 23 (0x4b4000fe is even and its upper
        bits shift out), and (zb << 23) is (k + 254) << 23 */
     uint32_t zb = pf_asuint(z), e1 = (zb >> 1) << 23;
+    if (plain) /* (k + 254) << 23 less 127 << 23: the bits of 2^k */
+        return y * pf_asfloat((zb << 23) - 0x3f800000u);
     float s1 = pf_asfloat(e1);
     float s2 = pf_asfloat((zb << 23) - e1);
     float res = y * s1 * s2;
@@ -134,17 +141,26 @@ static inline float pf_exp2f_inline(float x)
     return x != x ? x + x : res;
 }
 
+static inline float pf_exp2f_ordinary(float x) { return pf_exp2f_body(x, 1); }
+static inline float pf_exp2f_inline(float x) { return pf_exp2f_body(x, 0); }
+
 /* The scalar form is cloned too, so that fmaf is one instruction where the
-   CPU has FMA (the result is the same on every clone). */
+   CPU has FMA (the result is the same on every clone).  Ordinary inputs
+   (pf_exp2f_plain) branch to pf_exp2f_ordinary, the body without its
+   special-case selects: the same float operations in the same order, so
+   the same bits as the array form, but a shorter dependency chain (no
+   selects, whose operands go through integer registers). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 float pf_exp2f(float x)
 {
+    if (__builtin_expect(pf_exp2f_plain(x), 1))
+        return pf_exp2f_ordinary(x);
     return pf_exp2f_inline(x);
 }
 
-/* Array form: the body above is branch-free, so this loop vectorizes; one
+/* Array form: the body is branch-free, so this loop vectorizes; one
    clone per x86-64 level, the widest the CPU has is picked at load time. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))

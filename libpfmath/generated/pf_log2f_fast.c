@@ -99,6 +99,47 @@ static const float pf_log2f_fast_C[6] = {
 static const float PF_LOG2_LH PF_UNUSED = 0x1.715476p+0f;
 static const float PF_LOG2_LL PF_UNUSED = 0x1.4ae0cp-26f;
 
+/* c0 + c1 r + ... + c_{n-1} r^{n-1} in float with fmaf, split for a
+   shorter dependency chain: the first three coefficients by Horner, the
+   rest h(r) = c3 + c4 r + ... by Estrin's scheme on r and r2 = r*r rounded
+   (pairs fmaf(c_{2i+4}, r, c_{2i+3}), then levels fmaf(p1, r2^(2^j), p0)).
+   h enters the sum multiplied by r^3 (|r| < 0.42 in log2's q), which damps
+   the extra roundings of Estrin's scheme and of r2; the error model in the
+   provenance follows the same steps (gen/funcs_log.c: model_q).  Up to four
+   coefficients (and for five, where the one pair is Horner's own step) this
+   is Horner's rule, the same bits.  The loops have constant trip counts and
+   unroll fully after inlining, so array loops calling it vectorize.
+   Used by log2 (q of order 8: scalar latency -23%, array time +2%); tried
+   on exp and exp2 (order 6), it shortened their scalar latency by 6% but
+   cost 5-6% in the arrays (one more product per vector), so they keep
+   Horner. */
+static inline PF_UNUSED float pf_log2f_fast_poly(float r, float r2, const float *c, int n)
+{
+    if (n <= 4 || n > 35)
+        return pf_horner_fma(r, c, n);
+    float p[16];
+    int m = n - 3;
+#pragma GCC unroll 16
+    for (int i = 0; i < 16; i++)
+        if (2 * i < m)
+            p[i] = 2 * i + 1 < m ? fmaf(c[3 + 2 * i + 1], r, c[3 + 2 * i]) : c[3 + 2 * i];
+    float pw = r2;
+    int cnt = (m + 1) / 2;
+#pragma GCC unroll 4
+    for (int lvl = 0; lvl < 4; lvl++) {
+        if (cnt <= 1)
+            break;
+#pragma GCC unroll 8
+        for (int i = 0; i < 8; i++)
+            if (2 * i < cnt)
+                p[i] = 2 * i + 1 < cnt ? fmaf(p[2 * i + 1], pw, p[2 * i]) : p[2 * i];
+        cnt = (cnt + 1) / 2;
+        pw = pw * pw;
+    }
+    float s = fmaf(p[0], r, c[2]);
+    s = fmaf(s, r, c[1]);
+    return fmaf(s, r, c[0]);
+}
 /* log2(x) = k + log(m)/ln2, x = 2^k m, m in [sqrt(2)/2, sqrt(2)), in float
    lanes with fmaf (one rounding each, the same bits on every clone).
    r = m - 1 is exact (Sterbenz), p(r) = r + r^2 q(r) approximates log(1+r)
@@ -108,13 +149,49 @@ static const float PF_LOG2_LL PF_UNUSED = 0x1.4ae0cp-26f;
    result's ulp is 2^-25 while r^2 q(r)/ln2 is near 0.1, so every rounding of
    that part would cost 0.1-0.2 ULP.  Hence: r LH = a + a_lo exactly (one
    fmaf gives a product's rounding error), k + a = hi + lo exactly (Dekker's
-   fast two-sum: |k| >= 1 > |a|, or k = 0), r^2 q = u + u_lo exactly up to
-   r2_lo q (two exact products), and the small terms lo + a_lo + r LL +
-   u_lo LH are summed (each below 2^-16, so their roundings are below 2^-41)
-   into the last fmaf(u, LH, .): r^2 q(r) LH and the rest are rounded once
-   before the last addition, which is the result's own rounding.
+   fast two-sum: |k| >= 1 > |a|, or k = 0), r^2 LH = v + v_lo up to the
+   rounding of v_lo (two exact products: r^2 = r2 + r2_lo, r2 LH = v + its
+   error), and the small terms lo + a_lo + r LL + q v_lo are summed (each
+   below 2^-16, so their roundings are below 2^-41) into the last
+   fmaf(q, v, .): r^2 q(r) LH and the rest are rounded once before the last
+   addition, which is the result's own rounding.  v and v_lo do not wait
+   for q, so only two fmaf and the addition follow q (pf_log2f_fast_poly: Horner for
+   its first three coefficients, Estrin's scheme for the rest).
    Without (the fast variant): fmaf(p(r), 1/ln2, k), one rounding.
-   Powers of two give r = 0 and k exactly. */
+   Powers of two give r = 0 and k exactly.
+   The core takes x's bits iy and the offset off of m's low edge; the
+   scalar form calls it directly for positive normal x (pf_log2f_fast_plain):
+   the same bits as the array form, without the subnormal scaling and the
+   special-case selects. */
+static inline int pf_log2f_fast_plain(float x) { return pf_asuint(x) - 0x00800000u < 0x7f000000u; }
+
+static inline float pf_log2f_fast_core(uint32_t iy, uint32_t off)
+{
+    uint32_t t = iy - off;
+    float kf = (float)((int32_t)t >> 23); /* arithmetic shift (GCC, Clang) */
+    float m = pf_asfloat((t & 0x007fffffu) + 0x3f3504f3u);
+    float r = m - 1.0f;
+    float y;
+    if (0 > 0) {
+        float r2 = r * r, r2_lo = fmaf(r, r, -r2); /* r^2 = r2 + r2_lo exactly */
+        float q = pf_log2f_fast_poly(r, r2, pf_log2f_fast_C + 2, 6 - 2);
+        float v = r2 * PF_LOG2_LH, v_lo = fmaf(r2, PF_LOG2_LH, -v); /* r2 LH = v + v_lo exactly */
+        v_lo = fmaf(r2_lo, PF_LOG2_LH, v_lo);
+        float a = r * PF_LOG2_LH;
+        float a_lo = fmaf(r, PF_LOG2_LH, -a);
+        float hi = kf + a;
+        float lo = a - (hi - kf);
+        float w = fmaf(r, PF_LOG2_LL, a_lo + lo);
+        y = hi + fmaf(q, v, fmaf(q, v_lo, w));
+    } else {
+        y = fmaf(pf_horner_fma(r, pf_log2f_fast_C, 6), PF_LOG2_LH, kf);
+    }
+    return y;
+}
+
+/* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
+static inline float pf_log2f_fast_ordinary(float x) { return pf_log2f_fast_core(pf_asuint(x), 0x3f3504f3u); }
+
 static inline float pf_log2f_fast_inline(float x)
 {
     uint32_t ix = pf_asuint(x);
@@ -123,27 +200,7 @@ static inline float pf_log2f_fast_inline(float x)
        the low 23 bits, which give m, are the same) */
     int sub = ix < 0x00800000u;
     uint32_t iy = pf_asuint(x * (sub ? 0x1p23f : 1.0f));
-    /* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
-    uint32_t t = iy - (sub ? 0x3f3504f3u + (23u << 23) : 0x3f3504f3u);
-    float kf = (float)((int32_t)t >> 23); /* arithmetic shift (GCC, Clang) */
-    float m = pf_asfloat((t & 0x007fffffu) + 0x3f3504f3u);
-    float r = m - 1.0f;
-    float y;
-    if (0 > 0) {
-        float q = pf_horner_fma(r, pf_log2f_fast_C + 2, 6 - 2);
-        float r2 = r * r, r2_lo = fmaf(r, r, -r2); /* r^2 = r2 + r2_lo exactly */
-        float u = r2 * q, u_lo = fmaf(r2, q, -u);   /* r2 q = u + u_lo exactly */
-        u_lo = fmaf(r2_lo, q, u_lo);
-        float a = r * PF_LOG2_LH;
-        float a_lo = fmaf(r, PF_LOG2_LH, -a);
-        float hi = kf + a;
-        float lo = a - (hi - kf);
-        float w = fmaf(r, PF_LOG2_LL, a_lo + lo);
-        w = fmaf(u_lo, PF_LOG2_LH, w);
-        y = hi + fmaf(u, PF_LOG2_LH, w);
-    } else {
-        y = fmaf(pf_horner_fma(r, pf_log2f_fast_C, 6), PF_LOG2_LH, kf);
-    }
+    float y = pf_log2f_fast_core(iy, sub ? 0x3f3504f3u + (23u << 23) : 0x3f3504f3u);
     /* special inputs, chosen last so the arithmetic above stays branch-free:
        +inf -> +inf, +-0 -> -inf, x < 0 and NaN -> NaN */
     y = x == (float)INFINITY ? x : y;
@@ -152,16 +209,22 @@ static inline float pf_log2f_fast_inline(float x)
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
-   CPU has FMA (the result is the same on every clone). */
+   CPU has FMA (the result is the same on every clone).  Ordinary inputs
+   (pf_log2f_fast_plain) branch to pf_log2f_fast_ordinary, the body without its
+   special-case selects: the same float operations in the same order, so
+   the same bits as the array form, but a shorter dependency chain (no
+   selects, whose operands go through integer registers). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 float pf_log2f_fast(float x)
 {
+    if (__builtin_expect(pf_log2f_fast_plain(x), 1))
+        return pf_log2f_fast_ordinary(x);
     return pf_log2f_fast_inline(x);
 }
 
-/* Array form: the body above is branch-free, so this loop vectorizes; one
+/* Array form: the body is branch-free, so this loop vectorizes; one
    clone per x86-64 level, the widest the CPU has is picked at load time. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))

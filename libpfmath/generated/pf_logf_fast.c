@@ -114,17 +114,16 @@ static const float PF_LOG_LN2 PF_UNUSED = 0x1.62e43p-1f;
    only the small part r^2 q(r) + (k LN2LO + lo) is rounded before the last
    addition, which is the result's own rounding (k LN2LO + lo is below
    2^-16, so its own rounding is below 2^-41).
-   Without (the fast variant): fmaf(k, ln2, p(r)), one rounding. */
-static inline float pf_logf_fast_inline(float x)
+   Without (the fast variant): fmaf(k, ln2, p(r)), one rounding.
+   The core takes x's bits iy and the offset off of m's low edge; the
+   scalar form calls it directly for positive normal x (pf_logf_fast_plain):
+   the same bits as the array form, without the subnormal scaling and the
+   special-case selects. */
+static inline int pf_logf_fast_plain(float x) { return pf_asuint(x) - 0x00800000u < 0x7f000000u; }
+
+static inline float pf_logf_fast_core(uint32_t iy, uint32_t off)
 {
-    uint32_t ix = pf_asuint(x);
-    /* subnormals: scaled by 2^23 so that the exponent field is meaningful,
-       and 23 more taken off k through the offset (a multiple of 2^23, so
-       the low 23 bits, which give m, are the same) */
-    int sub = ix < 0x00800000u;
-    uint32_t iy = pf_asuint(x * (sub ? 0x1p23f : 1.0f));
-    /* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
-    uint32_t t = iy - (sub ? 0x3f3504f3u + (23u << 23) : 0x3f3504f3u);
+    uint32_t t = iy - off;
     float kf = (float)((int32_t)t >> 23); /* arithmetic shift (GCC, Clang) */
     float m = pf_asfloat((t & 0x007fffffu) + 0x3f3504f3u);
     float r = m - 1.0f;
@@ -139,6 +138,21 @@ static inline float pf_logf_fast_inline(float x)
     } else {
         y = fmaf(kf, PF_LOG_LN2, pf_horner_fma(r, pf_logf_fast_C, 6));
     }
+    return y;
+}
+
+/* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
+static inline float pf_logf_fast_ordinary(float x) { return pf_logf_fast_core(pf_asuint(x), 0x3f3504f3u); }
+
+static inline float pf_logf_fast_inline(float x)
+{
+    uint32_t ix = pf_asuint(x);
+    /* subnormals: scaled by 2^23 so that the exponent field is meaningful,
+       and 23 more taken off k through the offset (a multiple of 2^23, so
+       the low 23 bits, which give m, are the same) */
+    int sub = ix < 0x00800000u;
+    uint32_t iy = pf_asuint(x * (sub ? 0x1p23f : 1.0f));
+    float y = pf_logf_fast_core(iy, sub ? 0x3f3504f3u + (23u << 23) : 0x3f3504f3u);
     /* special inputs, chosen last so the arithmetic above stays branch-free:
        +inf -> +inf, +-0 -> -inf, x < 0 and NaN -> NaN */
     y = x == (float)INFINITY ? x : y;
@@ -147,16 +161,22 @@ static inline float pf_logf_fast_inline(float x)
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
-   CPU has FMA (the result is the same on every clone). */
+   CPU has FMA (the result is the same on every clone).  Ordinary inputs
+   (pf_logf_fast_plain) branch to pf_logf_fast_ordinary, the body without its
+   special-case selects: the same float operations in the same order, so
+   the same bits as the array form, but a shorter dependency chain (no
+   selects, whose operands go through integer registers). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 float pf_logf_fast(float x)
 {
+    if (__builtin_expect(pf_logf_fast_plain(x), 1))
+        return pf_logf_fast_ordinary(x);
     return pf_logf_fast_inline(x);
 }
 
-/* Array form: the body above is branch-free, so this loop vectorizes; one
+/* Array form: the body is branch-free, so this loop vectorizes; one
    clone per x86-64 level, the widest the CPU has is picked at load time. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
