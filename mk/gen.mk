@@ -1,5 +1,5 @@
 # gen/: pfmathgen, its templates (embedded at build time) and emitters.
-GEN_SRCS := gen/funcs.c $(sort $(wildcard gen/funcs_*.c)) gen/generate.c gen/float_model.c gen/compile.c gen/fixedgen.c gen/scene.c gen/plot.c gen/cli.c gen/output.c gen/subproc.c gen/request.c
+GEN_SRCS := gen/funcs.c $(sort $(wildcard gen/funcs_*.c)) gen/generate.c gen/float_model.c gen/compile.c gen/fixedgen.c gen/scene.c gen/plot.c gen/cli.c gen/output.c gen/subproc.c gen/request.c gen/ladder.c
 GEN_TEMPLATES := $(sort $(wildcard gen/templates/*.in))
 PROGS += $(BUILD)/pfmathgen
 
