@@ -42,5 +42,9 @@ $(LADDER_LIB): $(LADDER_SRCS:.c=.o)
 ladder: $(LADDER_LIB)
 
 # --max-ulp's options, and what it emits, against MPFR (sampled confirmation)
+# and pfbench's Pareto check on made-up points
 TESTS += $(BUILD)/tests/test_ladder
-$(BUILD)/tests/test_ladder: $(BUILD)/pfmathgen
+$(BUILD)/tests/test_ladder: tests/test_ladder.c $(BUILD)/obj/tests/pfbench_ladder_pareto.o $(TEST_LIBS) | $(BUILD)/pfmathgen
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< $(BUILD)/obj/tests/pfbench_ladder_pareto.o -o $@ $(LDFLAGS) \
+	  -fopenmp $(TEST_LIBS) -lcmocka $(LIBS_NUM)

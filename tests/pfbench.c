@@ -568,7 +568,10 @@ int main(int argc, char **argv)
     size_t par_len = 0;
     int par_pass = 0, par_miss = 0;
     FILE *par = open_memstream(&par_text, &par_len);
-    if (!par)
+    char *lad_text = NULL;
+    size_t lad_len = 0;
+    FILE *lad = open_memstream(&lad_text, &lad_len);
+    if (!par || !lad)
         die2("out of memory", NULL);
 
     for (int di = 0; di < nd; di++) {
@@ -719,6 +722,7 @@ int main(int argc, char **argv)
                 pts[i] = (pfb_point){r[i].c.name, r[i].c.isa, r[i].c.ours, r[i].c.absent[0] ? NAN : r[i].thr_med,
                                      r[i].have_err ? r[i].err.max_ulp : NAN};
             pfb_pareto_checks(par, fn, d->tag, pts, nc, &par_pass, &par_miss);
+            pfb_ladder_table(lad, fn, d->tag, pts, nc);
         }
         fprintf(stderr, "pfbench: %-5s %-4s %2d candidates, %.1f s\n", fn, d->tag, nc, wall() - t_dom);
         for (int i = 0; i < nc; i++) {
@@ -752,6 +756,14 @@ int main(int argc, char **argv)
     fputs(par_text, md);
     free(par_text);
     fprintf(md, "\n%d Pareto checks pass, %d MISS.\n", par_pass, par_miss);
+    fprintf(md, "\n## Accuracy ladder (issue 13): each level beside the vector peer nearest in max error\n\n"
+                "Levels pfmath-L<U>: pfmathgen --max-ulp U (make ladder), U ULP over every float; 128 and "
+                "8192 ULP are the relative levels 2^-16 and 2^-10.  Ratio = peer ns / level ns.\n\n"
+                "| function | domain | ISA | level | ns/elem | max ULP (sample) | nearest peer | peer ns | peer "
+                "max ULP | ratio |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    fclose(lad);
+    fputs(lad_text, md);
+    free(lad_text);
     fprintf(md, "\nTotal bench time %.0f s.\n", wall() - t_start);
     if (pfcli_out_commit(&omd, err, sizeof err) != 0) {
         pfcli_out_abort(&ocsv);

@@ -32,4 +32,8 @@ typedef struct {
 void pfb_pareto_checks(FILE *md, const char *fn, const char *dom, const pfb_point *p, int n, int *pass,
                        int *miss);
 
+/* The ladder's table: each ladder row of an AVX2 or AVX-512 clone beside the
+   vector peer of the same ISA nearest to it in max error (log scale). */
+void pfb_ladder_table(FILE *md, const char *fn, const char *dom, const pfb_point *p, int n);
+
 #endif

@@ -39,3 +39,28 @@ void pfb_pareto_checks(FILE *md, const char *fn, const char *dom, const pfb_poin
                 ok ? "pass" : "**MISS**");
     }
 }
+
+void pfb_ladder_table(FILE *md, const char *fn, const char *dom, const pfb_point *p, int n)
+{
+    for (int i = 0; i < n; i++) {
+        if (p[i].ours != PFB_OURS_LADDER || !isfinite(p[i].t) || !isfinite(p[i].e))
+            continue;
+        int near = -1;
+        double dist = INFINITY;
+        for (int j = 0; j < n; j++) {
+            if (!vector_peer(&p[j]) || strcmp(p[j].isa, p[i].isa))
+                continue;
+            /* log distance; errors of 0 count as 2^-10 ULP */
+            double d = fabs(log2(fmax(p[j].e, 0x1p-10)) - log2(fmax(p[i].e, 0x1p-10)));
+            if (d < dist)
+                dist = d, near = j;
+        }
+        if (near < 0) {
+            fprintf(md, "| %s | %s | %s | %s | %.3g | %.3g | — | | | |\n", fn, dom, p[i].isa, p[i].name, p[i].t,
+                    p[i].e);
+            continue;
+        }
+        fprintf(md, "| %s | %s | %s | %s | %.3g | %.3g | %s | %.3g | %.3g | %.2fx |\n", fn, dom, p[i].isa,
+                p[i].name, p[i].t, p[i].e, p[near].name, p[near].t, p[near].e, p[near].t / p[i].t);
+    }
+}

@@ -14,6 +14,7 @@
 #include <cmocka.h>
 
 #include "compile.h"
+#include "pfbench_ladder.h"
 #include "sweep.h"
 #include "testutil.h"
 #include "tu_exec.h"
@@ -163,6 +164,43 @@ static void test_impossible(void **st)
     expect_error("impossible target", "--func", "exp2", "--max-ulp", "0.5", "--confirm", "sample");
 }
 
+/* pfbench's Pareto check (tests/pfbench_ladder_pareto.c) on made-up points:
+   only a pfmath point of the same ISA, at least as accurate, counts */
+static void test_pareto_checks(void **st)
+{
+    (void)st;
+    pfb_point p[] = {
+        {"sleef-u35", "avx512", 0, 2.0, 3.0},   {"pfmath", "avx512", 1, 3.0, 0.9},
+        {"pfmath-L4", "avx512", 2, 1.5, 3.2},   {"pfmath-L4", "avx2", 2, 0.5, 1.0},
+        {"glibc", "scalar", 0, 9.0, 0.5},       {"sleef-u10", "avx2", 0, 1.0, 0.9},
+    };
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    int pass = 0, miss = 0;
+    pfb_pareto_checks(f, "exp", "d", p, 6, &pass, &miss);
+    fclose(f);
+    print_message("%s", text);
+    /* u35/512: only pfmath/512 (3 ns) is as accurate: MISS at 0.67x; u10/256:
+       no pfmath/256 point within 0.9 ULP; glibc scalar is not a vector peer */
+    assert_int_equal(pass, 0);
+    assert_int_equal(miss, 2);
+    assert_non_null(strstr(text, "| sleef-u35 | 2 ns, 3 ULP | pfmath: 3 ns, 0.9 ULP | 0.67x | **MISS** |"));
+    assert_non_null(strstr(text, "none as accurate"));
+    free(text);
+    p[2].e = 2.5; /* L4/512 now as accurate as u35 and faster */
+    p[3].e = 0.8; /* L4/256 within u10's error and faster */
+    text = NULL;
+    f = open_memstream(&text, &len);
+    pass = miss = 0;
+    pfb_pareto_checks(f, "exp", "d", p, 6, &pass, &miss);
+    fclose(f);
+    assert_int_equal(pass, 2);
+    assert_int_equal(miss, 0);
+    assert_non_null(strstr(text, "pfmath-L4: 1.5 ns, 2.5 ULP | 1.33x | pass |"));
+    free(text);
+}
+
 int main(void)
 {
     const struct CMUnitTest t[] = {
@@ -170,6 +208,7 @@ int main(void)
         cmocka_unit_test(test_clashes),
         cmocka_unit_test(test_emitted_meets_bound),
         cmocka_unit_test(test_impossible),
+        cmocka_unit_test(test_pareto_checks),
     };
     return cmocka_run_group_tests(t, NULL, NULL);
 }
