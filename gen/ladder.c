@@ -210,7 +210,7 @@ static int try_cand(const pf_gen_req *base, const cand *c, double U, int sample,
     if (!base->method)
         g.method = "minimax";
     if (pf_generate(&g, r, e, sizeof e) != 0 && (base->method || (g.method = "lsq", pf_generate(&g, r, e, sizeof e) != 0))) {
-        fprintf(log, "ladder: %-5s order %2d cost %3d: no fit (%s)\n", c->s->variant, c->order, c->cost, e);
+        fprintf(log, "ladder: %-5s order %2d cost %3d: not generated (%s)\n", c->s->variant, c->order, c->cost, e);
         return 0;
     }
     double pred = *predicted = predict(r);

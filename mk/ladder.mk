@@ -48,3 +48,11 @@ $(BUILD)/tests/test_ladder: tests/test_ladder.c $(BUILD)/obj/tests/pfbench_ladde
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< $(BUILD)/obj/tests/pfbench_ladder_pareto.o -o $@ $(LDFLAGS) \
 	  -fopenmp $(TEST_LIBS) -lcmocka $(LIBS_NUM)
+
+# what the search chose, one row per level (from the files' provenance)
+$(LADDER_DIR)/ladder.md: $(LADDER_SRCS) mk/ladder-table.awk
+	@{ echo "| function | level, ULP | template | order | cost | confirmed max ULP | worst input | sweep |"; \
+	   echo "|---|---|---|---|---|---|---|---|"; \
+	   for f in $(LADDER_SRCS); do awk -f mk/ladder-table.awk $$f; done; } > $@
+	@echo "  wrote $@"
+ladder: $(LADDER_DIR)/ladder.md
