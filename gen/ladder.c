@@ -5,6 +5,7 @@
 #include "float_model.h"
 
 #include <dlfcn.h>
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -22,6 +23,7 @@ int pfsweep_pairs(pf_sweep_stats *s, pf_func f, pf_fn2 fn, uint64_t seed, uint64
 typedef struct {
     const pf_spec *s;
     int order, cost;
+    int costed;           /* cost includes the model's compensated steps */
 } cand;
 
 static int nterms(const pf_spec *s, int order)
@@ -38,7 +40,11 @@ static int nterms(const pf_spec *s, int order)
    atrig schemes' hi + lo steps, Fast2Sum) 8 more, about four fmaf.  A rough
    static figure: it only orders candidates of the same function, and it
    keeps the choice deterministic (a timed choice would change from run to
-   run).  Ties go to the fast template, then the lower order. */
+   run).  Ties go to the fast template, then the lower order.  A model that
+   compensates steps (log's exact scheme: NCOMP double-float steps) adds 8
+   a step, known only after the fit: such a candidate is then put back in
+   its place by the corrected cost (COMP_COST). */
+#define COMP_COST 8
 static int cost_of(const pf_spec *s, const pf_spec *fast, int order)
 {
     int n = nterms(s, order);
@@ -86,7 +92,7 @@ static int candidates(const char *func, const char *reduction, cand *c)
         for (int o = min_order(sp[i]); o <= LADDER_MAX_ORDER && n < LADDER_MAX_CANDS; o++) {
             if ((sp[i]->parity == FIT_PARITY_ODD && o % 2 == 0) || (sp[i]->parity == FIT_PARITY_EVEN && o % 2))
                 continue;
-            c[n++] = (cand){sp[i], o, cost_of(sp[i], fast, o)};
+            c[n++] = (cand){sp[i], o, cost_of(sp[i], fast, o), 0};
         }
     }
     qsort(c, (size_t)n, sizeof *c, cand_cmp);
@@ -194,8 +200,10 @@ static void default_name(char *out, size_t n, const char *func, double u)
     snprintf(out, n, "pf_%sf_u%s", func, num);
 }
 
-/* One candidate through steps 1-3: 1 accepted (*r kept), 0 rejected, -1 failure. */
-static int try_cand(const pf_gen_req *base, const cand *c, double U, int sample, FILE *log,
+/* One candidate through steps 1-3: 1 accepted (*r kept), 0 rejected, -1
+   failure, 2 deferred (its cost grew past next_cost once the model chose
+   compensated steps). */
+static int try_cand(const pf_gen_req *base, cand *c, int next_cost, double U, int sample, FILE *log,
                     pf_gen_result *r, double *predicted, char *why, size_t whylen)
 {
     *predicted = INFINITY;
@@ -212,6 +220,16 @@ static int try_cand(const pf_gen_req *base, const cand *c, double U, int sample,
     if (pf_generate(&g, r, e, sizeof e) != 0 && (base->method || (g.method = "lsq", pf_generate(&g, r, e, sizeof e) != 0))) {
         fprintf(log, "ladder: %-5s order %2d cost %3d: not generated (%s)\n", c->s->variant, c->order, c->cost, e);
         return 0;
+    }
+    if (!c->costed && r->has_scheme && r->scheme.ncomp > 0) {
+        c->costed = 1;
+        c->cost += COMP_COST * r->scheme.ncomp;
+        if (c->cost > next_cost) {
+            fprintf(log, "ladder: %-5s order %2d: %d compensated step(s), cost %d: deferred\n", c->s->variant,
+                    c->order, r->scheme.ncomp, c->cost);
+            pf_gen_free(r);
+            return 2;
+        }
     }
     double pred = *predicted = predict(r);
     fprintf(log, "ladder: %-5s order %2d cost %3d: predicted %.3g ULP", c->s->variant, c->order, c->cost, pred);
@@ -313,9 +331,19 @@ static int search(const pf_gen_req *base, double U, int sample, FILE *log, pf_ge
         if (stall[k] >= 2)
             continue;
         double pred;
-        int rc = try_cand(&g, &c[i], U, sample, log, res, &pred, err, errlen);
+        int rc = try_cand(&g, &c[i], i + 1 < n ? c[i + 1].cost : INT_MAX, U, sample, log, res, &pred, err, errlen);
         if (rc < 0)
             return 1;
+        if (rc == 2) {
+            /* back in its place by the corrected cost; c[i] is then the next one */
+            cand d = c[i];
+            int j = i;
+            for (; j + 1 < n && cand_cmp(&c[j + 1], &d) <= 0; j++)
+                c[j] = c[j + 1];
+            c[j] = d;
+            i--;
+            continue;
+        }
         if (isfinite(pred)) {
             stall[k] = pred > 0.97 * best[k] ? stall[k] + 1 : 0;
             best[k] = fmin(best[k], pred);
