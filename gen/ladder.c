@@ -80,8 +80,14 @@ static int min_order(const pf_spec *s)
 static int candidates(const char *func, const char *reduction, cand *c)
 {
     const pf_spec *fast = NULL, *exact = NULL;
-    if (!reduction)
-        reduction = pf_spec_find(func, "exact", NULL)->reduction; /* the function's default */
+    if (!reduction) {
+        /* the function's default: its first row (gen/funcs.h) */
+        const pf_spec *d = pf_spec_find(func, "exact", NULL);
+        d = d ? d : pf_spec_find(func, "fast", NULL);
+        if (!d)
+            return 0;
+        reduction = d->reduction;
+    }
     fast = pf_spec_find(func, "fast", reduction);
     exact = pf_spec_find(func, "exact", reduction);
     const pf_spec *sp[2] = {fast, exact};
