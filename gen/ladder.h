@@ -25,8 +25,8 @@
  * up to 2x at the bottom of a binade, and absolute (U 2^-149) for subnormal
  * results.
  *
- * confirm_sample (--confirm sample) replaces step 3 by a larger sample
- * (2^22 random floats on top of step 2): for the tests and quick ladders; the
+ * confirm_sample (--confirm sample) drops step 3 and takes 2^22 random
+ * floats in step 2 instead of 2^20: for the tests and quick ladders; the
  * provenance says "sampled, not exhaustive". */
 #ifndef PF_LADDER_H
 #define PF_LADDER_H
