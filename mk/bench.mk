@@ -2,7 +2,8 @@
 # beside glibc, libmvec and SLEEF and measures everyone's ULP error against
 # ref/; `make bench` runs it and draws one SVG per function with gnuplot.
 PFBENCH_SRCS := tests/pfbench.c tests/pfbench_err.c tests/pfbench_peers.c \
-                tests/pfbench_ours.c tests/pfbench_fixed.c
+                tests/pfbench_ours.c tests/pfbench_fixed.c tests/pfbench_ladder.c \
+                tests/pfbench_ladder_pareto.c
 PFBENCH_OBJS = $(PFBENCH_SRCS:%.c=$(BUILD)/obj/%.o)
 PROGS += $(BUILD)/pfbench
 
@@ -16,8 +17,10 @@ $(BUILD)/pfbench: $(PFBENCH_OBJS) $(BUILD)/libpfref.a
 # options through, e.g. make bench PFBENCH_ARGS='--func log,exp --reps 21'.
 .PHONY: bench-float
 bench: bench-float
-bench-float: $(BUILD)/pfbench $(BUILD)/libpfmath.so
-	$(BUILD)/pfbench --lib $(BUILD)/libpfmath.so --out $(BUILD) $(PFBENCH_ARGS)
+# The accuracy ladder's library (mk/ladder.mk; LADDER_SAMPLE=1 for a quick one)
+# gives the rows pfmath-L<U> and takes part in the Pareto checks.
+bench-float: $(BUILD)/pfbench $(BUILD)/libpfmath.so ladder
+	$(BUILD)/pfbench --lib $(BUILD)/libpfmath.so --ladder $(LADDER_LIB) --out $(BUILD) $(PFBENCH_ARGS)
 	bash tests/bench-plot.sh $(BUILD)/bench.csv $(BUILD)
 
 # Two benches timing at once on two cores would disturb each other: the

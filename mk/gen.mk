@@ -1,7 +1,7 @@
 # gen/: pfmathgen, its templates (embedded at build time) and emitters, a
 # folder per stage: front/ (options, request, output, compile, plot, scene),
-# emit/ (the emit kit shared by the generators), float/ (the float generator
-# and its function table); fixed/ and noise/ come from fixedgen.mk and
+# emit/ (the emit kit shared by the generators), float/ (the float generator,
+# its function table and the --max-ulp ladder search); fixed/ and noise/ come from fixedgen.mk and
 # noisegen.mk.  Every folder is on the include path.
 GEN_DIRS := gen/front gen/emit gen/float gen/fixed gen/noise
 CPPFLAGS += $(GEN_DIRS:%=-I%)

@@ -3,7 +3,9 @@
 # speed (x, ns per element of the array form, log scale) against max error
 # (y, ULP on the seeded sample, log scale), one labelled point per candidate,
 # one panel per input domain, and the Pareto front (no other candidate is
-# both faster and more accurate) as a staircase through the best points.
+# both faster and more accurate) as a staircase through the best points;
+# pfmath's own curve (issue 13) is a second staircase through the pfmath
+# points alone: exact, fast and the accuracy ladder's levels (pfmath-L<U>).
 # Writes OUTDIR/bench-<func>.svg (and .png with BENCH_PLOT_PNG=1).  Needs gnuplot (Debian gnuplot-nox) and awk.
 set -eu
 csv=${1:?usage: bench-plot.sh BENCH.csv OUTDIR}
@@ -17,7 +19,8 @@ trap 'rm -rf "$tmp"' EXIT
 
 # CSV -> one whitespace-separated file per (function, domain):
 #   ns  ulp  pareto  class  label
-# class: 0 pfmath, 1 pfmath-fast, 2 glibc, 3 libmvec, 4 sleef-u10, 5 sleef-u35
+# class: 0 pfmath, 1 pfmath-fast, 2 glibc, 3 libmvec, 4 sleef-u10, 5 sleef-u35,
+# 6 pfmath-L<U> (a ladder level)
 # Only measured ULP rows (absent candidates and fixed-point LSB rows have no
 # place on a ULP axis; they are in bench.md).
 awk -v dir="$tmp" '
@@ -38,10 +41,11 @@ NR == 1 { parse($0); for (i = 1; i <= n; i++) col[F[i]] = i; next }
   t = F[col["thr_med"]] + 0; e = F[col["max_ulp"]]
   if (t <= 0 || e == "inf" || e == "nan" || e + 0 <= 0) next
   name = F[col["candidate"]]; isa = F[col["isa"]]
-  cls = name == "pfmath" ? 0 : name == "pfmath-fast" ? 1 : name == "glibc" ? 2 : \
+  lad = name ~ /^pfmath-L[0-9]+$/
+  cls = name == "pfmath" ? 0 : name == "pfmath-fast" ? 1 : lad ? 6 : name == "glibc" ? 2 : \
         name == "libmvec" ? 3 : name == "sleef-u10" ? 4 : 5
-  short = name == "pfmath" ? "pf" : name == "pfmath-fast" ? "pf-fast" : name == "libmvec" ? "mvec" : \
-          name == "sleef-u10" ? "sleef10" : name == "sleef-u35" ? "sleef35" : name
+  short = name == "pfmath" ? "pf" : name == "pfmath-fast" ? "pf-fast" : lad ? substr(name, 8) : \
+          name == "libmvec" ? "mvec" : name == "sleef-u10" ? "sleef10" : name == "sleef-u35" ? "sleef35" : name
   if (isa == "avx512") short = short "/512"; else if (isa == "avx2") short = short "/256"
   else if (isa == "sse2") short = short "/128"; else if (isa == "dispatch") short = short "/disp"
   fn = F[col["func"]]; dom = F[col["domain"]]
@@ -126,10 +130,15 @@ for fn in $(cut -f1 "$tmp/index" | sed 's|.*/||; s|@.*||' | awk '!s[$0]++'); do
       echo "unset label; unset arrow"
       place_labels "$file"
       awk '$3 == 1' "$file" | sort -g > "$file.front"
+      # pfmath's curve: its points that no other pfmath point beats in both
+      awk '$4 == 0 || $4 == 1 || $4 == 6' "$file" | sort -g -k1,1 -k2,2 |
+        awk 'NR == 1 || $2 < best { print; best = $2 }' > "$file.ours"
       echo "plot \\"
       echo "  '$file.front' using 1:2 with steps lw 2 lc rgb '#999999' title 'Pareto front', \\"
+      echo "  '$file.ours' using 1:2 with steps lw 1.5 dt 2 lc rgb '#1f4e9e' title 'pfmath curve', \\"
       echo "  '$file' using (\$4 == 0 ? \$1 : NaN):2 with points pt 7 ps 1.1 lc rgb '#1f4e9e' title 'pfmath', \\"
       echo "  '$file' using (\$4 == 1 ? \$1 : NaN):2 with points pt 5 ps 1.0 lc rgb '#58a6ff' title 'pfmath fast', \\"
+      echo "  '$file' using (\$4 == 6 ? \$1 : NaN):2 with points pt 6 ps 1.0 lc rgb '#1f4e9e' title 'pfmath ladder (L<U>: U ULP)', \\"
       echo "  '$file' using (\$4 == 2 ? \$1 : NaN):2 with points pt 9 ps 1.2 lc rgb '#000000' title 'glibc scalar', \\"
       echo "  '$file' using (\$4 == 3 ? \$1 : NaN):2 with points pt 11 ps 1.2 lc rgb '#2ca02c' title 'libmvec', \\"
       echo "  '$file' using (\$4 == 4 ? \$1 : NaN):2 with points pt 13 ps 1.1 lc rgb '#d62728' title 'SLEEF u10', \\"

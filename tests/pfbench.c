@@ -3,6 +3,7 @@
  * See --help and docs/bench.md. */
 #include "pfbench.h"
 #include "pfbench_fixed.h"
+#include "pfbench_ladder.h"
 #include "pfcli.h"
 
 #include <errno.h>
@@ -19,7 +20,7 @@
 
 static const char usage[] =
     "usage: pfbench [--lib PATH] [--out DIR] [--func f,g,...] [--reps N] [--samples N]\n"
-    "               [--seed S] [--ms T] [--list]\n"
+    "               [--seed S] [--ms T] [--ladder PATH] [--list]\n"
     "Times every pfmath function found in libpfmath.so (exact, fast; scalar and\n"
     "each array clone) beside glibc's scalar function, libmvec and SLEEF u10/u35\n"
     "(AVX2, AVX-512 where the CPU has it) on the same inputs, and measures every\n"
@@ -31,6 +32,8 @@ static const char usage[] =
     "  --samples N   error sample size, >= 2^16 (default 2^20)\n"
     "  --seed S      seed of the sample, 0..2^64-1 (default 1)\n"
     "  --ms T        target length of one timed repetition in ms (default 4)\n"
+    "  --ladder PATH the accuracy ladder's library (make ladder: build/libpfladder.so):\n"
+    "                rows pfmath-L<U> for its levels, in the Pareto checks\n"
     "  --list        print the domains and the candidates found, then exit\n"
     "Numbers are decimal or 0x hex; each option may be given once.  bench.md and\n"
     "bench.csv are replaced only at the end of a complete run.\n"
@@ -368,8 +371,9 @@ int main(int argc, char **argv)
         {"func", required_argument, 0, 'f'},    {"reps", required_argument, 0, 'r'},
         {"samples", required_argument, 0, 'n'}, {"seed", required_argument, 0, 'S'},
         {"ms", required_argument, 0, 'm'},      {"list", no_argument, 0, 'L'},
-        {"help", no_argument, 0, 'h'},          {0, 0, 0, 0}};
-    const char *lib = NULL, *outdir = NULL, *only = NULL;
+        {"help", no_argument, 0, 'h'},          {"ladder", required_argument, 0, 'D'},
+        {0, 0, 0, 0}};
+    const char *lib = NULL, *outdir = NULL, *only = NULL, *ladder = NULL;
     long reps = 15;
     unsigned long long samples = 1ull << 20, seed = 1, ureps;
     double target_ms = 4;
@@ -402,6 +406,7 @@ int main(int argc, char **argv)
                 die2("--ms must be a number in (0, 1000]: ", optarg);
             break;
         case 'L': list = 1; break;
+        case 'D': ladder = optarg; break;
         case 'h': fputs(usage, stdout); return 0;
         case ':': die2("option needs an argument: ", argv[optind - 1]); break;
         default: die2("unknown option (see --help): ", argv[optind - 1]); break;
@@ -457,6 +462,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "pfbench: %s\n", err);
         return 1;
     }
+    if (ladder && pfb_ladder_open(ladder, err, sizeof err)) {
+        fprintf(stderr, "pfbench: --ladder: %s\n", err);
+        return 1;
+    }
 
     if (list) {
         for (int i = 0; i < nd; i++) {
@@ -464,6 +473,7 @@ int main(int argc, char **argv)
             pfb_cand c[PFB_MAX_CANDS];
             int n = 0;
             pfb_ours(d->f, c, &n);
+            pfb_ladder(d->f, c, &n);
             pfb_peers(d->f, c, &n);
             printf("%s %s (%s):", pfref_name(d->f), d->tag, d->desc);
             for (int j = 0; j < n; j++)
@@ -543,7 +553,8 @@ int main(int argc, char **argv)
 
     float *X = malloc(samples * sizeof *X), *X2 = malloc(samples * sizeof *X2);
     float *Y = malloc(samples * sizeof *Y), *YS[2] = {malloc(samples * sizeof *Y), malloc(samples * sizeof *Y)};
-    if (!X || !X2 || !Y || !YS[0] || !YS[1])
+    float *YL = malloc(samples * sizeof *Y);
+    if (!X || !X2 || !Y || !YS[0] || !YS[1] || !YL)
         die2("out of memory", NULL);
 
     static goals g;
@@ -551,6 +562,16 @@ int main(int argc, char **argv)
     size_t goal_len = 0;
     g.md = open_memstream(&goal_text, &goal_len);
     if (!g.md)
+        die2("out of memory", NULL);
+    /* issue 13's Pareto checks, collected per domain, written after the goals */
+    char *par_text = NULL;
+    size_t par_len = 0;
+    int par_pass = 0, par_miss = 0;
+    FILE *par = open_memstream(&par_text, &par_len);
+    char *lad_text = NULL;
+    size_t lad_len = 0;
+    FILE *lad = open_memstream(&lad_text, &lad_len);
+    if (!par || !lad)
         die2("out of memory", NULL);
 
     for (int di = 0; di < nd; di++) {
@@ -562,6 +583,7 @@ int main(int argc, char **argv)
         pfb_cand cands[PFB_MAX_CANDS];
         int nc = 0;
         pfb_ours(d->f, cands, &nc);
+        pfb_ladder(d->f, cands, &nc);
         pfb_peers(d->f, cands, &nc);
         row *r = calloc((size_t)nc, sizeof *r);
         for (int i = 0; i < nc; i++) {
@@ -584,7 +606,21 @@ int main(int argc, char **argv)
             pf_sweep_init(&r[i].err);
             pfb_err_arrays(&r[i].err, d->f, X, two ? X2 : NULL, Y, samples);
             r[i].have_err = 1;
-            if (c->ours && strcmp(c->isa, "scalar") == 0)
+            if (c->ours == PFB_OURS_LADDER) {
+                /* a ladder row against its own scalar form */
+                void *sc = pfb_ladder_scalar(d->f, c);
+                pf_fn1 s1 = NULL;
+                pf_fn2 s2 = NULL;
+                if (two)
+                    *(void **)&s2 = sc;
+                else
+                    *(void **)&s1 = sc;
+                if (sc && two)
+                    pfb_loop2(s2, X, X2, YL, samples);
+                else if (sc)
+                    pfb_loop1(s1, X, YL, samples);
+                r[i].differs_from_scalar = !sc || memcmp(YL, Y, samples * sizeof *Y) != 0;
+            } else if (c->ours && strcmp(c->isa, "scalar") == 0)
                 memcpy(YS[c->fast], Y, samples * sizeof *Y);
             else if (c->ours)
                 r[i].differs_from_scalar = memcmp(YS[c->fast], Y, samples * sizeof *Y) != 0;
@@ -680,6 +716,14 @@ int main(int argc, char **argv)
                     on[i], lab);
         }
         goals_for(&g, d->f, d, r, nc);
+        {
+            pfb_point pts[PFB_MAX_CANDS];
+            for (int i = 0; i < nc; i++)
+                pts[i] = (pfb_point){r[i].c.name, r[i].c.isa, r[i].c.ours, r[i].c.absent[0] ? NAN : r[i].thr_med,
+                                     r[i].have_err ? r[i].err.max_ulp : NAN};
+            pfb_pareto_checks(par, fn, d->tag, pts, nc, &par_pass, &par_miss);
+            pfb_ladder_table(lad, fn, d->tag, pts, nc);
+        }
         fprintf(stderr, "pfbench: %-5s %-4s %2d candidates, %.1f s\n", fn, d->tag, nc, wall() - t_dom);
         for (int i = 0; i < nc; i++) {
             free(r[i].thr);
@@ -702,6 +746,24 @@ int main(int argc, char **argv)
     fprintf(md, "\n%d goals met, %d missed, %d not applicable here.\n", g.pass, g.miss, g.na);
     if (g.miss)
         fprintf(md, "\nMissed:\n\n%s", g.misses);
+    fprintf(md, "\n## Pareto checks of issue 13 (same run, same ISA)\n\n"
+                "For each vector peer point (time t, max error e): the fastest pfmath point (exact, fast%s) "
+                "with max error <= e; pass when its time <= t.  Ratio = peer ns / pfmath ns.\n\n"
+                "| function | domain | ISA | peer | peer point | fastest pfmath point as accurate | ratio | "
+                "verdict |\n|---|---|---|---|---|---|---|---|\n",
+            ladder ? ", ladder levels" : "; no --ladder given");
+    fclose(par);
+    fputs(par_text, md);
+    free(par_text);
+    fprintf(md, "\n%d Pareto checks pass, %d MISS.\n", par_pass, par_miss);
+    fprintf(md, "\n## Accuracy ladder (issue 13): each level beside the vector peer nearest in max error\n\n"
+                "Levels pfmath-L<U>: pfmathgen --max-ulp U (make ladder), U ULP over every float; 128 and "
+                "8192 ULP are the relative levels 2^-16 and 2^-10.  Ratio = peer ns / level ns.\n\n"
+                "| function | domain | ISA | level | ns/elem | max ULP (sample) | nearest peer | peer ns | peer "
+                "max ULP | ratio |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    fclose(lad);
+    fputs(lad_text, md);
+    free(lad_text);
     fprintf(md, "\nTotal bench time %.0f s.\n", wall() - t_start);
     if (pfcli_out_commit(&omd, err, sizeof err) != 0) {
         pfcli_out_abort(&ocsv);
@@ -719,5 +781,6 @@ int main(int argc, char **argv)
     free(Y);
     free(YS[0]);
     free(YS[1]);
+    free(YL);
     return 0;
 }

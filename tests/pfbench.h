@@ -85,7 +85,7 @@ typedef struct {
     char absent[64]; /* non-empty: the candidate cannot run here, and why */
 } pfb_cand;
 
-#define PFB_MAX_CANDS 32
+#define PFB_MAX_CANDS 48
 
 /* peers for f, appended to c[*n]: every kind (glibc scalar, libmvec AVX2 and
    AVX-512, SLEEF u10 and u35 for AVX2 and AVX-512) once; a kind that the

@@ -1,6 +1,7 @@
 /* pfmathgen: fit, report and emit C for one function.  See --help. */
 #include "fixed_internal.h"
 #include "generate.h"
+#include "ladder.h"
 #include "output.h"
 #include "plot.h"
 #include "request.h"
@@ -33,6 +34,14 @@ static const char usage[] =
     "                      (absolute error below half an LSB of the output)\n"
     "  --max-rel-err E     the same with a relative error bound (1e-4, 2^-12)\n"
     "  --max-abs-err E     the same with an absolute error bound\n"
+    "  --max-ulp U         the accuracy ladder: the cheapest template and order whose\n"
+    "                      emitted code is within U ULP (a number >= 0.5, or 2^k) on\n"
+    "                      every float, confirmed by an exhaustive sweep before the\n"
+    "                      file is written (minutes); a relative level E is the ULP\n"
+    "                      level E 2^23 (2^-16: --max-ulp 2^7); no --variant, --order,\n"
+    "                      --target, --max-rel-err, --no-sweep; default name pf_<func>f_u<U>\n"
+    "  --confirm sample    with --max-ulp: a sampled instead of the exhaustive sweep\n"
+    "                      (for tests and quick ladders; the provenance says so)\n"
     "  --name NAME         emitted function name (default pf_<func>f, pf_<func>f_fast): a C\n"
     "                      identifier, not a keyword, at most 100 characters\n"
     "  -o, --output FILE   write the C source to FILE (nothing is written on error; see\n"
@@ -98,11 +107,13 @@ static int run_float(pf_request *rq)
     for (int i = 0; i < 1 + both; i++) {
         if (both)
             g.variant = i ? "fast" : "exact";
-        if (pf_generate(&g, &r[i], err, sizeof err) != 0) {
+        int grc = rq->max_ulp > 0 ? pf_ladder_generate(&g, rq->max_ulp, rq->confirm_sample, stderr, &r[i], err, sizeof err)
+                                  : pf_generate(&g, &r[i], err, sizeof err) != 0 ? 2 : 0;
+        if (grc) {
             pf_say(err);
             if (i)
                 pf_gen_free(&r[0]);
-            return 2;
+            return grc;
         }
     }
     char *svg = NULL;

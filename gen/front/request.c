@@ -109,6 +109,27 @@ static int parse_bound(const char *s, double *v)
     return *v > 0 && *v < 1 ? 0 : -1;
 }
 
+/* --max-ulp U: a finite number of float ULPs, >= 0.5 (0.5 is correct
+   rounding; below it no float result can be), written as a number or 2^k */
+static int parse_ulp(const char *s, double *v)
+{
+    char *end;
+    if (!*s || isspace((unsigned char)*s))
+        return -1;
+    if (!strncmp(s, "2^", 2)) {
+        errno = 0;
+        long ex = strtol(s + 2, &end, 10);
+        if (end == s + 2 || *end || errno || ex < -1 || ex > 1000)
+            return -1;
+        *v = ldexp(1.0, (int)ex);
+    } else {
+        *v = strtod(s, &end);
+        if (end == s || *end)
+            return -1;
+    }
+    return isfinite(*v) && *v >= 0.5 ? 0 : -1;
+}
+
 /* long option name of a short code, for messages */
 static const struct option opts[] = {
     {"func", required_argument, 0, 'f'},        {"variant", required_argument, 0, 'v'},
@@ -120,7 +141,8 @@ static const struct option opts[] = {
     {"target", required_argument, 0, 'T'},      {"max-rel-err", required_argument, 0, 'R'},
     {"max-abs-err", required_argument, 0, 'A'}, {"plot", required_argument, 0, 'P'},
     {"seed", required_argument, 0, 's'},        {"scene", required_argument, 0, 'C'},
-    {"prefix", required_argument, 0, 'p'},      {0, 0, 0, 0}};
+    {"prefix", required_argument, 0, 'p'},      {"max-ulp", required_argument, 0, 'U'},
+    {"confirm", required_argument, 0, 'K'},     {0, 0, 0, 0}};
 
 static const char *long_name(int c)
 {
@@ -162,6 +184,15 @@ static int check_float(pf_request *rq, const unsigned char *seen, char *err, siz
             if (!pf_spec_find(rq->func, v[i], rq->reduction))
                 return bad(err, errlen, "unknown reduction '%.200s' for %s", rq->reduction, rq->func);
     }
+    if (seen['U'] || seen['K']) {
+        int k = first_of(seen, "nvTRAS");
+        if (!seen['U'])
+            return bad(err, errlen, "--confirm is for --max-ulp");
+        if (k)
+            return bad(err, errlen, "--max-ulp chooses the %s itself: it does not combine with --%s",
+                       k == 'v' ? "variant" : k == 'S' ? "check (an exhaustive sweep)" : "order and error target",
+                       long_name(k));
+    }
     if (rq->target > 0 && rq->target < FLOAT_TARGET_FLOOR)
         return bad(err, errlen,
                    "impossible target %s: below 2^-44, and float-coefficient fits reach about 2^-40 at best "
@@ -172,7 +203,7 @@ static int check_float(pf_request *rq, const unsigned char *seen, char *err, siz
 
 static int check_fixed(pf_request *rq, const unsigned char *seen, char *err, size_t errlen)
 {
-    int c = first_of(seen, "rTRAPsp");
+    int c = first_of(seen, "rTRAPspUK");
     if (c)
         return bad(err, errlen, "--%s is not available with fixed-point types", long_name(c));
     if (!fx_func_find(rq->func))
@@ -189,7 +220,7 @@ static int check_fixed(pf_request *rq, const unsigned char *seen, char *err, siz
 
 static int check_noise(pf_request *rq, const unsigned char *seen, char *err, size_t errlen)
 {
-    int c = first_of(seen, "nmrTRAP");
+    int c = first_of(seen, "nmrTRAPUK");
     if (c)
         return bad(err, errlen, "--%s does not apply to noise (a fixed method: gradient noise within 1 LSB)",
                    long_name(c));
@@ -304,6 +335,16 @@ int pf_request_parse(int argc, char **argv, pf_request *rq, char *err, size_t er
             rq->target_abs = !t.is_float;
             break;
         }
+        case 'U':
+            if (parse_ulp(optarg, &rq->max_ulp) != 0)
+                return bad(err, errlen, "bad --max-ulp '%.200s': expected a finite number >= 0.5 (ULP), such as 1, "
+                           "4 or 2^7", optarg);
+            break;
+        case 'K':
+            if (strcmp(optarg, "all") && strcmp(optarg, "sample"))
+                return bad(err, errlen, "bad --confirm '%.200s': all (exhaustive, the default) or sample", optarg);
+            rq->confirm_sample = !strcmp(optarg, "sample");
+            break;
         case 'R':
         case 'A':
             if (parse_bound(optarg, &rq->target) != 0)
@@ -321,7 +362,7 @@ int pf_request_parse(int argc, char **argv, pf_request *rq, char *err, size_t er
         return 0;
     if (rq->scene) {
         rq->mode = PF_MODE_SCENE;
-        c = first_of(seen, "fvnrtOmNjSTRAPs");
+        c = first_of(seen, "fvnrtOmNjSTRAPsUK");
         if (c)
             return bad(err, errlen, "--%s does not apply to --scene (usage: pfmathgen --scene FILE -o DIR "
                        "[--prefix P])", long_name(c));

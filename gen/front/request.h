@@ -27,6 +27,8 @@ typedef struct {
     double target;              /* > 0: --target / --max-rel-err / --max-abs-err */
     int target_abs;
     char target_text[96];
+    double max_ulp;             /* > 0: --max-ulp, the accuracy ladder (gen/float/ladder.h) */
+    int confirm_sample;         /* --confirm sample: the ladder's cheaper check (tests) */
     int json, sweep;
     int seeded;                 /* --seed (noise) */
     unsigned long long seed;

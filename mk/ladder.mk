@@ -1,0 +1,64 @@
+# The accuracy ladder (issue 13, item 2; gen/float/ladder.h): pfmathgen --max-ulp.
+# Its confirming sweep runs on every core, and atan2's is pfsweep --all's
+# pair set (tests/pfsweep_pairs.c), linked in here.
+$(BUILD)/obj/gen/float/ladder.o: ALL_CFLAGS += -fopenmp
+$(BUILD)/pfmathgen: $(BUILD)/obj/tests/pfsweep_pairs.o
+
+# `make ladder`: every float function at five levels, 1, 2 and 4 ULP and the
+# relative levels 2^-16 (128 ULP) and 2^-10 (8192 ULP) (gen/float/ladder.h: a
+# relative level E is the ULP level E 2^23), as pf_<f>f_l<U> in
+# build/libpfladder.so, for pfbench's ladder rows (`make bench` depends on
+# it).  Each level is confirmed by an exhaustive sweep: 55 of them, about
+# 2-3 minutes each on 2 idle cores, so the first `make ladder` takes about
+# two hours (later runs only redo what is missing: the sources depend on
+# pfmathgen order-only, so `rm -r build/ladder` after changing a template).
+# LADDER_SAMPLE=1 confirms on a sample instead (about a minute in all; the
+# files, in build/ladder-sample/, say so in their provenance).
+LADDER_FUNCS  := log log2 exp exp2 sin cos tan asin acos atan atan2
+LADDER_LEVELS := 1 2 4 128 8192
+# `make bench` times a ladder confirmed on a sample (a few minutes to build;
+# the bench measures every point's error itself, like the peers'); `make
+# bench LADDER_SAMPLE=0` times the exhaustively confirmed one of `make ladder`.
+ifneq ($(filter bench bench-float,$(MAKECMDGOALS)),)
+LADDER_SAMPLE ?= 1
+endif
+LADDER_SAMPLE ?= 0
+LADDER_TAG    := $(if $(filter 1,$(LADDER_SAMPLE)),-sample,)
+LADDER_DIR    := $(BUILD)/ladder$(LADDER_TAG)
+LADDER_LIB    := $(BUILD)/libpfladder$(LADDER_TAG).so
+LADDER_SRCS   := $(foreach f,$(LADDER_FUNCS),$(foreach l,$(LADDER_LEVELS),$(LADDER_DIR)/pf_$(f)f_l$(l).c))
+
+# the report and the search's log go to FILE.log; a failure shows its last line
+define ladder_rule
+$(LADDER_DIR)/pf_$(1)f_l$(2).c: | $(BUILD)/pfmathgen
+	@mkdir -p $$(dir $$@)
+	@echo "  LADDER $(1) $(2) ULP"
+	@$(BUILD)/pfmathgen --func $(1) --max-ulp $(2) --name pf_$(1)f_l$(2) \
+	  $(if $(LADDER_TAG),--confirm sample,) -o $$@ 2> $$@.log || { tail -1 $$@.log; exit 1; }
+endef
+$(foreach f,$(LADDER_FUNCS),$(foreach l,$(LADDER_LEVELS),$(eval $(call ladder_rule,$(f),$(l)))))
+
+$(LADDER_DIR)/%.o: $(LADDER_DIR)/%.c
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -O3 -fPIC -c $< -o $@
+
+$(LADDER_LIB): $(LADDER_SRCS:.c=.o)
+	$(CC) -shared $(LDFLAGS) -o $@ $^ -lm
+
+.PHONY: ladder
+ladder: $(LADDER_LIB)
+
+# --max-ulp's options, and what it emits, against MPFR (sampled confirmation)
+# and pfbench's Pareto check on made-up points
+TESTS += $(BUILD)/tests/test_ladder
+$(BUILD)/tests/test_ladder: tests/test_ladder.c $(BUILD)/obj/tests/pfbench_ladder_pareto.o $(TEST_LIBS) | $(BUILD)/pfmathgen
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< $(BUILD)/obj/tests/pfbench_ladder_pareto.o -o $@ $(LDFLAGS) \
+	  -fopenmp $(TEST_LIBS) -lcmocka $(LIBS_NUM)
+
+# what the search chose, one row per level (from the files' provenance)
+$(LADDER_DIR)/ladder.md: $(LADDER_SRCS) mk/ladder-table.awk
+	@{ echo "| function | level, ULP | template | order | cost | confirmed max ULP | worst input | sweep |"; \
+	   echo "|---|---|---|---|---|---|---|---|"; \
+	   for f in $(LADDER_SRCS); do awk -f mk/ladder-table.awk $$f; done; } > $@
+	@echo "  wrote $@"
+ladder: $(LADDER_DIR)/ladder.md
