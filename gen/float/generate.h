@@ -37,7 +37,7 @@ typedef struct {
     size_t clen;
     int swept;
     pf_sweep_stats sweep;
-    char sweep_desc[160];
+    char sweep_desc[256];
     int has_scheme;       /* the spec has a model: scheme below is filled */
     pf_scheme scheme;
 } pf_gen_result;

@@ -134,6 +134,20 @@ static void sweep_sample(pf_sweep_stats *st, pf_func f, pf_fn1 f1, pf_fn2 f2, ui
         for (uint64_t b = lo; b <= hi; b += 16)
             pf_sweep_one(st, f, f1, NULL, asfloat((uint32_t)b), 1.0f);
     }
+    /* the trig reductions lose most next to multiples of pi/2, where a
+       random sample almost never lands (fast sin at 128 ULP: 621.8 ULP at
+       0x1.f9cbe2p+8, near 161 pi, passed a 2^22 sample): the float nearest
+       k pi/2 and two on each side, both signs, for k pi/2 < 2^17 */
+    if (f1 && (f == PF_SIN || f == PF_COS || f == PF_TAN))
+        for (int k = 1; k * 1.5707963267948966 < 131072.0; k++) {
+            float c = (float)(k * 1.5707963267948966);
+            uint32_t u;
+            memcpy(&u, &c, 4);
+            for (uint32_t d = u - 2; d <= u + 2; d++) {
+                pf_sweep_one(st, f, f1, NULL, asfloat(d), 1.0f);
+                pf_sweep_one(st, f, f1, NULL, -asfloat(d), 1.0f);
+            }
+        }
 }
 
 /* step 3: every float, in chunks of 2^16 over the threads, stopping when a
@@ -280,8 +294,9 @@ static int try_cand(const pf_gen_req *base, cand *c, int next_cost, double U, in
     r->swept = 1;
     if (sample)
         snprintf(r->sweep_desc, sizeof r->sweep_desc,
-                 "sampled, not exhaustive (--confirm sample): directed list, 2^22 seeded random floats%s",
-                 f1 ? ", every 16th float of the reduced range" : "");
+                 "sampled, not exhaustive (--confirm sample): directed list, 2^22 seeded random floats%s%s",
+                 f1 ? ", every 16th float of the reduced range" : "",
+                 f == PF_SIN || f == PF_COS || f == PF_TAN ? ", the 5 floats around k pi/2 below 2^17" : "");
     else if (f2)
         snprintf(r->sweep_desc, sizeof r->sweep_desc,
                  "pfsweep --all's pair set: 2^28 seeded pairs, every special pair, the directed list");
