@@ -225,7 +225,7 @@ const pf_spec pf_specs_log[] = {
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
      NULL, 1.0, NULL, extra_log, model_log, NULL, "exp_log_tail.c"},
     {"log", "balanced", "fast", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_tail.c"},
+     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_twopath.c"},
     {"log", "seed", "exact", "log_seed", 1,
      "x = 2^k m, m in [1, 2) (the seed's reduction), t = m - 1",
      "log(1+t)", g_log1p, 0, 1, FIT_PARITY_NONE, FIT_REL, 2,
@@ -241,6 +241,6 @@ const pf_spec pf_specs_log[] = {
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
      NULL, 1.0, NULL, extra_log2, model_log2, "exp_log_poly.h", "exp_log_tail.c"},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_tail.c"},
+     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_twopath.c"},
     {0},
 };

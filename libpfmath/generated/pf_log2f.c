@@ -170,7 +170,12 @@ static inline PF_UNUSED float pf_log2f_poly(float r, float r2, const float *c, i
    scalar form calls it directly for positive normal x (pf_log2f_plain):
    the same bits as the array form, without the subnormal scaling and the
    special-case selects. */
-static inline int pf_log2f_plain(float x) { return pf_asuint(x) - 0x00800000u < 0x7f000000u; }
+/* ordinary x (positive normal: not 0, subnormal, inf, NaN or negative) are
+   those whose key, x's bits less FLT_MIN's as unsigned, is below KEY_LIM;
+   an array scans a block for its largest key (two operations a vector) */
+static inline uint32_t pf_log2f_key(float x) { return pf_asuint(x) - 0x00800000u; }
+#define pf_log2f_KEY_LIM 0x7f000000u
+static inline int pf_log2f_plain(float x) { return pf_log2f_key(x) < pf_log2f_KEY_LIM; }
 
 static inline float pf_log2f_core(uint32_t iy, uint32_t off)
 {

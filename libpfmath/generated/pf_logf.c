@@ -126,7 +126,12 @@ static const float PF_LOG_LN2 PF_UNUSED = 0x1.62e43p-1f;
    scalar form calls it directly for positive normal x (pf_logf_plain):
    the same bits as the array form, without the subnormal scaling and the
    special-case selects. */
-static inline int pf_logf_plain(float x) { return pf_asuint(x) - 0x00800000u < 0x7f000000u; }
+/* ordinary x (positive normal: not 0, subnormal, inf, NaN or negative) are
+   those whose key, x's bits less FLT_MIN's as unsigned, is below KEY_LIM;
+   an array scans a block for its largest key (two operations a vector) */
+static inline uint32_t pf_logf_key(float x) { return pf_asuint(x) - 0x00800000u; }
+#define pf_logf_KEY_LIM 0x7f000000u
+static inline int pf_logf_plain(float x) { return pf_logf_key(x) < pf_logf_KEY_LIM; }
 
 static inline float pf_logf_core(uint32_t iy, uint32_t off)
 {
