@@ -196,6 +196,8 @@ static inline float pf_log2f_fast_core(uint32_t iy, uint32_t off)
 
 /* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
 static inline float pf_log2f_fast_ordinary(float x) { return pf_log2f_fast_core(pf_asuint(x), 0x3f3504f3u); }
+/* the array form's ordinary blocks (plain lanes only) use the same body */
+static inline float pf_log2f_fast_bulk(float x) { return pf_log2f_fast_ordinary(x); }
 
 static inline float pf_log2f_fast_inline(float x)
 {
@@ -231,12 +233,12 @@ float pf_log2f_fast(float x)
 /* Array form, two paths per block of 128: a vectorized scan for the
    largest key (x is ordinary when pf_log2f_fast_key(x) < pf_log2f_fast_KEY_LIM)
    finds whether the block holds a lane that is not ordinary; a block
-   without one runs the branch-free ordinary body (for log: no subnormal
-   scaling, no special-case selects), a block with one the full body, both
-   vectorized.  Each lane
-   gets the bits the scalar form gives it: the ordinary body is the full
-   body's arithmetic on ordinary inputs.  The scan reads the whole block
-   before anything is written, so in-place calls (y == x) are safe. */
+   without one runs the branch-free ordinary body pf_log2f_fast_bulk (log: no
+   subnormal scaling, no special-case selects; exp: no selects), a block
+   with one the full body, both vectorized.  Each lane gets the bits the
+   scalar form gives it: pf_log2f_fast_bulk is the full body's arithmetic on
+   ordinary inputs.  The scan reads the whole block before anything is
+   written, so in-place calls (y == x) are safe. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
@@ -256,7 +258,7 @@ void pf_log2f_fast_array(const float *restrict x, float *restrict y, size_t n)
 #pragma GCC ivdep
 #endif
             for (size_t i = 0; i < nb; i++)
-                yb[i] = pf_log2f_fast_ordinary(xb[i]);
+                yb[i] = pf_log2f_fast_bulk(xb[i]);
         } else {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
