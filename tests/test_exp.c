@@ -286,6 +286,44 @@ static void test_arrays_match_scalar(void **st)
     }
 }
 
+/* The array forms take a shorter body for blocks (of 128) with |x| <= H in
+   every lane (exp: H = 100, exp2: 160; results up to +inf and down to
+   subnormals), the full one otherwise: on such inputs with a rare lane now
+   and then (at a block's first, middle and last position, and in the
+   partial last block), every lane still gets the scalar form's bits, in
+   place too. */
+static void test_arrays_two_paths(void **st)
+{
+    (void)st;
+    enum { N = 128 * 40 + 77 };
+    static float x[N], y[N], z[N];
+    static const int at[] = {0, 63, 127, 128 * 3 + 5, 128 * 7 + 127, 128 * 9, 128 * 20 + 64,
+                             128 * 30 + 1, N - 77, N - 1};
+    void (*arr[4])(const float *, float *, size_t) = {pf_expf_array, pf_expf_fast_array,
+                                                       pf_exp2f_array, pf_exp2f_fast_array};
+    float (*sc[4])(float) = {pf_expf, pf_expf_fast, pf_exp2f, pf_exp2f_fast};
+    for (int f = 0; f < 4; f++) {
+        float h = f < 2 ? 100.0f : 160.0f, above = nextafterf(h, INFINITY);
+        const float rare[] = {above, -above, NAN, -NAN, INFINITY, -INFINITY, 1e30f, -1e30f, 2 * h, -2 * h};
+        uint64_t s = 11;
+        for (int i = 0; i < N; i++) {
+            s = s * 6364136223846793005ull + 1442695040888963407ull;
+            float u = (float)((int64_t)(s >> 11) * 0x1p-53 * 2 * h - h);
+            x[i] = i % 97 == 5 ? h : i % 89 == 7 ? -h : fminf(fmaxf(u, -h), h);
+        }
+        for (int j = 0; j < (int)(sizeof at / sizeof at[0]); j++)
+            x[at[j]] = rare[j];
+        arr[f](x, y, N);
+        memcpy(z, x, sizeof z);
+        arr[f](z, z, N);
+        for (int i = 0; i < N; i++) {
+            float w = sc[f](x[i]);
+            assert_true(memcmp(&w, &y[i], 4) == 0 || (isnan(w) && isnan(y[i])));
+            assert_true(memcmp(&w, &z[i], 4) == 0 || (isnan(w) && isnan(z[i])));
+        }
+    }
+}
+
 static const char *MODEL_ARGS[] = {"--func exp --no-sweep -o /dev/null", "--func exp2 --no-sweep -o /dev/null"};
 #define NMODEL 2
 #define MODEL_LOW "--func exp --order 5 --no-sweep -o /dev/null"
@@ -301,7 +339,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_emitted_exact), cmocka_unit_test(test_library_exact),
         cmocka_unit_test(test_hard_cases),    cmocka_unit_test(test_library_fast),
-        cmocka_unit_test(test_arrays_match_scalar), cmocka_unit_test(test_error_model),
+        cmocka_unit_test(test_arrays_match_scalar), cmocka_unit_test(test_arrays_two_paths),
+        cmocka_unit_test(test_error_model),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

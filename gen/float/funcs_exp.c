@@ -127,14 +127,14 @@ static int model_exp2(const fit_poly *p, int order, pf_scheme *sc)
 
 const pf_spec pf_specs_exp[] = {
     {
-        .func = "exp", .reduction = "ln2", .variant = "exact", .tmpl = "exp_fma", .tail = "exp_log_tail.c", .arity = 1,
+        .func = "exp", .reduction = "ln2", .variant = "exact", .tmpl = "exp_fma", .tail = "exp_log_twopath.c", .arity = 1,
         .reduction_text = EXP_RED, .target_text = "e^t", .g = g_exp,
         .a = -HALF_LN2, .b = HALF_LN2, .parity = FIT_PARITY_NONE, .errkind = FIT_REL,
         .ncon = 2, .con = {CON_ONE, {FIT_CON_DERIV, 0, "p'(0) = 1"}},
         .default_order = 6, .real = "fma", .ulp_bound = 1.0, .extra = extra_exp_fma, .model = model_exp,
     },
     {
-        .func = "exp", .reduction = "ln2", .variant = "fast", .tmpl = "exp_fma", .tail = "exp_log_tail.c", .arity = 1,
+        .func = "exp", .reduction = "ln2", .variant = "fast", .tmpl = "exp_fma", .tail = "exp_log_twopath.c", .arity = 1,
         .reduction_text = EXP_RED, .target_text = "e^t", .g = g_exp,
         .a = -HALF_LN2, .b = HALF_LN2, .parity = FIT_PARITY_NONE, .errkind = FIT_REL,
         .ncon = 5,
@@ -146,14 +146,14 @@ const pf_spec pf_specs_exp[] = {
         .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_exp_fma,
     },
     {
-        .func = "exp2", .reduction = "int", .variant = "exact", .tmpl = "exp2_fma", .tail = "exp_log_tail.c", .arity = 1,
+        .func = "exp2", .reduction = "int", .variant = "exact", .tmpl = "exp2_fma", .tail = "exp_log_twopath.c", .arity = 1,
         .reduction_text = EXP2_RED, .target_text = "2^t", .g = g_exp2,
         .a = -0.5, .b = 0.5, .parity = FIT_PARITY_NONE, .errkind = FIT_REL,
         .ncon = 1, .con = {CON_ONE},
         .default_order = 6, .real = "fma", .ulp_bound = 1.0, .model = model_exp2,
     },
     {
-        .func = "exp2", .reduction = "int", .variant = "fast", .tmpl = "exp2_fma", .tail = "exp_log_tail.c", .arity = 1,
+        .func = "exp2", .reduction = "int", .variant = "fast", .tmpl = "exp2_fma", .tail = "exp_log_twopath.c", .arity = 1,
         .reduction_text = EXP2_RED, .target_text = "2^t", .g = g_exp2,
         .a = -0.5, .b = 0.5, .parity = FIT_PARITY_NONE, .errkind = FIT_REL,
         .ncon = 5,

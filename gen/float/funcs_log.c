@@ -223,9 +223,9 @@ static int model_log2(const fit_poly *p, int order, pf_scheme *sc) { return mode
 const pf_spec pf_specs_log[] = {
     {"log", "balanced", "exact", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
-     NULL, 1.0, NULL, extra_log, model_log, NULL, "exp_log_tail.c"},
+     NULL, 1.0, NULL, extra_log, model_log, NULL, "exp_log_twopath.c"},
     {"log", "balanced", "fast", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_tail.c"},
+     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_twopath.c"},
     {"log", "seed", "exact", "log_seed", 1,
      "x = 2^k m, m in [1, 2) (the seed's reduction), t = m - 1",
      "log(1+t)", g_log1p, 0, 1, FIT_PARITY_NONE, FIT_REL, 2,
@@ -239,8 +239,8 @@ const pf_spec pf_specs_log[] = {
      0, 0x1p-10, "float", "0x1.62e42fefa39efp-1", 0, NULL, NULL, NULL, NULL, NULL},
     {"log2", "balanced", "exact", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
-     NULL, 1.0, NULL, extra_log2, model_log2, "exp_log_poly.h", "exp_log_tail.c"},
+     NULL, 1.0, NULL, extra_log2, model_log2, "exp_log_poly.h", "exp_log_twopath.c"},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_tail.c"},
+     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_twopath.c"},
     {0},
 };

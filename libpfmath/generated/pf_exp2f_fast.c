@@ -112,6 +112,16 @@ static const float pf_exp2f_fast_C[5] = {
    [-126, 126], so 2^k and the result are normal) y 2^k is one exact
    product, the bits of y s1 s2, and the selects are left out. */
 static inline int pf_exp2f_fast_plain(float x) { return fabsf(x) <= 126.0f; }
+/* The array form's ordinary blocks (gen/templates/exp_log_twopath.c.in)
+   hold only x with |x| <= 160.0f, those whose key, |x|'s bits, is below
+   KEY_LIM (NaN's bits are above every finite |x|'s): the scan of a
+   block takes two operations a vector.  There pf_exp2f_fast_bulk, the body with
+   plain = 2, applies 2^k as the two products but leaves out the selects,
+   which fire only beyond it (|x| > 160; NaN is not
+   ordinary): the bits of the full body, on a wider range than
+   pf_exp2f_fast_plain's single product allows. */
+static inline uint32_t pf_exp2f_fast_key(float x) { return pf_asuint(x) & 0x7fffffffu; }
+#define pf_exp2f_fast_KEY_LIM 0x43200001u /* the bits of 160.0f, plus one */
 
 static inline float pf_exp2f_fast_body(float x, int plain)
 {
@@ -124,11 +134,13 @@ static inline float pf_exp2f_fast_body(float x, int plain)
        (zb >> 1) << 23 is (k1 + 127) << 23 (0x4b4000fe is even and its upper
        bits shift out), and (zb << 23) is (k + 254) << 23 */
     uint32_t zb = pf_asuint(z), e1 = (zb >> 1) << 23;
-    if (plain) /* (k + 254) << 23 less 127 << 23: the bits of 2^k */
+    if (plain == 1) /* (k + 254) << 23 less 127 << 23: the bits of 2^k */
         return y * pf_asfloat((zb << 23) - 0x3f800000u);
     float s1 = pf_asfloat(e1);
     float s2 = pf_asfloat((zb << 23) - e1);
     float res = y * s1 * s2;
+    if (plain == 2)
+        return res;
     res = x > 160.0f ? (float)INFINITY : res;
     res = x < -160.0f ? 0.0f : res;
     /* NaN fails both tests above; returning x + x (the input quieted) keeps
@@ -139,13 +151,13 @@ static inline float pf_exp2f_fast_body(float x, int plain)
 
 static inline float pf_exp2f_fast_ordinary(float x) { return pf_exp2f_fast_body(x, 1); }
 static inline float pf_exp2f_fast_inline(float x) { return pf_exp2f_fast_body(x, 0); }
+static inline float pf_exp2f_fast_bulk(float x) { return pf_exp2f_fast_body(x, 2); }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
    CPU has FMA (the result is the same on every clone).  Ordinary inputs
    (pf_exp2f_fast_plain) branch to pf_exp2f_fast_ordinary, the body without its
    special-case selects: the same float operations in the same order, so
-   the same bits as the array form, but a shorter dependency chain (no
-   selects, whose operands go through integer registers). */
+   the same bits as the full body (pf_exp2f_fast_inline). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
@@ -156,16 +168,41 @@ float pf_exp2f_fast(float x)
     return pf_exp2f_fast_inline(x);
 }
 
-/* Array form: the body is branch-free, so this loop vectorizes; one
-   clone per x86-64 level, the widest the CPU has is picked at load time. */
+/* Array form, two paths per block of 128: a vectorized scan for the
+   largest key (x is ordinary when pf_exp2f_fast_key(x) < pf_exp2f_fast_KEY_LIM)
+   finds whether the block holds a lane that is not ordinary; a block
+   without one runs the branch-free ordinary body pf_exp2f_fast_bulk (log: no
+   subnormal scaling, no special-case selects; exp: no selects), a block
+   with one the full body, both vectorized.  Each lane gets the bits the
+   scalar form gives it: pf_exp2f_fast_bulk is the full body's arithmetic on
+   ordinary inputs.  The scan reads the whole block before anything is
+   written, so in-place calls (y == x) are safe. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_exp2f_fast_array(const float *restrict x, float *restrict y, size_t n)
 {
+    for (size_t i0 = 0; i0 < n; i0 += 128) {
+        size_t nb = n - i0 < 128 ? n - i0 : 128;
+        const float *xb = x + i0;
+        float *yb = y + i0;
+        uint32_t key = 0;
+        for (size_t i = 0; i < nb; i++) {
+            uint32_t k = pf_exp2f_fast_key(xb[i]);
+            key = key > k ? key : k;
+        }
+        if (__builtin_expect(key < pf_exp2f_fast_KEY_LIM, 1)) {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
-    for (size_t i = 0; i < n; i++)
-        y[i] = pf_exp2f_fast_inline(x[i]);
+            for (size_t i = 0; i < nb; i++)
+                yb[i] = pf_exp2f_fast_bulk(xb[i]);
+        } else {
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+            for (size_t i = 0; i < nb; i++)
+                yb[i] = pf_exp2f_fast_inline(xb[i]);
+        }
+    }
 }

@@ -163,7 +163,12 @@ static inline PF_UNUSED float pf_log2f_fast_poly(float r, float r2, const float 
    scalar form calls it directly for positive normal x (pf_log2f_fast_plain):
    the same bits as the array form, without the subnormal scaling and the
    special-case selects. */
-static inline int pf_log2f_fast_plain(float x) { return pf_asuint(x) - 0x00800000u < 0x7f000000u; }
+/* ordinary x (positive normal: not 0, subnormal, inf, NaN or negative) are
+   those whose key, x's bits less FLT_MIN's as unsigned, is below KEY_LIM;
+   an array scans a block for its largest key (two operations a vector) */
+static inline uint32_t pf_log2f_fast_key(float x) { return pf_asuint(x) - 0x00800000u; }
+#define pf_log2f_fast_KEY_LIM 0x7f000000u
+static inline int pf_log2f_fast_plain(float x) { return pf_log2f_fast_key(x) < pf_log2f_fast_KEY_LIM; }
 
 static inline float pf_log2f_fast_core(uint32_t iy, uint32_t off)
 {
@@ -191,6 +196,8 @@ static inline float pf_log2f_fast_core(uint32_t iy, uint32_t off)
 
 /* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
 static inline float pf_log2f_fast_ordinary(float x) { return pf_log2f_fast_core(pf_asuint(x), 0x3f3504f3u); }
+/* the array form's ordinary blocks (plain lanes only) use the same body */
+static inline float pf_log2f_fast_bulk(float x) { return pf_log2f_fast_ordinary(x); }
 
 static inline float pf_log2f_fast_inline(float x)
 {
@@ -212,8 +219,7 @@ static inline float pf_log2f_fast_inline(float x)
    CPU has FMA (the result is the same on every clone).  Ordinary inputs
    (pf_log2f_fast_plain) branch to pf_log2f_fast_ordinary, the body without its
    special-case selects: the same float operations in the same order, so
-   the same bits as the array form, but a shorter dependency chain (no
-   selects, whose operands go through integer registers). */
+   the same bits as the full body (pf_log2f_fast_inline). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
@@ -224,16 +230,41 @@ float pf_log2f_fast(float x)
     return pf_log2f_fast_inline(x);
 }
 
-/* Array form: the body is branch-free, so this loop vectorizes; one
-   clone per x86-64 level, the widest the CPU has is picked at load time. */
+/* Array form, two paths per block of 128: a vectorized scan for the
+   largest key (x is ordinary when pf_log2f_fast_key(x) < pf_log2f_fast_KEY_LIM)
+   finds whether the block holds a lane that is not ordinary; a block
+   without one runs the branch-free ordinary body pf_log2f_fast_bulk (log: no
+   subnormal scaling, no special-case selects; exp: no selects), a block
+   with one the full body, both vectorized.  Each lane gets the bits the
+   scalar form gives it: pf_log2f_fast_bulk is the full body's arithmetic on
+   ordinary inputs.  The scan reads the whole block before anything is
+   written, so in-place calls (y == x) are safe. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_log2f_fast_array(const float *restrict x, float *restrict y, size_t n)
 {
+    for (size_t i0 = 0; i0 < n; i0 += 128) {
+        size_t nb = n - i0 < 128 ? n - i0 : 128;
+        const float *xb = x + i0;
+        float *yb = y + i0;
+        uint32_t key = 0;
+        for (size_t i = 0; i < nb; i++) {
+            uint32_t k = pf_log2f_fast_key(xb[i]);
+            key = key > k ? key : k;
+        }
+        if (__builtin_expect(key < pf_log2f_fast_KEY_LIM, 1)) {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
-    for (size_t i = 0; i < n; i++)
-        y[i] = pf_log2f_fast_inline(x[i]);
+            for (size_t i = 0; i < nb; i++)
+                yb[i] = pf_log2f_fast_bulk(xb[i]);
+        } else {
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+            for (size_t i = 0; i < nb; i++)
+                yb[i] = pf_log2f_fast_inline(xb[i]);
+        }
+    }
 }
