@@ -1,5 +1,5 @@
 # One table row per ladder file (mk/ladder.mk: $(LADDER_DIR)/ladder.md), read from
-# the provenance pfmathgen --max-ulp writes (gen/ladder.c): function, level,
+# the provenance pfmathgen --max-ulp writes (gen/float/ladder.c): function, level,
 # template, order, cost, the confirming sweep's max ULP and worst input, and
 # whether that sweep was exhaustive.
 /^ \* Regenerate:/ { for (i = 1; i < NF; i++) if ($i == "--func") f = $(i + 1) }

@@ -143,7 +143,7 @@ static inline void tu_argv_words(tu_argv *a, const char *s)
     }
 }
 
-/* $CC split on blanks as gen/subproc.c does (unset or blank: cc) */
+/* $CC split on blanks as gen/front/subproc.c does (unset or blank: cc) */
 static inline void tu_argv_cc(tu_argv *a)
 {
     const char *cc = getenv("CC");

@@ -1,5 +1,5 @@
 /* Function table rows for the atrig family: asin, acos, atan, atan2 (see
- * gen/funcs.h).
+ * gen/float/funcs.h).
  *
  * Polynomials, all odd, p(t) = t + t z q(z) with z = t^2 and c1 = 1:
  *   asin(t) on [0, 1/2]: asin and acos, both variants.  Beyond |x| = 1/2
@@ -17,7 +17,7 @@
  * {asin,acos,atan,atan2}_ff.c.in): the correction t z q(z) is at most 5.4%
  * of the result, so its roundings weigh 1/20 of an ULP, and everything
  * else (the fold's constant, the square root, the quotient) is kept exact
- * as hi + lo floats up to one final rounding.  gen/funcs_atrig_model.c
+ * as hi + lo floats up to one final rounding.  gen/float/funcs_atrig_model.c
  * bounds each scheme (the provenance's "Error model:" line), the fast asin
  * and acos too (as a fraction of the fast bound).
  * The fast rows match value and slope at both ends of the reduced domain:
@@ -36,7 +36,7 @@
 
 #include <stdio.h>
 
-/* the exact schemes' error models (gen/funcs_atrig_model.c) */
+/* the exact schemes' error models (gen/float/funcs_atrig_model.c) */
 int pf_model_asin(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_acos(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_atan(const fit_poly *p, int order, pf_scheme *sc);

@@ -1,12 +1,12 @@
 /* Error models of the atrig family's exact float schemes (the specs' model
- * hooks, gen/funcs.h).  Each template computes
+ * hooks, gen/float/funcs.h).  Each template computes
  *     result = K + sg (v + c),   c = fmaf(fl(T z), q(z), lo)
  * with v a float (the reduced argument, or 2 sqrt(w) as s + lo), q(z) the
  * polynomial p(t) = t + t z q(z) after its c1 = 1 (fmaf Horner in float),
  * K + sg v exact as h + l (Fast2Sum), K = khi + klo.  The bound at a point
  * is 0.5 ULP (the last add) plus, over the ULP of the true result:
  *   the fit's relative error times |v + c|,
- *   q's running Horner bound times |T z| (gen/float_model.h's recurrence,
+ *   q's running Horner bound times |T z| (gen/float/float_model.h's recurrence,
  *   with z's own error dz),
  *   |T z q| (u + T's relative error) for fl(T z), u |c| for the fmaf,
  *   2u (|c| + |klo| + |l|) for the two adds before the last (|l| <= u |K|;

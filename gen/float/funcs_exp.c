@@ -1,4 +1,4 @@
-/* Function table rows for exp and exp2 (see gen/funcs.h).
+/* Function table rows for exp and exp2 (see gen/float/funcs.h).
  *
  * exp(x)  = 2^k e^r,  k = round(x / ln2), r = x - k ln2 in [-ln2/2, ln2/2]
  * exp2(x) = 2^k 2^r,  k = round(x),       r = x - k    in [-1/2, 1/2]
@@ -52,7 +52,7 @@ static int extra_exp_fma(char *buf, size_t n)
     return len;
 }
 
-/* ---- the error model of the exact variants (gen/funcs.h: pf_spec.model) ----
+/* ---- the error model of the exact variants (gen/float/funcs.h: pf_spec.model) ----
  * y = p(r) by fmaf Horner, then y 2^k.  At each r of the domain a bound on
  * |y - e^r| (resp. 2^r), in ULP of the float e^r, is carried through the
  * Horner steps: s_j = fmaf(s_{j+1}, r, c_j) adds half an ulp of the float

@@ -1,4 +1,4 @@
-/* Function table rows for log and log2 (see gen/funcs.h).
+/* Function table rows for log and log2 (see gen/float/funcs.h).
  *
  * log(x)  = k ln2 + log(m),      x = 2^k m, m in [sqrt(2)/2, sqrt(2))
  * log2(x) = k + log(m) / ln2
@@ -73,7 +73,7 @@ static int extra_log2(char *buf, size_t n)
     return len;
 }
 
-/* ---- the error model of the exact variants (gen/funcs.h: pf_spec.model) ----
+/* ---- the error model of the exact variants (gen/float/funcs.h: pf_spec.model) ----
  * For every k the input can give (-149 .. 128) and r on a grid of the
  * domain, a bound on the emitted function's error in ULP of the float
  * result f = k ln2 + log(1+r) (log) or k + log2(1+r) (log2):

@@ -1,4 +1,4 @@
-/* Function table rows for the trig family: sin, cos, tan (see gen/funcs.h).
+/* Function table rows for the trig family: sin, cos, tan (see gen/float/funcs.h).
  *
  * Two polynomials serve the three functions:
  *   sin(t) on [0, pi/2], odd: sin and cos.  The argument is reduced by pi,
@@ -202,7 +202,7 @@ static int extra_trig_double(char *buf, size_t n)
     pio2_split(2, bits, 53, part);
     int len = snprintf(
         buf, n,
-        "/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c).\n"
+        "/* Reduction constants, computed with MPFR by pfmathgen (gen/float/funcs_trig.c).\n"
         "   Cody-Waite with FMA for |x| < 2^%d: pi/2 = PIO2_1 + PIO2_2 + O(2^-107),\n"
         "   fma(-m, PIO2_1, x) exact, fma(-m, PIO2_2, .) rounded once. */\n"
         "static const double PF_TRIG_2OPI = %a;          /* 2/pi */\n"
@@ -233,7 +233,7 @@ static int extra_trig_float(char *buf, size_t n, int nparts)
     int bits[2] = {24, 24};
     pio2_split(nparts, bits, 24, part);
     int len = snprintf(buf, n,
-                       "/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c):\n"
+                       "/* Reduction constants, computed with MPFR by pfmathgen (gen/float/funcs_trig.c):\n"
                        "   2/pi rounded to float; pi/2 = sum PF_TRIG_PIO2F[i] (Cody-Waite with\n"
                        "   FMA), 24-bit parts, the last rounded; for |x| < 2^%d. */\n"
                        "static const float PF_TRIG_2OPIF = %af;\n"

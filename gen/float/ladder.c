@@ -81,7 +81,7 @@ static int candidates(const char *func, const char *reduction, cand *c)
 {
     const pf_spec *fast = NULL, *exact = NULL;
     if (!reduction) {
-        /* the function's default: its first row (gen/funcs.h) */
+        /* the function's default: its first row (gen/float/funcs.h) */
         const pf_spec *d = pf_spec_find(func, "exact", NULL);
         d = d ? d : pf_spec_find(func, "fast", NULL);
         if (!d)

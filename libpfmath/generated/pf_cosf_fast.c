@@ -92,7 +92,7 @@ static const float pf_cosf_fast_C[4] = {
     -0x1.4e3926p-10f,    /* c6 = -0.00127496046 */
 };
 
-/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c):
+/* Reduction constants, computed with MPFR by pfmathgen (gen/float/funcs_trig.c):
    2/pi rounded to float; pi/2 = sum PF_TRIG_PIO2F[i] (Cody-Waite with
    FMA), 24-bit parts, the last rounded; for |x| < 2^17. */
 static const float PF_TRIG_2OPIF = 0x1.45f306p-1f;
@@ -115,7 +115,7 @@ static const uint32_t PF_TRIG_2OPI_BITS[40] = {
     0x6295993cu, 0x95993c43u, 0x993c4390u, 0x3c439041u,
 };
 
-/* Shared by the trig templates (emitted before the body: gen/funcs.h, head). */
+/* Shared by the trig templates (emitted before the body: gen/float/funcs.h, head). */
 /* Payne-Hanek: y = |x| 2/pi mod 4 in 2.62 fixed point.  |x| = mx 2^(e-150-(e&7))
    with mx the significand shifted left by e&7 (< 2^31); bits of 2/pi above the
    window contribute multiples of 4, below it less than 2^-62 (error under 2

@@ -112,7 +112,7 @@ static const float PF_LOG2_LL PF_UNUSED = 0x1.4ae0cp-26f;
    (pairs fmaf(c_{2i+4}, r, c_{2i+3}), then levels fmaf(p1, r2^(2^j), p0)).
    h enters the sum multiplied by r^3 (|r| < 0.42 in log2's q), which damps
    the extra roundings of Estrin's scheme and of r2; the error model in the
-   provenance follows the same steps (gen/funcs_log.c: model_q).  Up to four
+   provenance follows the same steps (gen/float/funcs_log.c: model_q).  Up to four
    coefficients (and for five, where the one pair is Horner's own step) this
    is Horner's rule, the same bits.  The loops have constant trip counts and
    unroll fully after inlining, so array loops calling it vectorize.

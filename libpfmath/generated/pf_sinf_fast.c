@@ -91,7 +91,7 @@ static const float pf_sinf_fast_C[3] = {
     0x1.e52c04p-8f,    /* c5 = 0.00740313623 */
 };
 
-/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c):
+/* Reduction constants, computed with MPFR by pfmathgen (gen/float/funcs_trig.c):
    2/pi rounded to float; pi/2 = sum PF_TRIG_PIO2F[i] (Cody-Waite with
    FMA), 24-bit parts, the last rounded; for |x| < 2^17. */
 static const float PF_TRIG_2OPIF = 0x1.45f306p-1f;
@@ -114,7 +114,7 @@ static const uint32_t PF_TRIG_2OPI_BITS[40] = {
     0x6295993cu, 0x95993c43u, 0x993c4390u, 0x3c439041u,
 };
 
-/* Shared by the trig templates (emitted before the body: gen/funcs.h, head). */
+/* Shared by the trig templates (emitted before the body: gen/float/funcs.h, head). */
 /* Payne-Hanek: y = |x| 2/pi mod 4 in 2.62 fixed point.  |x| = mx 2^(e-150-(e&7))
    with mx the significand shifted left by e&7 (< 2^31); bits of 2/pi above the
    window contribute multiples of 4, below it less than 2^-62 (error under 2
@@ -146,7 +146,7 @@ static inline double pf_sinf_fast_ph_r(int64_t f)
    gives the same bits).  The polynomial's slope is 0 at r = pi/2, so the
    folds at x = (k + 1/2) pi are continuous (by parity) with a continuous
    slope.  Its peak there is 1 - 2^-21 (the fit's target is lowered by that
-   much, 8 ulps of 1, see gen/funcs_trig.c): Horner's rule in float rounds
+   much, 8 ulps of 1, see gen/float/funcs_trig.c): Horner's rule in float rounds
    by a few ulps, so the result stays within [-1, 1] with no clamp.  Two
    paths, chosen per input the same way in the scalar and the array form:
    - Cody-Waite with FMA on x itself (signed), two 24-bit parts of pi/2,

@@ -97,7 +97,7 @@ static const float pf_tanf_C[7] = {
     0x1.33e7c6p-7f,    /* c13 = 0.00939652603 */
 };
 
-/* Reduction constants, computed with MPFR by pfmathgen (gen/funcs_trig.c).
+/* Reduction constants, computed with MPFR by pfmathgen (gen/float/funcs_trig.c).
    Cody-Waite with FMA for |x| < 2^28: pi/2 = PIO2_1 + PIO2_2 + O(2^-107),
    fma(-m, PIO2_1, x) exact, fma(-m, PIO2_2, .) rounded once. */
 static const double PF_TRIG_2OPI = 0x1.45f306dc9c883p-1;          /* 2/pi */
@@ -120,7 +120,7 @@ static const uint32_t PF_TRIG_2OPI_BITS[40] = {
     0x6295993cu, 0x95993c43u, 0x993c4390u, 0x3c439041u,
 };
 
-/* Shared by the trig templates (emitted before the body: gen/funcs.h, head). */
+/* Shared by the trig templates (emitted before the body: gen/float/funcs.h, head). */
 /* Payne-Hanek: y = |x| 2/pi mod 4 in 2.62 fixed point.  |x| = mx 2^(e-150-(e&7))
    with mx the significand shifted left by e&7 (< 2^31); bits of 2/pi above the
    window contribute multiples of 4, below it less than 2^-62 (error under 2
