@@ -10,69 +10,24 @@
  * library) the row is the dispatched form. */
 #include "pfbench_ladder.h"
 
+#include "elfsyms.h"
+
 #include <dlfcn.h>
-#include <elf.h>
-#include <fcntl.h>
-#include <link.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 /* the ladder's levels, ULP (mk/ladder.mk: LADDER_LEVELS) */
 static const int levels[] = {1, 2, 4, 128, 8192};
 #define NLEVELS ((int)(sizeof levels / sizeof levels[0]))
 
 static void *lh;
-static uintptr_t base;
-static const Elf64_Sym *syms;
-static size_t nsym;
-static const char *strs;
-
-/* the mapped file's .symtab (kept mapped: names point into it) */
-static void map_syms(const char *path)
-{
-    int fd = open(path, O_RDONLY);
-    struct stat st;
-    if (fd < 0)
-        return;
-    void *m = fstat(fd, &st) == 0 && (size_t)st.st_size >= sizeof(Elf64_Ehdr)
-                  ? mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0)
-                  : MAP_FAILED;
-    close(fd);
-    if (m == MAP_FAILED)
-        return;
-    const unsigned char *b = m;
-    size_t size = (size_t)st.st_size;
-    const Elf64_Ehdr *eh = m;
-    if (memcmp(eh->e_ident, ELFMAG, SELFMAG) || eh->e_ident[EI_CLASS] != ELFCLASS64 || !eh->e_shoff ||
-        eh->e_shentsize != sizeof(Elf64_Shdr) || eh->e_shoff + (size_t)eh->e_shnum * sizeof(Elf64_Shdr) > size)
-        return;
-    const Elf64_Shdr *sh = (const Elf64_Shdr *)(b + eh->e_shoff);
-    for (int i = 0; i < eh->e_shnum; i++) {
-        if (sh[i].sh_type != SHT_SYMTAB || sh[i].sh_link >= eh->e_shnum)
-            continue;
-        const Elf64_Shdr *ss = &sh[sh[i].sh_link];
-        if (sh[i].sh_offset + sh[i].sh_size > size || ss->sh_offset + ss->sh_size > size || !ss->sh_size ||
-            b[ss->sh_offset + ss->sh_size - 1])
-            return;
-        syms = (const Elf64_Sym *)(b + sh[i].sh_offset);
-        nsym = sh[i].sh_size / sizeof(Elf64_Sym);
-        strs = (const char *)(b + ss->sh_offset);
-        return;
-    }
-}
+static pf_elfsyms es; /* the ladder library's .symtab (elfsyms.h) */
 
 static void *clone_of(const char *name, const char *suffix)
 {
     char full[160];
     snprintf(full, sizeof full, "%s.%s", name, suffix);
-    for (size_t i = 0; syms && i < nsym; i++)
-        if (ELF64_ST_TYPE(syms[i].st_info) == STT_FUNC && syms[i].st_shndx != SHN_UNDEF &&
-            !strcmp(strs + syms[i].st_name, full))
-            return (void *)(base + syms[i].st_value);
-    return NULL;
+    return pf_elfsyms_func(&es, full);
 }
 
 int pfb_ladder_open(const char *lib, char *err, size_t errlen)
@@ -82,10 +37,7 @@ int pfb_ladder_open(const char *lib, char *err, size_t errlen)
         snprintf(err, errlen, "%s", dlerror());
         return -1;
     }
-    struct link_map *lm = NULL;
-    if (dlinfo(lh, RTLD_DI_LINKMAP, &lm) == 0 && lm)
-        base = (uintptr_t)lm->l_addr;
-    map_syms(lib);
+    pf_elfsyms_load(&es, lh, lib);
     return 0;
 }
 

@@ -11,70 +11,17 @@
  * on) and called directly, each only when the CPU has that level.  A
  * stripped library, or one built by another compiler, has no such symbols:
  * then the row is the dispatched array form, labelled "dispatch". */
+#include "elfsyms.h"
 #include "funcset.h"
 #include "pfbench.h"
 
 #include <dlfcn.h>
-#include <elf.h>
-#include <fcntl.h>
-#include <link.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 static void *lib_h;
-static uintptr_t lib_base;         /* load address of the library's first segment */
-static const Elf64_Sym *symtab;    /* the mapped file's .symtab, or NULL */
-static size_t nsyms;
-static const char *strtab;
+static pf_elfsyms es; /* the library's .symtab (elfsyms.h) */
 static int have_clones;
-
-/* .symtab lookup in the mapped file: st_value of a defined function */
-static uintptr_t sym_value(const char *name)
-{
-    for (size_t i = 0; symtab && i < nsyms; i++)
-        if (ELF64_ST_TYPE(symtab[i].st_info) == STT_FUNC && symtab[i].st_shndx != SHN_UNDEF &&
-            strcmp(strtab + symtab[i].st_name, name) == 0)
-            return (uintptr_t)symtab[i].st_value;
-    return 0;
-}
-
-static void map_symtab(const char *path)
-{
-    int fd = open(path, O_RDONLY);
-    if (fd < 0)
-        return;
-    struct stat st;
-    void *m = MAP_FAILED;
-    if (fstat(fd, &st) == 0 && (size_t)st.st_size >= sizeof(Elf64_Ehdr))
-        m = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
-    close(fd);
-    if (m == MAP_FAILED)
-        return;
-    /* the mapping is kept for the life of the process: names point into it */
-    const unsigned char *b = m;
-    size_t size = (size_t)st.st_size;
-    const Elf64_Ehdr *eh = m;
-    if (memcmp(eh->e_ident, ELFMAG, SELFMAG) || eh->e_ident[EI_CLASS] != ELFCLASS64 ||
-        eh->e_shoff == 0 || eh->e_shentsize != sizeof(Elf64_Shdr) ||
-        eh->e_shoff + (size_t)eh->e_shnum * sizeof(Elf64_Shdr) > size)
-        return;
-    const Elf64_Shdr *sh = (const Elf64_Shdr *)(b + eh->e_shoff);
-    for (int i = 0; i < eh->e_shnum; i++) {
-        if (sh[i].sh_type != SHT_SYMTAB || sh[i].sh_link >= eh->e_shnum)
-            continue;
-        const Elf64_Shdr *ss = &sh[sh[i].sh_link];
-        if (sh[i].sh_offset + sh[i].sh_size > size || ss->sh_offset + ss->sh_size > size ||
-            ss->sh_size == 0 || b[ss->sh_offset + ss->sh_size - 1] != 0)
-            return;
-        symtab = (const Elf64_Sym *)(b + sh[i].sh_offset);
-        nsyms = sh[i].sh_size / sizeof(Elf64_Sym);
-        strtab = (const char *)(b + ss->sh_offset);
-        return;
-    }
-}
 
 int pfb_ours_open(const char *lib, char *err, size_t errlen)
 {
@@ -83,16 +30,13 @@ int pfb_ours_open(const char *lib, char *err, size_t errlen)
         snprintf(err, errlen, "%s", dlerror());
         return -1;
     }
-    struct link_map *lm = NULL;
-    if (dlinfo(lib_h, RTLD_DI_LINKMAP, &lm) == 0 && lm)
-        lib_base = (uintptr_t)lm->l_addr;
-    map_symtab(lib);
+    pf_elfsyms_load(&es, lib_h, lib);
     /* trust the table only if it places an exported function where dlsym does */
     const char *probe[] = {
 #define PF_FLOAT(n, id, ar, u, lo, hi) "pf_" #n "f",
 #include "functions.def"
     };
-    for (size_t i = 0; i < sizeof probe / sizeof probe[0] && symtab; i++) {
+    for (size_t i = 0; i < sizeof probe / sizeof probe[0] && es.syms; i++) {
         void *p = dlsym(lib_h, probe[i]);
         /* the scalar forms are target_clones too (an IFUNC symbol): dlsym
            then gives the clone the resolver picked, so compare with those */
@@ -101,9 +45,9 @@ int pfb_ours_open(const char *lib, char *err, size_t errlen)
         for (size_t c = 0; c < sizeof sfx / sizeof sfx[0] && p && !have_clones; c++) {
             char name[64];
             snprintf(name, sizeof name, "%s%s", probe[i], sfx[c]);
-            uintptr_t v = sym_value(name);
+            uintptr_t v = pf_elfsyms_value(&es, name);
             found |= v != 0;
-            have_clones = v && (uintptr_t)p == lib_base + v;
+            have_clones = v && (uintptr_t)p == es.base + v;
         }
         if (found)
             break;
@@ -117,8 +61,7 @@ static void *clone_addr(const char *base, const char *suffix)
 {
     char name[160];
     snprintf(name, sizeof name, "%s.%s", base, suffix);
-    uintptr_t v = sym_value(name);
-    return v ? (void *)(lib_base + v) : NULL;
+    return pf_elfsyms_func(&es, name);
 }
 
 static void add(pfb_cand *c, int *n, const char *name, const char *isa, int fast, int arity,

@@ -29,10 +29,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
+#include "elfsyms.h"
 #include "testutil.h"
 
 typedef float (*fn1)(float);
@@ -41,55 +40,10 @@ typedef void (*arr1)(const float *, float *, size_t);
 typedef void (*arr2)(const float *, const float *, float *, size_t);
 
 static void *lib;
-static uintptr_t base;
-static const Elf64_Sym *syms;
-static size_t nsyms;
-static const char *strs;
-
-/* ---- .symtab of the library file ---- */
-static void map_symtab(const char *path)
-{
-    int fd = open(path, O_RDONLY);
-    if (fd < 0)
-        return;
-    struct stat st;
-    void *m = MAP_FAILED;
-    if (fstat(fd, &st) == 0 && (size_t)st.st_size >= sizeof(Elf64_Ehdr))
-        m = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
-    close(fd);
-    if (m == MAP_FAILED)
-        return;
-    const unsigned char *b = m;
-    size_t size = (size_t)st.st_size;
-    const Elf64_Ehdr *eh = m;
-    if (memcmp(eh->e_ident, ELFMAG, SELFMAG) || eh->e_ident[EI_CLASS] != ELFCLASS64 ||
-        eh->e_shentsize != sizeof(Elf64_Shdr) ||
-        eh->e_shoff + (size_t)eh->e_shnum * sizeof(Elf64_Shdr) > size)
-        return;
-    const Elf64_Shdr *sh = (const Elf64_Shdr *)(b + eh->e_shoff);
-    for (int i = 0; i < eh->e_shnum; i++) {
-        if (sh[i].sh_type != SHT_SYMTAB || sh[i].sh_link >= eh->e_shnum)
-            continue;
-        const Elf64_Shdr *ss = &sh[sh[i].sh_link];
-        if (sh[i].sh_offset + sh[i].sh_size > size || ss->sh_offset + ss->sh_size > size ||
-            ss->sh_size == 0 || b[ss->sh_offset + ss->sh_size - 1] != 0)
-            return;
-        syms = (const Elf64_Sym *)(b + sh[i].sh_offset);
-        nsyms = sh[i].sh_size / sizeof(Elf64_Sym);
-        strs = (const char *)(b + ss->sh_offset);
-        return;
-    }
-}
+static pf_elfsyms es; /* the library's .symtab (elfsyms.h) */
 
 /* address of a defined function symbol (the clones are local), or NULL */
-static void *sym_addr(const char *name)
-{
-    for (size_t i = 0; i < nsyms; i++)
-        if (ELF64_ST_TYPE(syms[i].st_info) == STT_FUNC && syms[i].st_shndx != SHN_UNDEF &&
-            strcmp(strs + syms[i].st_name, name) == 0)
-            return (void *)(base + syms[i].st_value);
-    return NULL;
-}
+static void *sym_addr(const char *name) { return pf_elfsyms_func(&es, name); }
 
 static int setup(void **state)
 {
@@ -101,10 +55,7 @@ static int setup(void **state)
         fprintf(stderr, "dlopen %s: %s\n", p, dlerror());
         return -1;
     }
-    struct link_map *lm = NULL;
-    if (dlinfo(lib, RTLD_DI_LINKMAP, &lm) == 0 && lm)
-        base = (uintptr_t)lm->l_addr;
-    map_symtab(p);
+    pf_elfsyms_load(&es, lib, p);
     __builtin_cpu_init();
     return 0;
 }
@@ -239,7 +190,7 @@ static int check_one(const func_row *f, const char *sfx, const float *x, const f
 static void test_clones_identical(void **state)
 {
     (void)state;
-    if (!syms || !sym_addr("pf_logf.default")) {
+    if (!es.syms || !sym_addr("pf_logf.default")) {
         print_message("libpfmath.so has no clone symbols (stripped, or no target_clones)\n");
         skip();
     }
