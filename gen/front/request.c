@@ -90,7 +90,8 @@ int pf_parse_type(const char *what, const char *s, pf_type *t, char *err, size_t
     return 0;
 }
 
-static int parse_bound(const char *s, double *v)
+/* a number, or 2^k with k in [kmin, kmax] */
+static int parse_num_or_pow2(const char *s, long kmin, long kmax, double *v)
 {
     char *end;
     if (!*s || isspace((unsigned char)*s))
@@ -98,36 +99,26 @@ static int parse_bound(const char *s, double *v)
     if (!strncmp(s, "2^", 2)) {
         errno = 0;
         long ex = strtol(s + 2, &end, 10);
-        if (end == s + 2 || *end || errno || ex < -1000 || ex > 0)
+        if (end == s + 2 || *end || errno || ex < kmin || ex > kmax)
             return -1;
         *v = ldexp(1.0, (int)ex);
-    } else {
-        *v = strtod(s, &end);
-        if (end == s || *end)
-            return -1;
+        return 0;
     }
-    return *v > 0 && *v < 1 ? 0 : -1;
+    *v = strtod(s, &end);
+    return end == s || *end ? -1 : 0;
+}
+
+/* an error bound: in (0, 1) */
+static int parse_bound(const char *s, double *v)
+{
+    return parse_num_or_pow2(s, -1000, 0, v) == 0 && *v > 0 && *v < 1 ? 0 : -1;
 }
 
 /* --max-ulp U: a finite number of float ULPs, >= 0.5 (0.5 is correct
    rounding; below it no float result can be), written as a number or 2^k */
 static int parse_ulp(const char *s, double *v)
 {
-    char *end;
-    if (!*s || isspace((unsigned char)*s))
-        return -1;
-    if (!strncmp(s, "2^", 2)) {
-        errno = 0;
-        long ex = strtol(s + 2, &end, 10);
-        if (end == s + 2 || *end || errno || ex < -1 || ex > 1000)
-            return -1;
-        *v = ldexp(1.0, (int)ex);
-    } else {
-        *v = strtod(s, &end);
-        if (end == s || *end)
-            return -1;
-    }
-    return isfinite(*v) && *v >= 0.5 ? 0 : -1;
+    return parse_num_or_pow2(s, -1, 1000, v) == 0 && isfinite(*v) && *v >= 0.5 ? 0 : -1;
 }
 
 /* long option name of a short code, for messages */
