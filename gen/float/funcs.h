@@ -10,7 +10,8 @@
  *
  * The generator's function table: for each function, reduction and variant,
  * what is fitted (target, domain in the fit variable t, parity, constraints)
- * and which template turns the coefficients into C.  Adding a function means
+ * and which template turns the coefficients into C.  A row of variant "mid"
+ * is a scheme only the accuracy ladder (--max-ulp) tries.  Adding a function means
  * adding a row here, a target below and a template in gen/templates/. */
 #ifndef PF_FUNCS_H
 #define PF_FUNCS_H
@@ -55,6 +56,9 @@ typedef struct {
        extra text and the body (helpers several templates share); tail, in
        place of tail_unary.c / tail_binary.c (the scalar and array forms). */
     const char *head, *tail;
+    /* The ladder's static cost (gen/float/ladder.c) of a row whose template
+       the default rule misjudges: 2 a Horner term plus this; 0 = the rule. */
+    int ladder_cost;
 } pf_spec;
 
 typedef struct pf_scheme {

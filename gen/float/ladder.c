@@ -48,6 +48,8 @@ static int nterms(const pf_spec *s, int order)
 static int cost_of(const pf_spec *s, const pf_spec *fast, int order)
 {
     int n = nterms(s, order);
+    if (s->ladder_cost > 0)
+        return 2 * n + s->ladder_cost;
     if (!strcmp(s->variant, "fast"))
         return 2 * n;
     if (!strcmp(s->real, "double"))
@@ -77,9 +79,11 @@ static int min_order(const pf_spec *s)
     return lo;
 }
 
+/* Every row of the function's table with this reduction is a candidate
+   template: the fast and exact variants, and ladder-only rows (variant
+   "mid": schemes between the two, which the library does not ship). */
 static int candidates(const char *func, const char *reduction, cand *c)
 {
-    const pf_spec *fast = NULL, *exact = NULL;
     if (!reduction) {
         /* the function's default: its first row (gen/float/funcs.h) */
         const pf_spec *d = pf_spec_find(func, "exact", NULL);
@@ -88,17 +92,16 @@ static int candidates(const char *func, const char *reduction, cand *c)
             return 0;
         reduction = d->reduction;
     }
-    fast = pf_spec_find(func, "fast", reduction);
-    exact = pf_spec_find(func, "exact", reduction);
-    const pf_spec *sp[2] = {fast, exact};
+    const pf_spec *fast = pf_spec_find(func, "fast", reduction);
     int n = 0;
-    for (int i = 0; i < 2; i++) {
-        if (!sp[i])
+    for (int i = 0; i < pf_spec_count(); i++) {
+        const pf_spec *sp = pf_spec_at(i);
+        if (strcmp(sp->func, func) || strcmp(sp->reduction, reduction))
             continue;
-        for (int o = min_order(sp[i]); o <= LADDER_MAX_ORDER && n < LADDER_MAX_CANDS; o++) {
-            if ((sp[i]->parity == FIT_PARITY_ODD && o % 2 == 0) || (sp[i]->parity == FIT_PARITY_EVEN && o % 2))
+        for (int o = min_order(sp); o <= LADDER_MAX_ORDER && n < LADDER_MAX_CANDS; o++) {
+            if ((sp->parity == FIT_PARITY_ODD && o % 2 == 0) || (sp->parity == FIT_PARITY_EVEN && o % 2))
                 continue;
-            c[n++] = (cand){sp[i], o, cost_of(sp[i], fast, o), 0};
+            c[n++] = (cand){sp, o, cost_of(sp, fast, o), 0};
         }
     }
     qsort(c, (size_t)n, sizeof *c, cand_cmp);
@@ -343,11 +346,16 @@ static int search(const pf_gen_req *base, double U, int sample, FILE *log, pf_ge
     /* A spec whose prediction has not improved by 3% over its best for two
        orders in a row has reached its rounding floor: its higher orders are
        skipped (they would cost fits of up to a minute each for nothing). */
-    const pf_spec *seen[2] = {NULL, NULL};
-    double best[2] = {INFINITY, INFINITY};
-    int stall[2] = {0, 0};
+#define LADDER_MAX_SPECS 8
+    const pf_spec *seen[LADDER_MAX_SPECS] = {NULL};
+    double best[LADDER_MAX_SPECS];
+    int stall[LADDER_MAX_SPECS] = {0};
+    for (int k = 0; k < LADDER_MAX_SPECS; k++)
+        best[k] = INFINITY;
     for (int i = 0; i < n; i++) {
-        int k = seen[0] == c[i].s ? 0 : seen[1] == c[i].s ? 1 : !seen[0] ? 0 : 1;
+        int k = 0;
+        while (k < LADDER_MAX_SPECS - 1 && seen[k] && seen[k] != c[i].s)
+            k++;
         seen[k] = c[i].s;
         if (stall[k] >= 2)
             continue;
@@ -382,7 +390,7 @@ static int search(const pf_gen_req *base, double U, int sample, FILE *log, pf_ge
         else
             snprintf(hx, sizeof hx, "x = %a (0x%08x)", (double)res->sweep.worst_x, wb);
         snprintf(lines, sizeof lines,
-                 " * Ladder:      --max-ulp %g: the cheapest of %d candidates (fast and exact templates,\n"
+                 " * Ladder:      --max-ulp %g: the cheapest of %d candidates (the function's templates,\n"
                  " *              orders up to %d) predicted and swept within %g ULP: %s template,\n"
                  " *              order %d, cost %d (gen/float/ladder.c); predicted %.3f ULP\n"
                  " * Confirmed:   max %.3f ULP at %s over %llu inputs;\n"
