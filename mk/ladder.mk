@@ -16,6 +16,11 @@ $(BUILD)/pfmathgen: $(BUILD)/obj/tests/pfsweep_pairs.o
 # files, in build/ladder-sample/, say so in their provenance).
 LADDER_FUNCS  := log log2 exp exp2 sin cos tan asin acos atan atan2
 LADDER_LEVELS := 1 2 4 128 8192
+# A function may add levels where a peer sits between them (LADDER_EXTRA_log
+# := 0.6); tests/pfbench_ladder.c lists the levels it looks for.  In file and
+# symbol names the point is a 'p' (pf_logf_l0p6).
+ladder_levels = $(LADDER_LEVELS) $(LADDER_EXTRA_$(1))
+ladder_tag    = $(subst .,p,$(1))
 # `make bench` times a ladder confirmed on a sample (a few minutes to build;
 # the bench measures every point's error itself, like the peers'); `make
 # bench LADDER_SAMPLE=0` times the exhaustively confirmed one of `make ladder`.
@@ -26,17 +31,17 @@ LADDER_SAMPLE ?= 0
 LADDER_TAG    := $(if $(filter 1,$(LADDER_SAMPLE)),-sample,)
 LADDER_DIR    := $(BUILD)/ladder$(LADDER_TAG)
 LADDER_LIB    := $(BUILD)/libpfladder$(LADDER_TAG).so
-LADDER_SRCS   := $(foreach f,$(LADDER_FUNCS),$(foreach l,$(LADDER_LEVELS),$(LADDER_DIR)/pf_$(f)f_l$(l).c))
+LADDER_SRCS   := $(foreach f,$(LADDER_FUNCS),$(foreach l,$(call ladder_levels,$(f)),$(LADDER_DIR)/pf_$(f)f_l$(call ladder_tag,$(l)).c))
 
 # the report and the search's log go to FILE.log; a failure shows its last line
 define ladder_rule
-$(LADDER_DIR)/pf_$(1)f_l$(2).c: | $(BUILD)/pfmathgen
+$(LADDER_DIR)/pf_$(1)f_l$(call ladder_tag,$(2)).c: | $(BUILD)/pfmathgen
 	@mkdir -p $$(dir $$@)
 	@echo "  LADDER $(1) $(2) ULP"
-	@$(BUILD)/pfmathgen --func $(1) --max-ulp $(2) --name pf_$(1)f_l$(2) \
+	@$(BUILD)/pfmathgen --func $(1) --max-ulp $(2) --name pf_$(1)f_l$(call ladder_tag,$(2)) \
 	  $(if $(LADDER_TAG),--confirm sample,) -o $$@ 2> $$@.log || { tail -1 $$@.log; exit 1; }
 endef
-$(foreach f,$(LADDER_FUNCS),$(foreach l,$(LADDER_LEVELS),$(eval $(call ladder_rule,$(f),$(l)))))
+$(foreach f,$(LADDER_FUNCS),$(foreach l,$(call ladder_levels,$(f)),$(eval $(call ladder_rule,$(f),$(l)))))
 
 # -fno-math-errno: asin/acos call sqrtf, which GCC vectorizes only without
 # errno (their files' "Build flags:" line; harmless for the others)

@@ -16,8 +16,10 @@
 #include <stdio.h>
 #include <string.h>
 
-/* the ladder's levels, ULP (mk/ladder.mk: LADDER_LEVELS) */
-static const int levels[] = {1, 2, 4, 128, 8192};
+/* the levels a function's ladder may hold, ULP (mk/ladder.mk: LADDER_LEVELS
+   for every function, plus LADDER_EXTRA_<f>); absent ones are skipped.  In a
+   symbol name the level's point is a 'p' (pf_logf_l0p6). */
+static const char *const levels[] = {"0.55", "0.6", "0.75", "1", "1.5", "2", "3", "4", "128", "8192"};
 #define NLEVELS ((int)(sizeof levels / sizeof levels[0]))
 
 static void *lh;
@@ -41,11 +43,19 @@ int pfb_ladder_open(const char *lib, char *err, size_t errlen)
     return 0;
 }
 
-static void add(pfb_cand *c, int *n, int level, const char *isa, int arity, void *array)
+static void level_tag(char *tag, size_t n, const char *level)
+{
+    snprintf(tag, n, "%s", level);
+    for (char *p = tag; *p; p++)
+        if (*p == '.')
+            *p = 'p';
+}
+
+static void add(pfb_cand *c, int *n, const char *level, const char *isa, int arity, void *array)
 {
     pfb_cand *k = &c[(*n)++];
     memset(k, 0, sizeof *k);
-    snprintf(k->name, sizeof k->name, "pfmath-L%d", level);
+    snprintf(k->name, sizeof k->name, "pfmath-L%s", level);
     snprintf(k->isa, sizeof k->isa, "%s", isa);
     k->ours = PFB_OURS_LADDER;
     if (arity == 2)
@@ -61,8 +71,9 @@ void pfb_ladder(pf_func f, pfb_cand *c, int *n)
     __builtin_cpu_init();
     int arity = pfref_arity(f);
     for (int i = 0; i < NLEVELS && *n + 2 <= PFB_MAX_CANDS; i++) {
-        char arr[96];
-        snprintf(arr, sizeof arr, "pf_%sf_l%d_array", pfref_name(f), levels[i]);
+        char arr[96], tag[16];
+        level_tag(tag, sizeof tag, levels[i]);
+        snprintf(arr, sizeof arr, "pf_%sf_l%s_array", pfref_name(f), tag);
         void *a = dlsym(lh, arr);
         if (!a)
             continue;
@@ -78,10 +89,10 @@ void pfb_ladder(pf_func f, pfb_cand *c, int *n)
 
 void *pfb_ladder_scalar(pf_func f, const pfb_cand *c)
 {
-    int level;
-    if (!lh || sscanf(c->name, "pfmath-L%d", &level) != 1)
+    if (!lh || strncmp(c->name, "pfmath-L", 8))
         return NULL;
-    char sym[96];
-    snprintf(sym, sizeof sym, "pf_%sf_l%d", pfref_name(f), level);
+    char sym[96], tag[16];
+    level_tag(tag, sizeof tag, c->name + 8);
+    snprintf(sym, sizeof sym, "pf_%sf_l%s", pfref_name(f), tag);
     return dlsym(lh, sym);
 }
