@@ -118,14 +118,14 @@ static double phase16(int Ei, double Xmax, int64_t *A, int64_t *B)
  *          product's error (|x| |TH - 2/pi 2^(30-Ei)| 2^-30) exceeds L/16;
  *   fold   a = |v| 2^30 and the sign of v, exactly (so sin is exactly odd
  *          and cos exactly even);
- *   square a = vh 2^16 + vl: s = vh^2 + floor(vh vl / 2^15) in 2^-28 units
- *          (the vl^2 term and the floor: < 2^-27), s16 = round(s 2^16);
+ *   square a = vh 2^15 + vl: s = vh^2 + floor(vh vl / 2^14) in 2^-30 units
+ *          (the vl^2 term and the floor: < 2^-29), s16 = round(s 2^16);
  *   P      = c1 + c3 s + s^2 T(s), c1 at 2^-31, c3 at 2^-15 (pinned by the
  *          fit: c3 s16 lands on 2^-31 with no shift), T = c5 + c7 s + ...
  *          by Horner in s16, each step floored to its own format, y = s T
  *          at 2^-ey, all summed in a uint32_t at 2^-31 (P > 0);
- *   v P    = vh P16 + floor(vl P15 / 2^15) at 2^-30, P16 = round(P 2^16),
- *          P15 = floor(P 2^15) (vl < 2^-14: its error is < 2^-29);
+ *   v P    = vh P16 + floor(vl P16 / 2^15) at 2^-31 (uint32_t: |v| P <= 1
+ *          + the error), P16 = round(P 2^16);
  *   output round(|v| P 2^Eo), then the sign of v. */
 static int kind3_ok(const fx_gen *G)
 {
@@ -335,14 +335,14 @@ static int fit16(fx_gen *G, char *err, size_t errlen)
                 return -1;
             for (int j = 0; j <= m; j++)
                 G->C[j] = stored[G->deg[j]];
-            if (G->C[0] <= 0 || G->C[0] >= ((int64_t)1 << 32) || G->C[1] <= -32768 || G->C[1] >= 32768) {
+            if (G->C[0] <= 0 || G->C[0] + 0x4000 >= ((int64_t)1 << 32) || G->C[1] <= -32768 || G->C[1] >= 32768) {
                 snprintf(err, errlen, "order %d: c1 or c3 out of the kernel's range", G->order);
                 return -1;
             }
         }
     }
     /* the error bound, absolute, in P's units (|v| <= 1, s <= 1) */
-    double ds = 0x1p-17 + 0x1p-27; /* s16 against v^2: its rounding, and s's floor and dropped vl^2 */
+    double ds = 0x1p-17 + 0x1p-29; /* s16 against v^2: its rounding, and s's floor and dropped vl^2 */
     double dP = fabs(a[1]) * ds;   /* c3 s16: an exact product */
     if (m >= 2) {
         double dq = 0;             /* the tail's Horner, each step floored (< 1 lsb) */
@@ -351,9 +351,8 @@ static int fit16(fx_gen *G, char *err, size_t errlen)
         double dy = dq + pm[0] * ds + (E[2] + 16 > ey ? ldexp(1.0, -ey) : 0);
         dP += pm[0] * ds + dy + (ey > 15 ? 0x1p-31 : 0); /* s y: |y| <= max |T| */
     }
-    /* P16's rounding (1/2 of 2^-16, times |v| <= 1); vl (P - P15) < 2^-14 2^-15
-       and the floor of vl P15 2^-15 (2^-30) */
-    G->arith = dP + 0x1p-17 + 0x1p-29 + 0x1p-30;
+    /* P16's rounding (1/2 of 2^-16, times |v| <= 1) and the floor of vl P16 2^-15 (2^-31) */
+    G->arith = dP + 0x1p-17 + 0x1p-31;
     memcpy(G->E, E, sizeof E);
     G->trig.ey = ey;
     G->Ep = 16;
@@ -363,7 +362,7 @@ static int fit16(fx_gen *G, char *err, size_t errlen)
     fit_measure(pb, &G->poly);
     G->poly_err = G->poly.max_err;
     size_t o = (size_t)snprintf(G->fmt_text, sizeof G->fmt_text,
-                                "|v| in 2^-30 units split as vh 2^-14 + vl 2^-30; s = v^2 to 2^-28, then s16 = s "
+                                "|v| in 2^-30 units split as vh 2^-15 + vl 2^-30; s = v^2 to 2^-30, then s16 = s "
                                 "rounded to 2^-16 (|error| <= %.3e); c1 ufixed<32,31>, c3 fixed<15,15>",
                                 ds);
     for (int j = 2; j <= m && o < sizeof G->fmt_text; j++)
@@ -375,8 +374,8 @@ static int fit16(fx_gen *G, char *err, size_t errlen)
     if (o < sizeof G->fmt_text)
         snprintf(G->fmt_text + o, sizeof G->fmt_text - o,
                  "; P = c1 + c3 s16 + s16 y summed at 2^-31 in a uint32_t, every product of two operands whose "
-                 "bounds keep it below 2^31 (no wrap); P16 = round(P 2^16), P15 = floor(P 2^15); |v| P = vh P16 + "
-                 "floor(vl P15 2^-15) at 2^-30; arithmetic error <= %.3e",
+                 "bounds keep it below 2^31 (signed) or 2^32 (unsigned): no wrap; P16 = round(P 2^16) (its 2^-17 folded into c1); |v| P = vh P16 + "
+                 "floor(vl P16 2^-15) at 2^-31 in a uint32_t; arithmetic error <= %.3e",
                  G->arith);
     return 0;
 }
@@ -435,9 +434,8 @@ static void budget(fx_gen *G)
 /* 32-bit lane helpers of kind 3 (see kind3 above), written before the kernel */
 static const char helpers3[] =
     "\n/* 32-bit lane helpers of the exact sin/cos kernel (gen/fixed/fixed_trig.c, kind 3).\n"
-    "   GCC and Clang define >> of a negative int as arithmetic (floor), and\n"
-    "   unsigned -> signed conversion as modular; other compilers get the same\n"
-    "   values from unsigned arithmetic. */\n"
+    "   GCC and Clang define >> of a negative int as arithmetic (floor); other\n"
+    "   compilers get the same values from unsigned arithmetic. */\n"
     "\n"
     "/* floor(z / 2^d), 1 <= d <= 31 */\n"
     "PF_FX_INLINE int32_t pf_fx_sra32(int32_t z, int d)\n"
@@ -449,18 +447,13 @@ static const char helpers3[] =
     "#endif\n"
     "}\n"
     "\n"
-    "/* u read as an int32_t (two's complement) */\n"
-    "PF_FX_INLINE int32_t pf_fx_i32(uint32_t u)\n"
-    "{\n"
-    "    return u <= (uint32_t)INT32_MAX ? (int32_t)u : -(int32_t)~u - 1;\n"
-    "}\n"
-    "\n"
-    "/* |u read as an int32_t| as a uint32_t (2^31 for 0x80000000): GCC makes\n"
-    "   one vpabsd of it */\n"
+    "/* |u read as an int32_t| as a uint32_t (2^31 for 0x80000000): the smaller\n"
+    "   of u and 2^32 - u, two vector instructions (vpsubd, vpminud) where the\n"
+    "   signed forms cost a compare and a masked subtract, or abs(INT32_MIN) */\n"
     "PF_FX_INLINE uint32_t pf_fx_uabs32(uint32_t u)\n"
     "{\n"
-    "    int32_t s = pf_fx_i32(u);\n"
-    "    return s < 0 ? 0u - (uint32_t)s : (uint32_t)s;\n"
+    "    uint32_t m = 0u - u;\n"
+    "    return u < m ? u : m;\n"
     "}\n";
 
 static void emit16_3(fx_gen *G, pf_buf *body, int is_cos)
@@ -482,10 +475,10 @@ static void emit16_3(fx_gen *G, pf_buf *body, int is_cos)
     pf_put(body, "    /* fold: v = 1 - |w - 2| in [-1, 1], 2^-30 units (mod 2^32); a = |v|, the sign of v kept in b */\n"
                  "    uint32_t b = 0x40000000u - pf_fx_uabs32(z);\n"
                  "    uint32_t a = pf_fx_uabs32(b); /* |v| in [0, 2^30] */\n"
-                 "    /* s = v^2: a = vh 2^16 + vl, s = vh^2 + floor(vh vl 2^-15) in 2^-28 units (vl^2 dropped) */\n"
-                 "    uint32_t vh = a >> 16, vl = a & 0xffffu; /* vh <= 2^14, vl < 2^16 */\n"
-                 "    uint32_t s = vh * vh + ((vh * vl) >> 15);\n"
-                 "    int32_t s16 = (int32_t)((s + 0x800u) >> 12); /* s rounded to 2^-16, <= 2^16 */\n");
+                 "    /* s = v^2: a = vh 2^15 + vl, s = vh^2 + floor(vh vl 2^-14) in 2^-30 units (vl^2 dropped) */\n"
+                 "    uint32_t vh = a >> 15, vl = a & 0x7fffu; /* vh <= 2^15, vl < 2^15 */\n"
+                 "    uint32_t s = vh * vh + ((vh * vl) >> 14);\n"
+                 "    int32_t s16 = (int32_t)((s + 0x2000u) >> 14); /* s rounded to 2^-16, <= 2^16 */\n");
     if (m >= 2) {
         pf_put(body, "    /* T(s) = c5 + c7 s + ...: Horner in s16, each step floored to its coefficient's lsb */\n");
         snprintf(what, sizeof what, "c%d = %.12g", G->deg[m], ldexp((double)G->C[m], -G->E[m]));
@@ -507,9 +500,9 @@ static void emit16_3(fx_gen *G, pf_buf *body, int is_cos)
             pf_printf(body, "    int32_t y = q * s16; /* s T, 2^-%d units */\n", ey);
     }
     snprintf(what, sizeof what, "c3 = %.12g", ldexp((double)G->C[1], -G->E[1]));
-    pf_printf(body, "    /* P = c1 + c3 s + s y at 2^-31, in [1, 2): modular uint32_t sums */\n"
-                    "    uint32_t p = %lluu /* c1 = %.12g */ + (uint32_t)(%s * s16) /* %s */",
-              (unsigned long long)G->C[0], ldexp((double)G->C[0], -31), fx_k16(G, G->C[1], what), what);
+    pf_printf(body, "    /* P = c1 + c3 s + s y at 2^-31, in [1, 2), plus 2^-17 (P16's rounding): modular uint32_t sums */\n"
+                    "    uint32_t p = %lluu /* c1 = %.12g, + 0x4000 */ + (uint32_t)(%s * s16) /* %s */",
+              (unsigned long long)G->C[0] + 0x4000u, ldexp((double)G->C[0], -31), fx_k16(G, G->C[1], what), what);
     if (m >= 2) {
         if (ey > 15)
             pf_printf(body, "\n               + (uint32_t)pf_fx_sra32(y * s16, %d)", ey - 15);
@@ -517,11 +510,11 @@ static void emit16_3(fx_gen *G, pf_buf *body, int is_cos)
             pf_put(body, "\n               + (uint32_t)(y * s16)");
     }
     pf_put(body, ";\n"
-                 "    uint32_t p16 = (p + 0x4000u) >> 15, p15 = p >> 16; /* P rounded to 2^-16, floored to 2^-15 */\n"
-                 "    /* |v| P at 2^-30: vh p16 <= 2^14 2^16.66, vl p15 < 2^16 2^15.66 */\n"
-                 "    uint32_t r30 = vh * p16 + ((vl * p15) >> 15);\n");
-    pf_printf(body, "    uint32_t r = (r30 + 0x%xu) >> %d; /* rounded once to the output's lsb */\n", 1u << (29 - Eo),
-              30 - Eo);
+                 "    uint32_t p16 = p >> 15; /* P rounded to 2^-16, < 2^16.66 */\n"
+                 "    /* |v| P at 2^-31, <= 2^31 (1 + its error): vh p16 and vl p16 < 2^15 2^16.66 */\n"
+                 "    uint32_t r31 = vh * p16 + ((vl * p16) >> 15);\n");
+    pf_printf(body, "    uint32_t r = (r31 + 0x%xu) >> %d; /* rounded once to the output's lsb */\n", 1u << (30 - Eo),
+              31 - Eo);
     pf_put(body, "    int32_t rs = b >= 0x80000000u ? -(int32_t)r : (int32_t)r; /* the sign of v */\n");
     int64_t one = (int64_t)1 << Eo;
     fx_emit_return16(G, body, "rs", -one - 1, one + 1);

@@ -21,16 +21,17 @@
  *              coefficients rounded to the lsb of their Horner step (bit-width analysis) by 
  *              pin-and-refit
  * Constraints: none
- * Formats:     |v| in 2^-30 units split as vh 2^-14 + vl 2^-30; s = v^2 to 2^-28, then s16 = s 
- *              rounded to 2^-16 (|error| <= 7.637e-06); c1 ufixed<32,31>, c3 fixed<15,15>, c5 
+ * Formats:     |v| in 2^-30 units split as vh 2^-15 + vl 2^-30; s = v^2 to 2^-30, then s16 = s 
+ *              rounded to 2^-16 (|error| <= 7.631e-06); c1 ufixed<32,31>, c3 fixed<15,15>, c5 
  *              fixed<15,18>, c7 fixed<15,22> (T's Horner in s16, each step floored to its 
  *              coefficient's lsb); y = s T fixed<15,18>; P = c1 + c3 s16 + s16 y summed at 
  *              2^-31 in a uint32_t, every product of two operands whose bounds keep it below 
- *              2^31 (no wrap); P16 = round(P 2^16), P15 = floor(P 2^15); |v| P = vh P16 + 
- *              floor(vl P15 2^-15) at 2^-30; arithmetic error <= 2.144e-05
+ *              2^31 (signed) or 2^32 (unsigned): no wrap; P16 = round(P 2^16) (its 2^-17 folded 
+ *              into c1); |v| P = vh P16 + floor(vl P16 2^-15) at 2^-31 in a uint32_t; 
+ *              arithmetic error <= 2.143e-05
  * Polynomial:  max absolute error 9.276e-07 (2^-20.04) at t = 0.723522427
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.4086 LSB (polynomial 0.0152, 
- *              arithmetic and reduction 0.3934) = 0.9086 LSB
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.4085 LSB (polynomial 0.0152, 
+ *              arithmetic and reduction 0.3933) = 0.9085 LSB
  * Sweep:       max 0.7196 LSB at x = -12844 (-3.13574219), mean 0.2520 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
@@ -224,9 +225,8 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 
 
 /* 32-bit lane helpers of the exact sin/cos kernel (gen/fixed/fixed_trig.c, kind 3).
-   GCC and Clang define >> of a negative int as arithmetic (floor), and
-   unsigned -> signed conversion as modular; other compilers get the same
-   values from unsigned arithmetic. */
+   GCC and Clang define >> of a negative int as arithmetic (floor); other
+   compilers get the same values from unsigned arithmetic. */
 
 /* floor(z / 2^d), 1 <= d <= 31 */
 PF_FX_INLINE int32_t pf_fx_sra32(int32_t z, int d)
@@ -238,18 +238,13 @@ PF_FX_INLINE int32_t pf_fx_sra32(int32_t z, int d)
 #endif
 }
 
-/* u read as an int32_t (two's complement) */
-PF_FX_INLINE int32_t pf_fx_i32(uint32_t u)
-{
-    return u <= (uint32_t)INT32_MAX ? (int32_t)u : -(int32_t)~u - 1;
-}
-
-/* |u read as an int32_t| as a uint32_t (2^31 for 0x80000000): GCC makes
-   one vpabsd of it */
+/* |u read as an int32_t| as a uint32_t (2^31 for 0x80000000): the smaller
+   of u and 2^32 - u, two vector instructions (vpsubd, vpminud) where the
+   signed forms cost a compare and a masked subtract, or abs(INT32_MIN) */
 PF_FX_INLINE uint32_t pf_fx_uabs32(uint32_t u)
 {
-    int32_t s = pf_fx_i32(u);
-    return s < 0 ? 0u - (uint32_t)s : (uint32_t)s;
+    uint32_t m = 0u - u;
+    return u < m ? u : m;
 }
 /* cos in fixed point, in 32-bit lanes.  u = x 2/pi counts quarter turns;
    the phase w = (u + 2) mod 4 is a uint32_t with 30 fraction bits, and
@@ -266,21 +261,21 @@ PF_FX_INLINE int16_t pf_cos_q12_q14_inline(int16_t x, const int16_t *k, int bw)
     /* fold: v = 1 - |w - 2| in [-1, 1], 2^-30 units (mod 2^32); a = |v|, the sign of v kept in b */
     uint32_t b = 0x40000000u - pf_fx_uabs32(z);
     uint32_t a = pf_fx_uabs32(b); /* |v| in [0, 2^30] */
-    /* s = v^2: a = vh 2^16 + vl, s = vh^2 + floor(vh vl 2^-15) in 2^-28 units (vl^2 dropped) */
-    uint32_t vh = a >> 16, vl = a & 0xffffu; /* vh <= 2^14, vl < 2^16 */
-    uint32_t s = vh * vh + ((vh * vl) >> 15);
-    int32_t s16 = (int32_t)((s + 0x800u) >> 12); /* s rounded to 2^-16, <= 2^16 */
+    /* s = v^2: a = vh 2^15 + vl, s = vh^2 + floor(vh vl 2^-14) in 2^-30 units (vl^2 dropped) */
+    uint32_t vh = a >> 15, vl = a & 0x7fffu; /* vh <= 2^15, vl < 2^15 */
+    uint32_t s = vh * vh + ((vh * vl) >> 14);
+    int32_t s16 = (int32_t)((s + 0x2000u) >> 14); /* s rounded to 2^-16, <= 2^16 */
     /* T(s) = c5 + c7 s + ...: Horner in s16, each step floored to its coefficient's lsb */
     int32_t q = k[0]; /* c7 = -0.0043511390686, 2^-22 units */
     q = pf_fx_sra32(q * s16, 20) + k[1]; /* c5 = 0.0794639587402, 2^-18 units */
     int32_t y = pf_fx_sra32(q * s16, 16); /* s T, 2^-18 units */
-    /* P = c1 + c3 s + s y at 2^-31, in [1, 2): modular uint32_t sums */
-    uint32_t p = 3373248011u /* c1 = 1.57079101121 */ + (uint32_t)(k[2] * s16) /* c3 = -0.645904541016 */
+    /* P = c1 + c3 s + s y at 2^-31, in [1, 2), plus 2^-17 (P16's rounding): modular uint32_t sums */
+    uint32_t p = 3373264395u /* c1 = 1.57079101121, + 0x4000 */ + (uint32_t)(k[2] * s16) /* c3 = -0.645904541016 */
                + (uint32_t)pf_fx_sra32(y * s16, 3);
-    uint32_t p16 = (p + 0x4000u) >> 15, p15 = p >> 16; /* P rounded to 2^-16, floored to 2^-15 */
-    /* |v| P at 2^-30: vh p16 <= 2^14 2^16.66, vl p15 < 2^16 2^15.66 */
-    uint32_t r30 = vh * p16 + ((vl * p15) >> 15);
-    uint32_t r = (r30 + 0x8000u) >> 16; /* rounded once to the output's lsb */
+    uint32_t p16 = p >> 15; /* P rounded to 2^-16, < 2^16.66 */
+    /* |v| P at 2^-31, <= 2^31 (1 + its error): vh p16 and vl p16 < 2^15 2^16.66 */
+    uint32_t r31 = vh * p16 + ((vl * p16) >> 15);
+    uint32_t r = (r31 + 0x10000u) >> 17; /* rounded once to the output's lsb */
     int32_t rs = b >= 0x80000000u ? -(int32_t)r : (int32_t)r; /* the sign of v */
     return (int16_t)rs;
 }
