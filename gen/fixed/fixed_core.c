@@ -175,6 +175,11 @@ static int fit_at(fx_gen *G, int order, char *err, size_t errlen)
     }
     G->m = m;
     G->order = order;
+    if (G->W == 16 && F->fit16) {
+        int rc = F->fit16(G, err, errlen);
+        if (rc != 1)
+            return rc;
+    }
     if (G->W == 16)
         return fit_at16(G, err, errlen);
     G->xt = pf_type_fixed(0, G->W - 1, G->W - 1);
@@ -267,6 +272,10 @@ void fx_formats_text(const fx_gen *G, char *buf, size_t n)
     char t[64];
     size_t o = 0;
     buf[0] = 0;
+    if (G->W == 16 && G->fmt_text[0]) { /* a function's own fit16 */
+        snprintf(buf, n, "%s", G->fmt_text);
+        return;
+    }
     if (G->W == 16) {
         /* 16-bit lanes: every step a signed 16-bit word */
         o += (size_t)snprintf(buf + o, n - o, "x unsigned fixed<15,15> in int16_t; ");
@@ -329,8 +338,8 @@ static void provenance(pf_buf *b, const fx_gen *G)
              F->parity == FIT_PARITY_ODD ? " (odd polynomial t P(t^2))" : "");
     wrap_text(b, "Domain:", tmp);
     if (G->W == 16)
-        snprintf(tmp, sizeof tmp, "%d (%d fixed-point coefficients; int16_t words: 16-bit lanes)", G->order,
-                 G->m + 1);
+        snprintf(tmp, sizeof tmp, "%d (%d fixed-point coefficients; %s)", G->order, G->m + 1,
+                 G->order_text[0] ? G->order_text : "int16_t words: 16-bit lanes");
     else
         snprintf(tmp, sizeof tmp, "%d (%d fixed-point coefficients; %s words, %d-bit products)", G->order, G->m + 1,
                  G->wt, 2 * G->W);
@@ -377,7 +386,8 @@ static void provenance(pf_buf *b, const fx_gen *G)
               G->exact ? "exact: below 1 LSB of the output for every input"
                        : "fast: within max(2^-10 |f(x)|, 4 LSB) for every input");
     wrap_text(b, "Arithmetic:",
-              G->W == 16 ? "integers only (no floating point, no <math.h>); every rounding to nearest, ties up (the "
+              G->arith_text[0] ? G->arith_text
+              : G->W == 16 ? "integers only (no floating point, no <math.h>); every rounding to nearest, ties up (the "
                            "rounding multiply-high's rule; the error bound needs only half an lsb per rounding); "
                            "bit-identical under any compiler flags"
                          : "integers only (no floating point, no <math.h>); every rounding to nearest, ties to even; "

@@ -38,6 +38,10 @@ typedef struct {
     int (*prepare)(fx_gen *G, char *err, size_t errlen);
     void (*budget)(fx_gen *G);
     void (*emit)(fx_gen *G, pf_buf *body);
+    /* optional, 16-bit storage: the function's own coefficient formats for
+       its current reduction kind; returns 0 or -1 as fit_at16, or 1: use
+       fit_at16 (the 16-bit Horner of pf_bw_horner_word) */
+    int (*fit16)(fx_gen *G, char *err, size_t errlen);
 } fx_func;
 
 /* The reductions' constants, one struct per function family, filled by
@@ -46,6 +50,9 @@ typedef struct {               /* sin, cos */
     int64_t c64;               /* kind 1: round(2/pi 2^(62-Ei)) mod 2^64 */
     int sh;                    /* kind 0: Ei + 1, the shift of x (2/pi 2^31) to 2^-30 */
     int64_t a16, b16;          /* kind 2, 16-bit lanes: w = x A + mulhrs(x, B) */
+    int64_t th, tl;            /* kind 3, 32-bit lanes: z = x TH (+ (x TL) >> 16) mod 2^32 */
+    int two;                   /* kind 3: the TL product is used */
+    int ey;                    /* kind 3: y = s T(s) in 2^-ey units */
 } fx_trig_red;
 
 typedef struct {               /* exp, exp2 */
@@ -148,6 +155,9 @@ struct fx_gen {
     int64_t kval[64];
     char kwhat[64][64];
     char wide_text[400];       /* steps in wider lanes, and why (provenance) */
+    char fmt_text[800];        /* if set: the Formats line of a function's own fit16 */
+    char order_text[120];      /* if set: the Order line's word text (a function's own fit16) */
+    char arith_text[300];      /* if set: the Arithmetic line (a function's own fit16) */
     int bw16;                  /* the kernel has an AVX-512BW form (fx_emit_vshift16) */
 
     /* sweep of the compiled code */

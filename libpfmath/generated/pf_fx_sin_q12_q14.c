@@ -4,27 +4,42 @@
  * Regenerate:  pfmathgen --func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' -o libpfmath/generated/pf_fx_sin_q12_q14.c
  * Input:       int16_t x, value x 2^-12 in [-8, 7.99975586]
  * Output:      int16_t y, value y 2^-14 in [-2, 1.99993896]
- * Reduction:   u = x 2/pi with 2/pi = 1367130551 2^-31, the product rounded to 2^-30; phase w = 
- *              (u + 1) mod 4 (uint32_t, 30 fraction bits); fold to v in [-1, 1] (v = w - 1 or 3 
- *              - w); error of v <= 1.035e-09
+ * Reduction:   u = x 2/pi mod 4 in 2^-30 units, a uint32_t: z = x 166886 + 0xc0000000, 166886 = 
+ *              round(2/pi 2^18) mod 2^32 (bits of 2/pi that only add multiples of 4 dropped, 
+ *              MPFR; one 32x32 -> 32-bit product); phase w = (u + 1) mod 4; fold to |v| in [0, 
+ *              1] (v = w - 1 or 3 - w, 2^-30 units) and the sign of v, exactly; error of v <= 
+ *              1.636e-06
  * Domain:      sin(pi/2 t) on t in [0, 1] (odd polynomial t P(t^2))
- * Order:       7 (4 fixed-point coefficients; int32_t words, 64-bit products)
+ * Order:       7 (4 fixed-point coefficients; int32_t words: 32-bit lanes, 32x32 -> 32-bit 
+ *              products)
+ * Lanes:       every step in 32-bit lanes (16 per AVX-512 vector), each product a 32x32 -> 
+ *              32-bit low half (vpmulld) that cannot wrap, no 64-bit lane: the exact bound 
+ *              needs about 20 fraction bits of the phase (16-bit lanes hold 14, whose rounding 
+ *              alone is a quarter lsb here) and about 33 bits for |v| P, so no step fits 16-bit 
+ *              words
  * Method:      minimax absolute error (nlopt SLSQP, epigraph form, from the least-squares fit), 
  *              coefficients rounded to the lsb of their Horner step (bit-width analysis) by 
  *              pin-and-refit
  * Constraints: none
- * Formats:     x unsigned fixed<31,31>; p3 fixed<22,29>, p2 fixed<27,29>, p1 fixed<30,29>, p0 
- *              fixed<30,29>; product shifts 31; p0 saturated to its format
- * Polynomial:  max absolute error 5.895e-07 (2^-20.69) at t = 0.939421881
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.0098 LSB (polynomial 0.0097, 
- *              arithmetic and reduction 0.0001) = 0.5098 LSB
- * Sweep:       max 0.5094 LSB at x = -9738 (-2.37744141), mean 0.2480 LSB; exhaustive: all 
+ * Formats:     |v| in 2^-30 units split as vh 2^-15 + vl 2^-30; s = v^2 to 2^-30, then s16 = s 
+ *              rounded to 2^-16 (|error| <= 7.631e-06); c1 ufixed<32,31>, c3 fixed<15,15>, c5 
+ *              fixed<15,18>, c7 fixed<15,22> (T's Horner in s16, each step floored to its 
+ *              coefficient's lsb); y = s T fixed<15,18>; P = c1 + c3 s16 + s16 y summed at 
+ *              2^-31 in a uint32_t, every product of two operands whose bounds keep it below 
+ *              2^31 (signed) or 2^32 (unsigned): no wrap; P16 = round(P 2^16) (its 2^-17 folded 
+ *              into c1); |v| P = vh P16 + floor(vl P16 2^-15) at 2^-31 in a uint32_t; 
+ *              arithmetic error <= 2.143e-05
+ * Polynomial:  max absolute error 9.276e-07 (2^-20.04) at t = 0.723522427
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.4085 LSB (polynomial 0.0152, 
+ *              arithmetic and reduction 0.3933) = 0.9085 LSB
+ * Sweep:       max 0.7221 LSB at x = -19551 (-4.77319336), mean 0.2514 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
  * Target:      exact: below 1 LSB of the output for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              to even; bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating point, no <math.h>); roundings to nearest with ties 
+ *              up, and floors where the error bound counts a whole lsb; bit-identical under any 
+ *              compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -132,48 +147,175 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
     return n + (int)x;
 }
 
-/* sin in fixed point.  u = x 2/pi counts quarter turns; the phase
-   w = (u + 1) mod 4 (32-bit word, 30 fraction bits) is all that
-   matters, since sin(x) = sin(pi/2 (w - 1)).  Fold: v = w - 1 on [0, 2),
-   3 - w on [2, 4) (sin(pi/2 v) = sin(pi/2 (2 - v))), so v is in [-1, 1] and
-   sin(x) = sin(pi/2 v) = v P(v^2). */
-PF_FX_INLINE int16_t pf_sin_q12_q14_inline(int16_t x)
+/* 16-bit lane helpers (gen/templates/fx_common16.h.in), for functions whose
+   input and output are stored in at most 16 bits: the array loop then runs
+   in 16-bit lanes, twice as many as 32-bit ones.  The roundings here are to
+   nearest with ties up (the error bounds need only |error| <= 1/2 lsb).
+   GCC and Clang define >> of a negative int as arithmetic (floor), which
+   the first forms use because GCC recognizes exactly them as pmulhrsw and
+   16-bit shifts; other compilers get the same values from unsigned shifts. */
+
+/* The kernels' bw argument: 1 selects the forms of a step that only
+   AVX-512 runs in 16-bit lanes (a per-element 16-bit shift, a leading-zero
+   count), 0 the forms every x86-64 level vectorizes; both give the same
+   values.  Builds for a baseline with AVX-512BW and CD use the first. */
+#if defined(__GNUC__) && defined(__AVX512BW__) && defined(__AVX512CD__)
+#define PF_FX_BW_NATIVE 1
+#else
+#define PF_FX_BW_NATIVE 0
+#endif
+
+/* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
+   Never called with a = b = -32768 (whose result, 2^15, does not fit). */
+PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 {
-    uint32_t w = (uint32_t)pf_fx_rne((int64_t)x * 1367130551, 13) + 0x40000000u;
-    int32_t v = w < 0x80000000u ? (int32_t)w - 0x40000000 : 0x40000000 - (int32_t)(w - 0x80000000u);
-    /* s = v^2 in [0, 1): unsigned fixed<31,31>, saturated at its max when v = +-1 */
-    int64_t s0 = pf_fx_rne((int64_t)v * v, 29);
-    int32_t s = (int32_t)(s0 < INT32_MAX ? s0 : INT32_MAX);
-    /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner, one rounding per step, in
-       the formats of the bit-width analysis (see Formats above) */
-    int32_t p = -2326314; /* c7 = -0.00433309748769 */
-    p = (int32_t)pf_fx_mul32(p, s, 31) + 42645992; /* c5 = 0.0794343501329 */
-    p = (int32_t)pf_fx_mul32(p, s, 31) - 346761085; /* c3 = -0.645892852917 */
-    p = (int32_t)pf_fx_mul32(p, s, 31) + 843312003; /* c1 = 1.57079101168 */
-    p = p > 1073741823 ? 1073741823 : p < -1073741824 ? -1073741824 : p; /* p0 saturated to fixed<30,29> */
-    /* v P(s), rounded once to fixed<15,14> and saturated */
-    int64_t r = pf_fx_rne((int64_t)v * p, 45);
-    return (int16_t)(r > 32767 ? 32767 : r < -32768 ? -32768 : r);
+#if defined(__GNUC__)
+    return (int16_t)(((((int32_t)a * b) >> 14) + 1) >> 1);
+#else
+    uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
+    return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
 }
+
+/* |x| as a uint16_t (|-32768| = 32768): GCC turns abs() of a promoted
+   int16_t into one pabsw, where x < 0 ? -x : x becomes a compare and a
+   select */
+PF_FX_INLINE uint16_t pf_fx_abs16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (uint16_t)__builtin_abs(x);
+#else
+    return (uint16_t)(x < 0 ? -(int32_t)x : x);
+#endif
+}
+
+/* -1 (all ones) for x < 0, else 0: one arithmetic shift (psraw) */
+PF_FX_INLINE int16_t pf_fx_sgn16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (int16_t)(x >> 15);
+#else
+    return (int16_t)-(x < 0);
+#endif
+}
+
+/* round(z / 2^d), ties up, 1 <= d <= 15: floor(z / 2^d) plus the bit below
+   (no intermediate beyond 16 bits, which would cost 32-bit lanes) */
+PF_FX_INLINE int16_t pf_fx_rsh16(int16_t z, int d)
+{
+#if defined(__GNUC__)
+    return (int16_t)((z >> d) + ((z >> (d - 1)) & 1));
+#else
+    uint32_t u = (uint32_t)((int32_t)z + 32768) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(16-d) */
+    return (int16_t)((int32_t)((u + 1) >> 1) - (32768 >> d));
+#endif
+}
+
+/* round(z / 2^d), ties up, for a 32-bit z (a full 16x16-bit product),
+   1 <= d <= 30 */
+PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
+{
+#if defined(__GNUC__)
+    return ((z >> (d - 1)) + 1) >> 1;
+#else
+    uint32_t u = ((uint32_t)z + 0x80000000u) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(32-d) */
+    return (int32_t)((u + 1) >> 1) - (int32_t)(0x80000000u >> d);
+#endif
+}
+
+
+/* 32-bit lane helpers of the exact sin/cos kernel (gen/fixed/fixed_trig.c, kind 3).
+   GCC and Clang define >> of a negative int as arithmetic (floor); other
+   compilers get the same values from unsigned arithmetic. */
+
+/* floor(z / 2^d), 1 <= d <= 31 */
+PF_FX_INLINE int32_t pf_fx_sra32(int32_t z, int d)
+{
+#if defined(__GNUC__)
+    return z >> d;
+#else
+    return (int32_t)(((uint32_t)z + 0x80000000u) >> d) - (int32_t)(0x80000000u >> d);
+#endif
+}
+
+/* |u read as an int32_t| as a uint32_t (2^31 for 0x80000000): the smaller
+   of u and 2^32 - u, two vector instructions (vpsubd, vpminud) where the
+   signed forms cost a compare and a masked subtract, or abs(INT32_MIN) */
+PF_FX_INLINE uint32_t pf_fx_uabs32(uint32_t u)
+{
+    uint32_t m = 0u - u;
+    return u < m ? u : m;
+}
+/* sin in fixed point, in 32-bit lanes.  u = x 2/pi counts quarter turns;
+   the phase w = (u + 1) mod 4 is a uint32_t with 30 fraction bits, and
+   sin(x) = sin(pi/2 (w - 1)).  Fold: v = w - 1 on [0, 2), 3 - w on
+   [2, 4) (sin(pi/2 v) = sin(pi/2 (2 - v))), so v is in [-1, 1] and
+   sin(x) = sin(pi/2 v) = v P(v^2).  k[] holds the constants; bw (the AVX-512BW form, see
+   fx_tail16.c.in) changes nothing here. */
+PF_FX_INLINE int16_t pf_sin_q12_q14_inline(int16_t x, const int16_t *k, int bw)
+{
+    (void)bw;
+    /* phase: z = w - 2 = (u + 1) mod 4 - 2, u = x 2/pi in 2^-30 units (mod 2^32) */
+    int32_t xi = x;
+    uint32_t z = (uint32_t)xi * 166886u + 0xc0000000u;
+    /* fold: v = 1 - |w - 2| in [-1, 1], 2^-30 units (mod 2^32); a = |v|, the sign of v kept in b */
+    uint32_t b = 0x40000000u - pf_fx_uabs32(z);
+    uint32_t a = pf_fx_uabs32(b); /* |v| in [0, 2^30] */
+    /* s = v^2: a = vh 2^15 + vl, s = vh^2 + floor(vh vl 2^-14) in 2^-30 units (vl^2 dropped) */
+    uint32_t vh = a >> 15, vl = a & 0x7fffu; /* vh <= 2^15, vl < 2^15 */
+    uint32_t s = vh * vh + ((vh * vl) >> 14);
+    int32_t s16 = (int32_t)((s + 0x2000u) >> 14); /* s rounded to 2^-16, <= 2^16 */
+    /* T(s) = c5 + c7 s + ...: Horner in s16, each step floored to its coefficient's lsb */
+    int32_t q = k[0]; /* c7 = -0.0043511390686, 2^-22 units */
+    q = pf_fx_sra32(q * s16, 20) + k[1]; /* c5 = 0.0794639587402, 2^-18 units */
+    int32_t y = pf_fx_sra32(q * s16, 16); /* s T, 2^-18 units */
+    /* P = c1 + c3 s + s y at 2^-31, in [1, 2), plus 2^-17 (P16's rounding): modular uint32_t sums */
+    uint32_t p = 3373264395u /* c1 = 1.57079101121, + 0x4000 */ + (uint32_t)(k[2] * s16) /* c3 = -0.645904541016 */
+               + (uint32_t)pf_fx_sra32(y * s16, 3);
+    uint32_t p16 = p >> 15; /* P rounded to 2^-16, < 2^16.66 */
+    /* |v| P at 2^-31, <= 2^31 (1 + its error): vh p16 and vl p16 < 2^15 2^16.66 */
+    uint32_t r31 = vh * p16 + ((vl * p16) >> 15);
+    uint32_t r = (r31 + 0x10000u) >> 17; /* rounded once to the output's lsb */
+    int32_t rs = b >= 0x80000000u ? -(int32_t)r : (int32_t)r; /* the sign of v */
+    return (int16_t)rs;
+}
+
+/* The constants the body reads (Horner coefficients and multipliers) */
+static const int16_t pf_sin_q12_q14_k[3] = {
+    -18250, /* k[0]: c7 = -0.0043511390686 */
+    20831,  /* k[1]: c5 = 0.0794639587402 */
+    -21165, /* k[2]: c3 = -0.645904541016 */
+};
 
 int16_t pf_sin_q12_q14(int16_t x)
 {
-    return pf_sin_q12_q14_inline(x);
+    return pf_sin_q12_q14_inline(x, pf_sin_q12_q14_k, 0);
 }
 
-/* Array form: the body above is branch-free integer code, so this loop
-   vectorizes.  Built for a baseline without AVX2, it gets one clone per
-   x86-64 level and the widest the CPU has is picked at load time (when the
-   baseline already has AVX2, e.g. -march=native, the loop is simply built
-   for it).  Every clone computes the same bits: integers only. */
+/* Array form in 16-bit lanes.  The constants come through a pointer that an
+   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
+   into shifts and adds before it looks for the rounding multiply-high, and
+   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
+   can bound both operands and prove the product fits; the body therefore
+   feeds pf_fx_mulhrs only loads, constants, its own results and values
+   multiplied by a constant of k[] (a pmullw).  The values are the same, so
+   the scalar and array forms compute the same bits.  Built for a baseline
+   without AVX2, it gets one clone per x86-64 level and the widest the CPU
+   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
+   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
+   clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_sin_q12_q14_array(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
+    const int16_t *k = pf_sin_q12_q14_k;
+#if defined(__GNUC__)
+    __asm__("" : "+r"(k));
+#endif
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_sin_q12_q14_inline(x[i]);
+        y[i] = pf_sin_q12_q14_inline(x[i], k, PF_FX_BW_NATIVE);
 }
