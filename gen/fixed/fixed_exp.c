@@ -202,6 +202,10 @@ static void budget16(fx_gen *G)
        moves 2^t by ln2 dt relatively; the final rounding is the 1/2 lsb */
     G->A = 0;
     G->R = G->poly_err + G->arith + M_LN2 * G->exp.dt16 * (1 + 1e-6);
+    /* fast: the final scaling truncates (emit16), |floor(z) - z| < 1 lsb:
+       the 1/2 lsb of the model's final rounding plus 1/2 lsb here */
+    if (!G->exact)
+        G->A = 0.5 * fx_lsb(G);
     int smin = G->Ep - G->out.exp - (int)G->exp.khi;
     if (smin < -14)
         G->R = INFINITY;
@@ -227,11 +231,22 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
     int Ei = G->in.exp, Ep = G->Ep;
     int64_t omax = pf_type_max_stored(&G->out);
     int full = G->in.storage_bits == 16 && G->in.is_signed;
+    /* the clamp's bounds come from k[]: GCC cannot bound xc then, and keeps
+       x B's rounding multiply-high in 16 bits (pmulhrsw, see the array
+       form) without a product by 1 */
     pf_put(&body, "    int16_t xc = (int16_t)x;");
-    if (G->exp.loclamp)
-        pf_printf(&body, "\n    xc = (int16_t)(xc < %lld ? %lld : xc);", (long long)G->exp.xlo, (long long)G->exp.xlo);
-    if (G->exp.sat)
-        pf_printf(&body, "\n    xc = (int16_t)(xc > %lld ? %lld : xc);", (long long)G->exp.xhi, (long long)G->exp.xhi);
+    if (G->exp.loclamp) {
+        char w[64];
+        snprintf(w, sizeof w, "%lld: lowest input computed (clamp)", (long long)G->exp.xlo);
+        const char *kl = fx_k16(G, G->exp.xlo, w);
+        pf_printf(&body, "\n    xc = (int16_t)(xc < %s ? %s : xc); /* %lld */", kl, kl, (long long)G->exp.xlo);
+    }
+    if (G->exp.sat) {
+        char w[64];
+        snprintf(w, sizeof w, "%lld: highest input computed (clamp)", (long long)G->exp.xhi);
+        const char *kh = fx_k16(G, G->exp.xhi, w);
+        pf_printf(&body, "\n    xc = (int16_t)(xc > %s ? %s : xc); /* %lld */", kh, kh, (long long)G->exp.xhi);
+    }
     pf_put(&body, "\n");
     long long bias = (long long)(G->exp.k0 << Ei);
     if (base2) {
@@ -239,7 +254,7 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
                   (long long)G->exp.k0, Ei);
     } else {
         const char *kb = fx_k16(G, G->exp.b16, "B = round((log2(e) - 1) 2^15)");
-        const char *xo = G->exp.loclamp || G->exp.sat || !full ? fx_opaque16(G, "xc") : "xc";
+        const char *xo = !G->exp.loclamp && !G->exp.sat && !full ? fx_opaque16(G, "xc") : "xc";
         pf_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + (uint16_t)pf_fx_mulhrs(%s, %s) + %lldu); /* (t + %lld) 2^%d, t = x log2(e) */\n",
                   xo, kb, bias, (long long)G->exp.k0, Ei);
     }
@@ -259,14 +274,37 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
     int smin = Ep - G->out.exp - (int)G->exp.khi, smax = Ep - G->out.exp - (int)G->exp.klo;
     char sexpr[64];
     snprintf(sexpr, sizeof sexpr, "%lld - (int32_t)kb", (long long)(Ep - G->out.exp + G->exp.k0));
-    pf_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
-    fx_emit_vshift16(G, &body, "(uint16_t)p", 32767, sexpr, smin, smax, omax);
-    snprintf(G->wide_text, sizeof G->wide_text,
-             G->bw16 ? "the scaling by 2^k is a per-element shift: in 16-bit lanes where AVX-512BW has one "
-                       "(vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element shift); the same values, "
-                       "the error model does not need the wider lanes"
-                     : "the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit "
-                       "per-element shift; the error model does not need them)");
+    if (!G->exact && smin >= -1 && smax + 1 <= 31) {
+        /* fast: truncated, r = floor(P 2^-s) = floor(2a 2^-c), c = s + 1 >= 0
+           (2a < 2^16 as p < 2^15); the bound (budget16) counts the floor as
+           1 lsb.  Four vector instructions where rounding and the s = -1
+           case took nine.  bw = 1: one 16-bit shift (vpsrlvw; c >= 16 gives
+           0 there and in C); bw = 0: 32-bit lanes, the same values */
+        long long K = (long long)(Ep - G->out.exp + 1 + G->exp.k0);
+        pf_printf(&body, "    /* P 2^k truncated to the output: floor(2P 2^-c), c = s + 1 = %d - k in [%d, %d] */\n",
+                  Ep - G->out.exp + 1, smin + 1, smax + 1);
+        pf_printf(&body, "    uint16_t c = (uint16_t)(%lld - kb);\n    uint16_t r16;\n", K);
+        pf_printf(&body, "    if (bw)\n        r16 = (uint16_t)((uint16_t)((uint16_t)p << 1) >> %s);\n",
+                  smax + 1 > 16 ? "(c < 16 ? c : 16)" : "c");
+        pf_put(&body, "    else\n        r16 = (uint16_t)(((uint32_t)(uint16_t)p << 1) >> c);\n");
+        if (65534 > omax)
+            pf_printf(&body, "    r16 = (uint16_t)(r16 < %lluu ? r16 : %lluu);\n", (unsigned long long)omax,
+                      (unsigned long long)omax);
+        G->bw16 = 1;
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 "the scaling by 2^k is a per-element shift, truncating (floor: 1 lsb in the bound): in 16-bit "
+                 "lanes where AVX-512BW has one (vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element "
+                 "shift); the same values, the error model does not need the wider lanes");
+    } else {
+        pf_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
+        fx_emit_vshift16(G, &body, "(uint16_t)p", 32767, sexpr, smin, smax, omax);
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 G->bw16 ? "the scaling by 2^k is a per-element shift: in 16-bit lanes where AVX-512BW has one "
+                           "(vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element shift); the same values, "
+                           "the error model does not need the wider lanes"
+                         : "the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit "
+                           "per-element shift; the error model does not need them)");
+    }
     /* overflow saturates through a mask: GCC 12 widens the whole loop to
        32-bit lanes for a select between a 16-bit comparison and r */
     if (G->exp.sat)
