@@ -18,7 +18,7 @@
  * Lanes:       16-bit words throughout, x log2(e) to 2^-22 (the bound needs ~2^-19) a 16x16 -> 
  *              32-bit product (pmullw, pmulhuw) plus a carry; lookups (vpermi2w, vpermw) and 
  *              the per-element shift (vpsrlvw) in 16-bit lanes by AVX-512BW intrinsics 
- *              (x86-64-v4); the other clones and the scalar form: the same steps in plain C
+ *              (x86-64-v4); other clones, scalar form: the same steps in plain C
  * Method:      minimax absolute error of 2^r on [0, 2^-6] (nlopt SLSQP, epigraph form), c1 and 
  *              c2 rounded to nearest at 2^-16 and 2^-10 (their multiply-highs' lsbs); tables 
  *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/64) - 1) 2^16, U[j] = 
@@ -235,7 +235,7 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    shift (1: 16-bit lanes, for AVX-512BW's vpsrlvw; 0: 32-bit lanes), which
    give the same values. */
 /* A[j] = round((2^(j/64) - 1) 2^16) (MPFR) */
-static const uint16_t pf_exp_q11_uq8_ta[64] = {
+static const uint32_t pf_exp_q11_uq8_ta[64] = {
     0, 714, 1435, 2164, 2902, 3647, 4400, 5162,
     5932, 6710, 7496, 8292, 9096, 9908, 10730, 11560,
     12400, 13249, 14106, 14974, 15850, 16737, 17633, 18538,
@@ -246,7 +246,7 @@ static const uint16_t pf_exp_q11_uq8_ta[64] = {
     54658, 55966, 57289, 58627, 59979, 61346, 62727, 64124,
 };
 /* U[j] = round(2^(j/64) 2^15) (MPFR) */
-static const uint16_t pf_exp_q11_uq8_tu[64] = {
+static const uint32_t pf_exp_q11_uq8_tu[64] = {
     32768, 33125, 33486, 33850, 34219, 34591, 34968, 35349,
     35734, 36123, 36516, 36914, 37316, 37722, 38133, 38548,
     38968, 39392, 39821, 40255, 40693, 41136, 41584, 42037,
@@ -256,8 +256,8 @@ static const uint16_t pf_exp_q11_uq8_tu[64] = {
     55109, 55709, 56316, 56929, 57549, 58176, 58809, 59449,
     60097, 60751, 61413, 62081, 62757, 63441, 64132, 64830,
 };
-/* D[j] = round((2^(j/64) - 1) 2^16 - A[j] + 1/2) 2^5), in [0, 32] (MPFR) */
-static const uint16_t pf_exp_q11_uq8_td[64] = {
+/* D[j] = round(((2^(j/64) - 1) 2^16 - A[j] + 1/2) 2^5), in [0, 32] (MPFR) */
+static const uint32_t pf_exp_q11_uq8_td[64] = {
     16, 4, 18, 26, 1, 8, 20, 5,
     0, 8, 30, 7, 5, 27, 12, 27,
     12, 1, 30, 6, 29, 4, 1, 21,
@@ -268,7 +268,7 @@ static const uint16_t pf_exp_q11_uq8_td[64] = {
     2, 28, 30, 14, 15, 8, 29, 19,
 };
 /* P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range) */
-static const uint16_t pf_exp_q11_uq8_tp[32] = {
+static const uint32_t pf_exp_q11_uq8_tp[32] = {
     0, 0, 1, 1, 2, 4, 8, 16,
     32, 64, 128, 256, 512, 1024, 2048, 4096,
     8192, 16384, 32768, 65535, 0, 0, 0, 0,
@@ -312,13 +312,19 @@ PF_FX_INLINE uint16_t pf_exp_q11_uq8_inline(int16_t x, const int16_t *k, int bw)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
 extern uint16_t pf_exp_q11_uq8(int16_t x); /* the scalar form, for the last n % 32 */
+/* 32 table entries as 16-bit words, for vpermw/vpermi2w */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp_q11_uq8_w16(const uint32_t *t)
+{
+    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
+                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
+}
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_exp_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-    const __m512i ta0 = _mm512_loadu_si512(pf_exp_q11_uq8_ta), ta1 = _mm512_loadu_si512(pf_exp_q11_uq8_ta + 32);
-    const __m512i tu0 = _mm512_loadu_si512(pf_exp_q11_uq8_tu), tu1 = _mm512_loadu_si512(pf_exp_q11_uq8_tu + 32);
-    const __m512i td0 = _mm512_loadu_si512(pf_exp_q11_uq8_td), td1 = _mm512_loadu_si512(pf_exp_q11_uq8_td + 32);
-    const __m512i tp = _mm512_loadu_si512(pf_exp_q11_uq8_tp);
+    const __m512i ta0 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_ta), ta1 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_ta + 32);
+    const __m512i tu0 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_tu), tu1 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_tu + 32);
+    const __m512i td0 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_td), td1 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_td + 32);
+    const __m512i tp = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_tp);
     const __m512i c1 = _mm512_set1_epi16(-20110), c2 = _mm512_set1_epi16(247), cc = _mm512_set1_epi16(18);
     const __m512i off = _mm512_set1_epi16(15608), l1 = _mm512_set1_epi16(2954), l2 = _mm512_set1_epi16(-23629),
                   cl = _mm512_set1_epi16(21332), one = _mm512_set1_epi16(1);
