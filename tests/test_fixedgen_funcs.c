@@ -74,6 +74,8 @@ static const fx_case cases[] = {
     {"sqrt", "ufixed<16,16>", "ufixed<16,16>", 0, 16},
     {"sqrt", "ufixed<8,3>", "ufixed<8,6>", 0, 16},      /* 8-bit */
     {"sqrt", "ufixed<16,-2>", "ufixed<16,4>", 0, 16},   /* negative exponent */
+    {"exp", "fixed<15,7>", "ufixed<16,4>", 1, 16},      /* exact table kernel, other shifts */
+    {"exp2", "fixed<15,6>", "ufixed<16,2>", 1, 16},     /* exact table kernel: j is x's low bits */
 };
 #define NCASES ((int)(sizeof cases / sizeof cases[0]))
 

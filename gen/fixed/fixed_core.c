@@ -272,8 +272,8 @@ void fx_formats_text(const fx_gen *G, char *buf, size_t n)
     char t[64];
     size_t o = 0;
     buf[0] = 0;
-    if (G->W == 16 && G->fmt_text[0]) { /* a function's own fit16 */
-        snprintf(buf, n, "%s", G->fmt_text);
+    if (G->alt_formats[0]) { /* a function's own scheme (fit16, exp's table kernel) */
+        snprintf(buf, n, "%s", G->alt_formats);
         return;
     }
     if (G->W == 16) {
@@ -336,8 +336,10 @@ static void provenance(pf_buf *b, const fx_gen *G)
     wrap_text(b, "Reduction:", G->red_text);
     snprintf(tmp, sizeof tmp, "%s on t in [%g, %g]%s", F->target_text, F->a, F->b,
              F->parity == FIT_PARITY_ODD ? " (odd polynomial t P(t^2))" : "");
-    wrap_text(b, "Domain:", tmp);
-    if (G->W == 16)
+    wrap_text(b, "Domain:", G->alt_domain[0] ? G->alt_domain : tmp);
+    if (G->alt_order[0])
+        snprintf(tmp, sizeof tmp, "%s", G->alt_order);
+    else if (G->W == 16)
         snprintf(tmp, sizeof tmp, "%d (%d fixed-point coefficients; %s)", G->order, G->m + 1,
                  G->order_text[0] ? G->order_text : "int16_t words: 16-bit lanes");
     else
@@ -346,13 +348,13 @@ static void provenance(pf_buf *b, const fx_gen *G)
     wrap_text(b, "Order:", tmp);
     if (G->W == 16)
         wrap_text(b, "Lanes:", G->wide_text[0] ? G->wide_text : "every step in 16-bit lanes");
-    wrap_text(b, "Method:", method_text(G));
-    wrap_text(b, "Constraints:", F->con_zero ? F->con_text : "none");
+    wrap_text(b, "Method:", G->alt_method[0] ? G->alt_method : method_text(G));
+    wrap_text(b, "Constraints:", G->alt_con[0] ? G->alt_con : F->con_zero ? F->con_text : "none");
     fx_formats_text(G, tmp, sizeof tmp);
     wrap_text(b, "Formats:", tmp);
     snprintf(tmp, sizeof tmp, "max %s error %.3e (2^%.2f) at t = %.9g", G->errkind == FIT_REL ? "relative" : "absolute",
              G->poly_err, log2(G->poly_err), G->poly.max_err_at);
-    wrap_text(b, "Polynomial:", tmp);
+    wrap_text(b, "Polynomial:", G->alt_poly[0] ? G->alt_poly : tmp);
     char abs_text[96];
     snprintf(abs_text, sizeof abs_text, " + %.4f LSB (arithmetic and reduction, absolute)", G->A / fx_lsb(G));
     if (G->R > 0)
@@ -386,8 +388,8 @@ static void provenance(pf_buf *b, const fx_gen *G)
               G->exact ? "exact: below 1 LSB of the output for every input"
                        : "fast: within max(2^-10 |f(x)|, 4 LSB) for every input");
     wrap_text(b, "Arithmetic:",
-              G->arith_text[0] ? G->arith_text
-              : G->W == 16 ? "integers only (no floating point, no <math.h>); every rounding to nearest, ties up (the "
+              G->alt_arith[0] ? G->alt_arith :
+              G->W == 16 ? "integers only (no floating point, no <math.h>); every rounding to nearest, ties up (the "
                            "rounding multiply-high's rule; the error bound needs only half an lsb per rounding); "
                            "bit-identical under any compiler flags"
                          : "integers only (no floating point, no <math.h>); every rounding to nearest, ties to even; "
@@ -420,6 +422,7 @@ char *fx_emit(const fx_gen *G, size_t *len)
         pf_buf bwa = {0}, bwc = {0};
         if (G->bw16) {
             const char *cond = "#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)\n";
+            if (G->bw16 == 1) /* 2: the function wrote its own */
             pf_printf(&bwa,
                       "/* AVX-512 has a 16-bit per-element shift (vpsrlvw) and a leading-zero count\n"
                       "   (vplzcntd), AVX2 neither: on a CPU with x86-64-v4 the array form runs this\n"

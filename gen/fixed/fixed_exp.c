@@ -49,6 +49,410 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
     return xc + q;
 }
 
+/* ---- exact, 16-bit lanes: the table kernel (kind 1) ----
+ *
+ * T = (t + K0) 2^22 is held as two 16-bit words hi:lo: j = hi & 63 and
+ * k + K0 = hi >> 6 pick 2^(j/64) and the power of two, r = lo is the rest,
+ * in [0, 2^-6) at 2^-22.  2^t = 2^k 2^(j/64) 2^r: E = (2^r - 1) 2^22 from a
+ * degree-2 polynomial (two unsigned multiply-highs), then N = 2^f 2^16 =
+ * 2^16 + M with M = A[j] + round(U[j] E 2^-21 + residual of A[j]): one
+ * rounding, as D[j] carries A[j]'s own rounding error (and the 1/2 of the
+ * floor).  The result is round(N 2^-s) with s = 16 - Eo - k >= 1: the
+ * 2^(16 - s) part is exact, so it is avg(M >> (s - 1), 0) + 2^(16 - s).
+ * Every step is a 16-bit word; exp's x log2(e) to 2^-22 (the error model
+ * needs t to ~2^-19; |x| has 15 bits and t 26) is a 16x16 -> 32-bit
+ * product from a low/high pair, plus the fraction's high half and one
+ * carry.  The error bound is taken over every clamped input: the kernel is
+ * modelled here exactly as emitted (tab_eval), against 2^t in long double. */
+
+#define TAB_J 6 /* 64-entry tables: vpermi2w */
+
+/* the emitted integer pipeline for one clamped input: hi, lo, M, c, y */
+typedef struct {
+    unsigned hi, lo, m, c, y;
+} tab_val;
+
+static void tab_eval(const fx_gen *G, int base2, int64_t xc, tab_val *v)
+{
+    const fx_exp_red *X = &G->exp;
+    int Ei = G->in.exp;
+    uint16_t hi, lo;
+    if (base2) {
+        uint16_t tb = (uint16_t)((uint16_t)xc + (uint16_t)(X->tk0 << Ei));
+        hi = (uint16_t)(tb >> (Ei - TAB_J));
+        lo = (uint16_t)((uint32_t)tb << (16 - Ei + TAB_J));
+    } else {
+        uint16_t u = (uint16_t)((uint16_t)xc + (uint16_t)X->toff);
+        uint32_t pr = (uint32_t)u * (uint32_t)X->tl1;
+        uint16_t q = (uint16_t)(((uint32_t)u * (uint32_t)X->tl2 >> 16) + (uint32_t)X->tcl);
+        lo = (uint16_t)(pr + q);
+        hi = (uint16_t)((pr >> 16) + (lo < q));
+    }
+    uint16_t g = (uint16_t)(X->tc1 + ((uint32_t)lo * (uint32_t)X->tc2 >> 16));
+    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
+    unsigned j = hi & 63u;
+    uint16_t w = (uint16_t)(((uint32_t)X->tu[j] * e >> 16) + X->td[j]);
+    uint32_t ms = (uint32_t)X->ta[j] + (w >> 5);
+    uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);
+    uint16_t kb = (uint16_t)(hi >> 6);
+    uint16_t c = (uint16_t)(X->tcc - kb);
+    uint16_t y0 = (uint16_t)(((uint32_t)(c < 16 ? m >> c : 0) + 1u) >> 1);
+    uint32_t ys = (uint32_t)y0 + X->tp[kb & 31u];
+    v->hi = hi;
+    v->lo = lo;
+    v->m = m;
+    v->c = c;
+    v->y = ys < 65535u ? ys : 65535u;
+}
+
+static long double pow2l(long double t) { return exp2l(t); }
+
+/* 0: the kernel is set up and bounded (G->exp.t*); -2: not this type pair */
+static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
+{
+    fx_exp_red *X = &G->exp;
+    int Ei = G->in.exp, Eo = G->out.exp;
+    if (!G->exact || G->in.storage_bits != 16 || !G->in.is_signed || G->out.storage_bits != 16 || G->out.is_signed ||
+        Ei < (base2 ? TAB_J : TAB_J + 1) || Ei > 15)
+        return -2;
+    long double l2e = 1.4426950408889634073599246810018921L;
+    /* tables: 2^(j/64) from MPFR */
+    mpfr_t a, b;
+    mpfr_init2(a, 256);
+    mpfr_init2(b, 256);
+    for (int j = 0; j < 64; j++) {
+        mpfr_set_si(a, j, MPFR_RNDN);
+        mpfr_div_2ui(a, a, TAB_J, MPFR_RNDN);
+        mpfr_exp2(a, a, MPFR_RNDN);                  /* T1 */
+        X->tu[j] = (uint16_t)scaled_int(a, 15, MPFR_RNDN);
+        mpfr_sub_ui(b, a, 1, MPFR_RNDN);
+        mpfr_mul_2ui(b, b, 16, MPFR_RNDN);           /* (T1 - 1) 2^16 */
+        int64_t A = scaled_int(b, 0, MPFR_RNDN);
+        X->ta[j] = (uint16_t)A;
+        mpfr_sub_si(b, b, (long)A, MPFR_RNDN);       /* residual in [-1/2, 1/2] */
+        mpfr_add_d(b, b, 0.5, MPFR_RNDN);
+        X->td[j] = (uint16_t)scaled_int(b, 5, MPFR_RNDN);
+    }
+    mpfr_clear(b);
+    /* 2^r - 1 on [0, 2^-6]: minimax (absolute), p(0) = 1 */
+    fit_problem pb;
+    memset(&pb, 0, sizeof pb);
+    pb.g = g_exp2;
+    pb.a = 0;
+    pb.b = (fit_real)1 / 64;
+    pb.order = 2;
+    pb.errkind = FIT_ABS;
+    pb.ncon = 1;
+    pb.con[0].kind = FIT_CON_VALUE;
+    pb.con[0].t = 0;
+    fit_poly fp;
+    if (fit_minimax(&pb, &fp, err, errlen) != 0) {
+        mpfr_clear(a);
+        return -2;
+    }
+    X->tc1 = (int64_t)llroundl(ldexpl((long double)fp.c[1], 16));
+    X->tc2 = (int64_t)llroundl(ldexpl((long double)fp.c[2], 10));
+    if (X->tc1 + X->tc2 > 65535) {
+        mpfr_clear(a);
+        return -2;
+    }
+    /* the reduction */
+    /* inputs clamp to [xlo, xtop]: from xsat up the result saturates, as
+       it does at xsat itself (see below), so no separate select */
+    int64_t xlo = X->xlo, xhi = X->xhi, xtop = X->sat ? X->xsat : xhi;
+    if (base2) {
+        X->tk0 = X->k0; /* prepare16's: x + K0 2^Ei in a uint16_t */
+    } else {
+        mpfr_set_ui(a, 1, MPFR_RNDN);
+        mpfr_exp(a, a, MPFR_RNDN);
+        mpfr_log2(a, a, MPFR_RNDN);
+        mpfr_mul_2si(a, a, 22 - Ei, MPFR_RNDN); /* L */
+        int64_t Lf = scaled_int(a, 16, MPFR_RNDN);
+        X->tl1 = Lf >> 16;
+        X->tl2 = Lf & 0xffff;
+        if (X->tl1 > 65535) {
+            mpfr_clear(a);
+            return -2;
+        }
+        /* u = x + off in [0, 65535]; off such that off Lq - 1/2 is just
+           below a multiple of 2^22: the low word's constant Cl then keeps
+           q + Cl in 16 bits and the middle bits of the constant are 0 */
+        int found = 0;
+        for (int64_t off = -xlo; off <= 65535 - xtop && !found; off++) {
+            long double c = (long double)off * (long double)Lf / 65536.0L - 0.5L; /* off Lq - 1/2 */
+            int64_t K0 = (int64_t)ceill(c / 0x1p22L);
+            long double cl = (long double)K0 * 0x1p22L - c;
+            int64_t Cl = (int64_t)llroundl(cl);
+            if (Cl >= 0 && Cl <= 65536 - X->tl2) {
+                X->toff = off;
+                X->tk0 = K0;
+                X->tcl = Cl;
+                found = 1;
+            }
+        }
+        if (!found) {
+            mpfr_clear(a);
+            return -2;
+        }
+    }
+    mpfr_clear(a);
+    /* k + K0 over the clamped inputs: the power-of-two table and s */
+    X->tcc = 15 - Eo + X->tk0;
+    memset(X->tp, 0, sizeof X->tp);
+    int64_t kbmin = INT64_MAX, kbmax = INT64_MIN;
+    tab_val v;
+    for (int64_t x = xlo; x <= xtop; x++) {
+        tab_eval(G, base2, x, &v);
+        int64_t kb = v.hi >> 6;
+        kbmin = kb < kbmin ? kb : kbmin;
+        kbmax = kb > kbmax ? kb : kbmax;
+    }
+    /* s >= 1 up to xhi; s = 0 (k + K0 = tcc + 1) only where the result
+       saturates: P = 65535 there, and the saturating add gives 65535
+       whatever avg(M >> c, 0) is (c wraps: its shift gives 0) */
+    int64_t kbhi = INT64_MIN;
+    for (int64_t x = xlo; x <= xhi; x++) {
+        tab_eval(G, base2, x, &v);
+        kbhi = (int64_t)(v.hi >> 6) > kbhi ? (int64_t)(v.hi >> 6) : kbhi;
+    }
+    if (kbmax - kbmin >= 32 || kbhi > X->tcc || kbmax > X->tcc + 1 || X->tcc - kbmin > 31)
+        return -2;
+    for (int64_t kb = kbmin; kb <= kbmax; kb++) {
+        int64_t s = X->tcc - kb + 1;
+        X->tp[kb & 31] = (uint16_t)(s < 1 ? 65535 : s <= 16 ? 1 << (16 - s) : s == 17 ? 1 : 0);
+    }
+    X->klo = kbmin - X->tk0;
+    X->khi = kbhi - X->tk0;
+    if (X->sat) { /* xsat: f(x) >= the max, and so must the result be */
+        tab_eval(G, base2, xtop, &v);
+        if (v.y != 65535)
+            return -2;
+    }
+    /* the bound: every clamped input, the pre-rounding value (2^16 + M) 2^-s
+       against f(x) 2^Eo; with the kernel's and the reduction's parts */
+    double worst = 0, kern = 0, red = 0, poly = 0;
+    for (int64_t x = xlo; x <= xhi; x++) {
+        tab_eval(G, base2, x, &v);
+        long double t = base2 ? ldexpl((long double)x, -Ei) : (long double)x * l2e * ldexpl(1, -Ei);
+        long double yt = pow2l(t + Eo);
+        long double yp = ldexpl(65536.0L + v.m, -(int)(v.c + 1));
+        double e = (double)fabsl(yp - yt);
+        worst = e > worst ? e : worst;
+        long double T = (t + X->tk0) * 0x1p22L, Tc = (long double)v.hi * 65536 + v.lo;
+        double dr = (double)fabsl(Tc - T);
+        red = dr > red ? dr : red;
+        long double mt = (pow2l(ldexpl((long double)((v.hi & 63u) * 65536u + v.lo), -22)) - 1) * 65536;
+        double dk = (double)fabsl((long double)v.m - mt);
+        kern = dk > kern ? dk : kern;
+    }
+    for (uint32_t r = 0; r < 65536; r++) {
+        uint16_t g = (uint16_t)(X->tc1 + (r * (uint32_t)X->tc2 >> 16));
+        uint16_t e = (uint16_t)(r * g >> 16);
+        double d = (double)fabsl((long double)e - (pow2l(ldexpl((long double)r, -22)) - 1) * 0x1p22L);
+        poly = d > poly ? d : poly;
+    }
+    X->terr = worst * (1 + 1e-9) + 1e-9; /* long double's own error: far below */
+    X->tkern = kern;
+    X->tred = red;
+    X->tpoly = poly;
+    G->dred = ldexp(red, -22);
+    return 0;
+}
+
+static void tab_texts(fx_gen *G, int base2)
+{
+    const fx_exp_red *X = &G->exp;
+    int Ei = G->in.exp, Eo = G->out.exp;
+    int smin = (int)(X->tcc - (X->khi + X->tk0)) + 1, smax = (int)(X->tcc - (X->klo + X->tk0)) + 1;
+    long long xtop = (long long)(X->sat ? X->xsat : X->xhi);
+    if (base2)
+        snprintf(G->red_text, sizeof G->red_text,
+                 "t = x; T = (t + %lld) 2^22 = hi 2^16 + lo from the stored integer biased by %lld 2^%d (exact): "
+                 "j = hi & 63, k + %lld = hi >> 6, r = lo 2^-22 in [0, 2^-6), t = k + j/64 + r; inputs clamped to "
+                 "[%lld, %lld] (stored)%s",
+                 (long long)X->tk0, (long long)X->tk0, Ei, (long long)X->tk0, (long long)X->xlo, xtop,
+                 X->sat ? ", the last one saturating" : "");
+    else
+        snprintf(G->red_text, sizeof G->red_text,
+                 "t = x log2(e); T = (t + %lld) 2^22 = hi 2^16 + lo in two 16-bit words: u = x + %lld (a uint16_t), "
+                 "T = u L1 + floor(u L2 2^-16) + %lld with L = log2(e) 2^%d = L1 + L2 2^-16, L1 = %lld, L2 = %lld "
+                 "(MPFR, rounded to 2^-16), u L1 from a low/high product pair and the low word's carry into hi by an "
+                 "unsigned compare; j = hi & 63, k + %lld = hi >> 6, r = lo 2^-22 in [0, 2^-6); inputs clamped to "
+                 "[%lld, %lld] (stored)%s; |error of T| <= %.3f 2^-22 (every clamped input)",
+                 (long long)X->tk0, (long long)X->toff, (long long)X->tcl, 22 - Ei, (long long)X->tl1,
+                 (long long)X->tl2, (long long)X->tk0, (long long)X->xlo, xtop,
+                 X->sat ? ", the last one saturating" : "", X->tred);
+    snprintf(G->alt_domain, sizeof G->alt_domain,
+             "2^r - 1 on r in [0, 2^-6]; 2^(j/64) for j in [0, 63] from tables (2^t = 2^k 2^(j/64) 2^r)");
+    snprintf(G->alt_order, sizeof G->alt_order,
+             "2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and three 64-entry tables of 2^(j/64); "
+             "uint16_t words: 16-bit lanes");
+    snprintf(G->alt_method, sizeof G->alt_method,
+             "minimax absolute error of 2^r on [0, 2^-6] (nlopt SLSQP, epigraph form), c1 and c2 rounded to nearest "
+             "at 2^-16 and 2^-10 (their multiply-highs' lsbs); tables rounded to nearest from MPFR (256 bits): "
+             "A[j] = (2^(j/64) - 1) 2^16, U[j] = 2^(j/64) 2^15, D[j] = (A[j]'s residual + 1/2) 2^5");
+    snprintf(G->alt_con, sizeof G->alt_con, "p(0) = 1 (2^r - 1 has no constant term; exact at r = 0)");
+    snprintf(G->alt_formats, sizeof G->alt_formats,
+             "r uint16_t at 2^-22; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^22 (floors; c1 = %lld, c2 = %lld); "
+             "M = A[j] + ((pmulhuw(U[j], E) + D[j]) >> 5), saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of "
+             "the sum, D carrying A's); result round((2^16 + M) 2^-s), s = %d - k in [%d, %d], as avg(M >> (s - 1), 0) "
+             "(pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the saturating add gives the max "
+             "there, at the clamped top input)",
+             (long long)X->tc1, (long long)X->tc2, 16 - Eo, smin, smax);
+    snprintf(G->alt_poly, sizeof G->alt_poly,
+             "E within %.3f of (2^r - 1) 2^22 for every r (polynomial and floors, all 2^16 r); M within %.4f of "
+             "(2^f - 1) 2^16 for every input's (j, r)",
+             X->tpoly, X->tkern);
+    snprintf(G->wide_text, sizeof G->wide_text,
+             "16-bit words throughout%s; lookups (vpermi2w, vpermw) and the per-element shift (vpsrlvw) in "
+             "16-bit lanes by AVX-512BW intrinsics (x86-64-v4); other clones, scalar form: the same steps in "
+             "plain C",
+             base2 ? "" : ", x log2(e) to 2^-22 (the bound needs ~2^-19) a 16x16 -> 32-bit product (pmullw, "
+                          "pmulhuw) plus a carry");
+    snprintf(G->alt_arith, sizeof G->alt_arith,
+             "integers only (no floating point, no <math.h>); the steps before the result floor (unsigned "
+             "multiply-highs, shifts: in the bound), the result is rounded once to nearest, ties up (pavgw); "
+             "bit-identical under any compiler flags");
+    snprintf(G->bound_note, sizeof G->bound_note,
+             "taken over every clamped input from the emitted integer steps (the table kernel)");
+}
+
+/* 32-bit entries: GCC vectorizes the plain-C lookups then (AVX2: 2.5 times
+   the speed of 16-bit entries); the AVX-512 loop narrows them once */
+static void tab_table(pf_buf *b, const char *name, const char *suf, const uint16_t *v, int n, const char *what)
+{
+    pf_printf(b, "/* %s */\nstatic const uint32_t %s_%s[%d] = {", what, name, suf, n);
+    for (int i = 0; i < n; i++)
+        pf_printf(b, "%s%u,", i % 8 ? " " : "\n    ", v[i]);
+    pf_put(b, "\n};\n");
+}
+
+/* signed 16-bit literal of the same bits, for _mm512_set1_epi16 */
+static long long s16(int64_t v) { return (long long)(int16_t)(uint16_t)v; }
+
+static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int base2)
+{
+    const fx_exp_red *X = &G->exp;
+    int Ei = G->in.exp;
+    const char *N = G->name;
+    char w[64];
+    const char *kl = NULL, *kh = NULL;
+    if (X->loclamp) {
+        snprintf(w, sizeof w, "%lld: lowest input computed (clamp)", (long long)X->xlo);
+        kl = fx_k16(G, X->xlo, w);
+    }
+    if (X->sat) {
+        snprintf(w, sizeof w, "%lld: highest input computed (clamp: saturates)", (long long)X->xsat);
+        kh = fx_k16(G, X->xsat, w);
+    }
+    if (!kl && !kh)
+        fx_k16(G, 0, "0 (unused: no clamp)");
+    tab_table(tabs, N, "ta", X->ta, 64, "A[j] = round((2^(j/64) - 1) 2^16) (MPFR)");
+    tab_table(tabs, N, "tu", X->tu, 64, "U[j] = round(2^(j/64) 2^15) (MPFR)");
+    tab_table(tabs, N, "td", X->td, 64, "D[j] = round(((2^(j/64) - 1) 2^16 - A[j] + 1/2) 2^5), in [0, 32] (MPFR)");
+    tab_table(tabs, N, "tp", X->tp, 32, "P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range)");
+    pf_put(body, "    int16_t xc = (int16_t)x;\n");
+    if (kl)
+        pf_printf(body, "    xc = (int16_t)(xc < %s ? %s : xc); /* %lld */\n", kl, kl, (long long)X->xlo);
+    if (kh)
+        pf_printf(body, "    xc = (int16_t)(xc > %s ? %s : xc); /* %lld */\n", kh, kh, (long long)X->xsat);
+    else
+        pf_put(body, "    (void)k;\n");
+    pf_printf(body, "    /* T = (t + %lld) 2^22 = hi 2^16 + lo: j = hi & 63, k + %lld = hi >> 6, r = lo 2^-22 */\n",
+              (long long)X->tk0, (long long)X->tk0);
+    if (base2) {
+        pf_printf(body, "    uint16_t tb = (uint16_t)((uint16_t)xc + %lluu); /* (t + %lld) 2^%d */\n",
+                  (unsigned long long)(uint16_t)(X->tk0 << Ei), (long long)X->tk0, Ei);
+        pf_printf(body, "    uint16_t hi = (uint16_t)(tb >> %d);\n", Ei - TAB_J);
+        pf_printf(body, "    uint16_t lo = (uint16_t)((uint32_t)tb << %d);\n", 16 - Ei + TAB_J);
+    } else {
+        pf_printf(body, "    uint16_t u = (uint16_t)((uint16_t)xc + %lluu);\n", (unsigned long long)(uint16_t)X->toff);
+        pf_printf(body, "    uint32_t pr = (uint32_t)u * %lldu; /* u L1: pmullw, pmulhuw */\n", (long long)X->tl1);
+        pf_printf(body, "    uint16_t q = (uint16_t)(((uint32_t)u * %lldu >> 16) + %lldu); /* floor(u L2 2^-16) + Cl */\n",
+                  (long long)X->tl2, (long long)X->tcl);
+        pf_put(body, "    uint16_t lo = (uint16_t)(pr + q);\n");
+        pf_put(body, "    uint16_t hi = (uint16_t)((pr >> 16) + (lo < q)); /* the carry */\n");
+    }
+    pf_printf(body, "    /* E = (2^r - 1) 2^22 = r (c1 + c2 r), floors */\n"
+                    "    uint16_t g = (uint16_t)(%lldu + ((uint32_t)lo * %lldu >> 16));\n"
+                    "    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);\n",
+              (long long)X->tc1, (long long)X->tc2);
+    pf_printf(body, "    /* M = (2^(j/64 + r) - 1) 2^16, one rounding: A[j] + round(U[j] E 2^-21 + A[j]'s residual) */\n"
+                    "    unsigned j = hi & 63u;\n"
+                    "    uint16_t v = (uint16_t)(((uint32_t)%s_tu[j] * e >> 16) + %s_td[j]);\n"
+                    "    uint32_t ms = (uint32_t)%s_ta[j] + (uint32_t)(v >> 5);\n"
+                    "    uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);\n",
+              N, N, N);
+    pf_printf(body, "    /* round((2^16 + M) 2^-s), s = c + 1 >= 1: avg(M >> c, 0) + 2^(16 - s) */\n"
+                    "    uint16_t kb = (uint16_t)(hi >> 6);\n"
+                    "    uint16_t c = (uint16_t)(%lld - kb); /* in [0, %lld]; wraps at s = 0 (saturated by P) */\n"
+                    "    uint16_t y0 = (uint16_t)(((uint32_t)(c < 16 ? m >> c : 0) + 1u) >> 1); /* pavgw; vpsrlvw's 0 */\n"
+                    "    uint32_t ys = (uint32_t)y0 + %s_tp[kb & 31u];\n"
+                    "    uint16_t r16 = (uint16_t)(ys < 65535u ? ys : 65535u);\n",
+              (long long)X->tcc, (long long)(X->tcc - (X->klo + X->tk0)), N);
+    pf_printf(body, "    return (%s)r16;", G->ot);
+    /* the AVX-512BW loop: the same steps on 32 lanes */
+    const char *cond = "#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)\n";
+    pf_printf(kern,
+              "\n\n/* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn\n"
+              "   the table lookups into vpermi2w/vpermw (nor the carry into a mask): the\n"
+              "   array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the\n"
+              "   rest of the array and the other clones use the scalar steps above.  The\n"
+              "   same values (pfmathgen sweeps the array form on its machine against the\n"
+              "   scalar one). */\n%s#include <immintrin.h>\n"
+              "extern %s %s(%s x); /* the scalar form, for the last n %% 32 */\n"
+              "/* 32 table entries as 16-bit words, for vpermw/vpermi2w */\n"
+              "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16(const uint32_t *t)\n{\n"
+              "    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),\n"
+              "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n"
+              "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
+              "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
+              cond, G->ot, N, G->it, N, N, G->it, G->ot);
+    pf_printf(kern, "    const __m512i ta0 = %s_w16(%s_ta), ta1 = %s_w16(%s_ta + 32);\n"
+                    "    const __m512i tu0 = %s_w16(%s_tu), tu1 = %s_w16(%s_tu + 32);\n"
+                    "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
+                    "    const __m512i tp = %s_w16(%s_tp);\n",
+              N, N, N, N, N, N, N, N, N, N, N, N, N, N);
+    pf_printf(kern, "    const __m512i c1 = _mm512_set1_epi16(%lld), c2 = _mm512_set1_epi16(%lld), cc = _mm512_set1_epi16(%lld);\n",
+              s16(X->tc1), s16(X->tc2), s16(X->tcc));
+    if (base2)
+        pf_printf(kern, "    const __m512i bias = _mm512_set1_epi16(%lld);\n", s16(X->tk0 << Ei));
+    else
+        pf_printf(kern, "    const __m512i off = _mm512_set1_epi16(%lld), l1 = _mm512_set1_epi16(%lld), l2 = _mm512_set1_epi16(%lld),\n"
+                        "                  cl = _mm512_set1_epi16(%lld), one = _mm512_set1_epi16(1);\n",
+                  s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl));
+    if (X->loclamp)
+        pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
+    if (X->sat)
+        pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
+    pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
+                 "        __m512i xc = _mm512_loadu_si512(x + i);\n");
+    if (X->loclamp)
+        pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
+    if (X->sat)
+        pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
+    if (base2)
+        pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                        "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
+                  Ei - TAB_J, 16 - Ei + TAB_J);
+    else
+        pf_put(kern, "        __m512i u = _mm512_add_epi16(xc, off);\n"
+                     "        __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);\n"
+                     "        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);\n"
+                     "        __m512i hi = _mm512_mulhi_epu16(u, l1);\n"
+                     "        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);\n");
+    pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n"
+                 "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
+                 "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
+                 "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
+                 "        __m512i kb = _mm512_srli_epi16(hi, 6);\n"
+                 "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
+                 "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
+    pf_printf(kern, "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+              N);
+    G->bw16 = 2;
+}
+
 /* 16-bit lanes (see fx_exp16.c.in): int16_t inputs with 1..15 fraction
    bits, and (t + K0) 2^Ei inside a uint16_t */
 static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
@@ -86,6 +490,13 @@ static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
     }
     G->exp.ft = Ei;
     G->dred = dt;
+    /* exact: the table kernel where the type pair allows it (else the
+       Horner form, which the exact bound sends to 32-bit words) */
+    if (G->exact && prep_tab(G, base2, err, errlen) == 0) {
+        G->kind = 1;
+        tab_texts(G, base2);
+        return 0;
+    }
     if (base2)
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x; k = floor(t), f = t - k (exact, the low bits of the stored integer, in a uint16_t biased "
@@ -105,6 +516,10 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
 {
     const char *fn = base2 ? "exp2" : "exp";
     int Ei = G->in.exp, Eo = G->out.exp;
+    G->kind = 0;
+    G->alt_domain[0] = G->alt_order[0] = G->alt_method[0] = G->alt_con[0] = G->alt_formats[0] = G->alt_poly[0] = 0;
+    G->alt_arith[0] = 0;
+    G->bound_note[0] = 0;
     if (Ei > 62 || Ei < -62 || Eo > 62 || Eo < -62) {
         snprintf(err, errlen, "%s: exponents beyond +-62 are not supported", fn);
         return -1;
@@ -198,10 +613,25 @@ static double df_of(const fx_gen *G) { return G->exp.ft > G->W - 1 ? 1.5 * ldexp
 
 static void budget16(fx_gen *G)
 {
+    if (G->kind == 1) {
+        /* the table kernel: no Horner polynomial on [0, 1] (the fit the
+           pipeline makes is not used); the pre-rounding error over every
+           clamped input, of which the polynomial's share is E's error
+           (2^-22 units) moved to the result: at most 2^(16 - s) 2 2^-22 E
+           lsb, s >= 1 */
+        G->R = 0;
+        G->A = G->exp.terr * fx_lsb(G);
+        G->poly_err = G->exp.tpoly * 0x1p-6 * fx_lsb(G);
+        return;
+    }
     /* P >= 1: its absolute Horner error is a relative one; t's error
        moves 2^t by ln2 dt relatively; the final rounding is the 1/2 lsb */
     G->A = 0;
     G->R = G->poly_err + G->arith + M_LN2 * G->exp.dt16 * (1 + 1e-6);
+    /* fast: the final scaling truncates (emit16), |floor(z) - z| < 1 lsb:
+       the 1/2 lsb of the model's final rounding plus 1/2 lsb here */
+    if (!G->exact)
+        G->A = 0.5 * fx_lsb(G);
     int smin = G->Ep - G->out.exp - (int)G->exp.khi;
     if (smin < -14)
         G->R = INFINITY;
@@ -223,15 +653,40 @@ static void budget(fx_gen *G)
 
 static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
-    pf_buf body = {0}, horner = {0};
+    pf_buf body = {0}, horner = {0}, tabs = {0}, kern = {0};
+    if (G->kind == 1) {
+        emit_tab(G, &body, &tabs, &kern, base2);
+        char xsat[32], xlo[32];
+        snprintf(xsat, sizeof xsat, "%lld", (long long)G->exp.xsat);
+        snprintf(xlo, sizeof xlo, "%lld", (long long)G->exp.xlo);
+        const char *kv[] = {"FUNC", base2 ? "exp2" : "exp", "TDEF", base2 ? "x" : "x log2(e)", "XSAT", xsat, "XLO", xlo,
+                            "NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, "TABLES", tabs.s,
+                            "KERNEL", kern.s, NULL};
+        pf_subst(b, pf_template("fx_exp16.c"), kv);
+        free(body.s);
+        free(tabs.s);
+        free(kern.s);
+        return;
+    }
     int Ei = G->in.exp, Ep = G->Ep;
     int64_t omax = pf_type_max_stored(&G->out);
     int full = G->in.storage_bits == 16 && G->in.is_signed;
+    /* the clamp's bounds come from k[]: GCC cannot bound xc then, and keeps
+       x B's rounding multiply-high in 16 bits (pmulhrsw, see the array
+       form) without a product by 1 */
     pf_put(&body, "    int16_t xc = (int16_t)x;");
-    if (G->exp.loclamp)
-        pf_printf(&body, "\n    xc = (int16_t)(xc < %lld ? %lld : xc);", (long long)G->exp.xlo, (long long)G->exp.xlo);
-    if (G->exp.sat)
-        pf_printf(&body, "\n    xc = (int16_t)(xc > %lld ? %lld : xc);", (long long)G->exp.xhi, (long long)G->exp.xhi);
+    if (G->exp.loclamp) {
+        char w[64];
+        snprintf(w, sizeof w, "%lld: lowest input computed (clamp)", (long long)G->exp.xlo);
+        const char *kl = fx_k16(G, G->exp.xlo, w);
+        pf_printf(&body, "\n    xc = (int16_t)(xc < %s ? %s : xc); /* %lld */", kl, kl, (long long)G->exp.xlo);
+    }
+    if (G->exp.sat) {
+        char w[64];
+        snprintf(w, sizeof w, "%lld: highest input computed (clamp)", (long long)G->exp.xhi);
+        const char *kh = fx_k16(G, G->exp.xhi, w);
+        pf_printf(&body, "\n    xc = (int16_t)(xc > %s ? %s : xc); /* %lld */", kh, kh, (long long)G->exp.xhi);
+    }
     pf_put(&body, "\n");
     long long bias = (long long)(G->exp.k0 << Ei);
     if (base2) {
@@ -239,7 +694,7 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
                   (long long)G->exp.k0, Ei);
     } else {
         const char *kb = fx_k16(G, G->exp.b16, "B = round((log2(e) - 1) 2^15)");
-        const char *xo = G->exp.loclamp || G->exp.sat || !full ? fx_opaque16(G, "xc") : "xc";
+        const char *xo = !G->exp.loclamp && !G->exp.sat && !full ? fx_opaque16(G, "xc") : "xc";
         pf_printf(&body, "    uint16_t tb = (uint16_t)((uint16_t)xc + (uint16_t)pf_fx_mulhrs(%s, %s) + %lldu); /* (t + %lld) 2^%d, t = x log2(e) */\n",
                   xo, kb, bias, (long long)G->exp.k0, Ei);
     }
@@ -259,14 +714,37 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
     int smin = Ep - G->out.exp - (int)G->exp.khi, smax = Ep - G->out.exp - (int)G->exp.klo;
     char sexpr[64];
     snprintf(sexpr, sizeof sexpr, "%lld - (int32_t)kb", (long long)(Ep - G->out.exp + G->exp.k0));
-    pf_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
-    fx_emit_vshift16(G, &body, "(uint16_t)p", 32767, sexpr, smin, smax, omax);
-    snprintf(G->wide_text, sizeof G->wide_text,
-             G->bw16 ? "the scaling by 2^k is a per-element shift: in 16-bit lanes where AVX-512BW has one "
-                       "(vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element shift); the same values, "
-                       "the error model does not need the wider lanes"
-                     : "the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit "
-                       "per-element shift; the error model does not need them)");
+    if (!G->exact && smin >= -1 && smax + 1 <= 31) {
+        /* fast: truncated, r = floor(P 2^-s) = floor(2a 2^-c), c = s + 1 >= 0
+           (2a < 2^16 as p < 2^15); the bound (budget16) counts the floor as
+           1 lsb.  Four vector instructions where rounding and the s = -1
+           case took nine.  bw = 1: one 16-bit shift (vpsrlvw; c >= 16 gives
+           0 there and in C); bw = 0: 32-bit lanes, the same values */
+        long long K = (long long)(Ep - G->out.exp + 1 + G->exp.k0);
+        pf_printf(&body, "    /* P 2^k truncated to the output: floor(2P 2^-c), c = s + 1 = %d - k in [%d, %d] */\n",
+                  Ep - G->out.exp + 1, smin + 1, smax + 1);
+        pf_printf(&body, "    uint16_t c = (uint16_t)(%lld - kb);\n    uint16_t r16;\n", K);
+        pf_printf(&body, "    if (bw)\n        r16 = (uint16_t)((uint16_t)((uint16_t)p << 1) >> %s);\n",
+                  smax + 1 > 16 ? "(c < 16 ? c : 16)" : "c");
+        pf_put(&body, "    else\n        r16 = (uint16_t)(((uint32_t)(uint16_t)p << 1) >> c);\n");
+        if (65534 > omax)
+            pf_printf(&body, "    r16 = (uint16_t)(r16 < %lluu ? r16 : %lluu);\n", (unsigned long long)omax,
+                      (unsigned long long)omax);
+        G->bw16 = 1;
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 "the scaling by 2^k is a per-element shift, truncating (floor: 1 lsb in the bound): in 16-bit "
+                 "lanes where AVX-512BW has one (vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element "
+                 "shift); the same values, the error model does not need the wider lanes");
+    } else {
+        pf_printf(&body, "    /* P 2^k rounded once to the output, s = %d - k in [%d, %d] */\n", Ep - G->out.exp, smin, smax);
+        fx_emit_vshift16(G, &body, "(uint16_t)p", 32767, sexpr, smin, smax, omax);
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 G->bw16 ? "the scaling by 2^k is a per-element shift: in 16-bit lanes where AVX-512BW has one "
+                           "(vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element shift); the same values, "
+                           "the error model does not need the wider lanes"
+                         : "the scaling by 2^k is a per-element shift, done in 32-bit lanes (AVX2 has no 16-bit "
+                           "per-element shift; the error model does not need them)");
+    }
     /* overflow saturates through a mask: GCC 12 widens the whole loop to
        32-bit lanes for a select between a 16-bit comparison and r */
     if (G->exp.sat)
@@ -278,7 +756,7 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
     snprintf(xsat, sizeof xsat, "%lld", (long long)G->exp.xsat);
     snprintf(xlo, sizeof xlo, "%lld", (long long)G->exp.xlo);
     const char *kv[] = {"FUNC", base2 ? "exp2" : "exp", "TDEF", base2 ? "x" : "x log2(e)", "XSAT", xsat, "XLO", xlo,
-                        "NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};
+                        "NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, "TABLES", "", "KERNEL", "", NULL};
     pf_subst(b, pf_template("fx_exp16.c"), kv);
     free(body.s);
     free(horner.s);

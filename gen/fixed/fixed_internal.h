@@ -66,6 +66,13 @@ typedef struct {               /* exp, exp2 */
     int sat;                   /* inputs from xsat up exist: saturate them */
     int64_t b16;               /* 16-bit lanes, exp: round((log2(e) - 1) 2^15) */
     double dt16;               /* 16-bit lanes: |error of t| */
+    /* 16-bit lanes, exact: the table kernel (kind 1, fixed_exp.c) */
+    int64_t toff, tl1, tl2, tcl; /* exp: u = x + toff, T = u tl1 + (u tl2 >> 16) + tcl */
+    int64_t tk0;               /* T = (t + tk0) 2^22 */
+    int64_t tc1, tc2;          /* 2^r - 1 = r (tc1 2^-16 + tc2 2^-10 r) */
+    int64_t tcc;               /* c = s - 1 = tcc - (hi >> 6) */
+    uint16_t ta[64], tu[64], td[64], tp[32];
+    double terr, tkern, tred, tpoly; /* pre-rounding error (lsb); kernel (2^-16), t (2^-22), E (2^-22) */
 } fx_exp_red;
 
 typedef struct {               /* log, log2 */
@@ -155,10 +162,15 @@ struct fx_gen {
     int64_t kval[64];
     char kwhat[64][64];
     char wide_text[400];       /* steps in wider lanes, and why (provenance) */
-    char fmt_text[800];        /* if set: the Formats line of a function's own fit16 */
+    int bw16;                  /* the kernel has an AVX-512BW form (fx_emit_vshift16); 2: the
+                                  function's emit() wrote its own <name>_array_bw (fx_emit
+                                  only adds the run-time dispatch to it) */
+    /* a scheme without the Horner polynomial on the family's domain (exp's
+       table kernel): when set, these replace the provenance lines built
+       from the fit (Domain, Order, Method, Constraints, Formats, Polynomial) */
+    char alt_domain[200], alt_order[300], alt_method[400], alt_con[200], alt_formats[1400], alt_poly[400];
+    char alt_arith[400];       /* ... and the Arithmetic line */
     char order_text[120];      /* if set: the Order line's word text (a function's own fit16) */
-    char arith_text[300];      /* if set: the Arithmetic line (a function's own fit16) */
-    int bw16;                  /* the kernel has an AVX-512BW form (fx_emit_vshift16) */
 
     /* sweep of the compiled code */
     int swept, exhaustive;

@@ -161,7 +161,7 @@ static int prepare3(fx_gen *G, double Xmax, int is_cos, double L)
     G->kind = 3;
     G->wt = "int32_t";
     snprintf(G->order_text, sizeof G->order_text, "int32_t words: 32-bit lanes, 32x32 -> 32-bit products");
-    snprintf(G->arith_text, sizeof G->arith_text,
+    snprintf(G->alt_arith, sizeof G->alt_arith,
              "integers only (no floating point, no <math.h>); roundings to nearest with ties up, and floors where "
              "the error bound counts a whole lsb; bit-identical under any compiler flags");
     G->trig.two = M_PI / 2 * e1 > L / 16;
@@ -216,7 +216,7 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
     double du1 = Xmax * 0x1p-63 + (G->W == 32 ? 0x1p-31 : 0);
     G->fmax = 1;
     snprintf(G->sat_text, sizeof G->sat_text, "none needed unless the output cannot hold +-1");
-    G->fmt_text[0] = G->order_text[0] = G->arith_text[0] = 0;
+    G->alt_formats[0] = G->order_text[0] = G->alt_arith[0] = 0;
     if (G->W == 16) {
         /* kind 2 (every step in 16-bit lanes) needs x in an int16_t; its
            phase w has 14 fraction bits, so its error alone is about a
@@ -361,18 +361,18 @@ static int fit16(fx_gen *G, char *err, size_t errlen)
     G->dP = 0;
     fit_measure(pb, &G->poly);
     G->poly_err = G->poly.max_err;
-    size_t o = (size_t)snprintf(G->fmt_text, sizeof G->fmt_text,
+    size_t o = (size_t)snprintf(G->alt_formats, sizeof G->alt_formats,
                                 "|v| in 2^-30 units split as vh 2^-15 + vl 2^-30; s = v^2 to 2^-30, then s16 = s "
                                 "rounded to 2^-16 (|error| <= %.3e); c1 ufixed<32,31>, c3 fixed<15,15>",
                                 ds);
-    for (int j = 2; j <= m && o < sizeof G->fmt_text; j++)
-        o += (size_t)snprintf(G->fmt_text + o, sizeof G->fmt_text - o, ", c%d fixed<15,%d>", G->deg[j], E[j]);
-    if (m >= 2 && o < sizeof G->fmt_text)
-        o += (size_t)snprintf(G->fmt_text + o, sizeof G->fmt_text - o,
+    for (int j = 2; j <= m && o < sizeof G->alt_formats; j++)
+        o += (size_t)snprintf(G->alt_formats + o, sizeof G->alt_formats - o, ", c%d fixed<15,%d>", G->deg[j], E[j]);
+    if (m >= 2 && o < sizeof G->alt_formats)
+        o += (size_t)snprintf(G->alt_formats + o, sizeof G->alt_formats - o,
                               " (T's Horner in s16, each step floored to its coefficient's lsb); y = s T fixed<15,%d>",
                               ey);
-    if (o < sizeof G->fmt_text)
-        snprintf(G->fmt_text + o, sizeof G->fmt_text - o,
+    if (o < sizeof G->alt_formats)
+        snprintf(G->alt_formats + o, sizeof G->alt_formats - o,
                  "; P = c1 + c3 s16 + s16 y summed at 2^-31 in a uint32_t, every product of two operands whose "
                  "bounds keep it below 2^31 (signed) or 2^32 (unsigned): no wrap; P16 = round(P 2^16) (its 2^-17 folded into c1); |v| P = vh P16 + "
                  "floor(vl P16 2^-15) at 2^-31 in a uint32_t; arithmetic error <= %.3e",

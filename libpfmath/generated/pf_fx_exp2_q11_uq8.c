@@ -4,27 +4,40 @@
  * Regenerate:  pfmathgen --func exp2 --type 'fixed<15,11>' --out-type 'ufixed<16,8>' -o libpfmath/generated/pf_fx_exp2_q11_uq8.c
  * Input:       int16_t x, value x 2^-11 in [-16, 15.9995117]
  * Output:      uint16_t y, value y 2^-8 in [0, 255.996094]
- * Reduction:   t = x; k = floor(t), f = t - k (exact, the low bits of the stored integer); 
- *              inputs clamped to [-20481, 16383] (stored), saturating from there
- * Domain:      2^t on t in [0, 1]
- * Order:       4 (5 fixed-point coefficients; int32_t words, 64-bit products)
- * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), 
- *              coefficients rounded to the lsb of their Horner step (bit-width analysis) by 
- *              pin-and-refit
- * Constraints: p(0) = 1 (exact powers of 2 at integer t)
- * Formats:     x unsigned fixed<31,31>; p4 fixed<23,29>, p3 fixed<26,29>, p2 fixed<28,29>, p1 
- *              fixed<30,29>, p0 fixed<30,29>; product shifts 31; p0 saturated to its format
- * Polynomial:  max relative error 2.896e-06 (2^-18.40) at t = 0.891201984
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.902e-06 |f(x)| (polynomial 
- *              2.896e-06, arithmetic and reduction 5.588e-09, relative) = 0.6902 LSB at most 
- *              (|f| <= 255.996)
- * Sweep:       max 0.6755 LSB at x = 16162 (7.89160156), mean 0.1561 LSB; exhaustive: all 65536 
+ * Reduction:   t = x; T = (t + 11) 2^22 = hi 2^16 + lo from the stored integer biased by 11 
+ *              2^11 (exact): j = hi & 63, k + 11 = hi >> 6, r = lo 2^-22 in [0, 2^-6), t = k + 
+ *              j/64 + r; inputs clamped to [-20481, 16384] (stored), the last one saturating
+ * Domain:      2^r - 1 on r in [0, 2^-6]; 2^(j/64) for j in [0, 63] from tables (2^t = 2^k 
+ *              2^(j/64) 2^r)
+ * Order:       2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and three 64-entry 
+ *              tables of 2^(j/64); uint16_t words: 16-bit lanes
+ * Lanes:       16-bit words throughout; lookups (vpermi2w, vpermw) and the per-element shift 
+ *              (vpsrlvw) in 16-bit lanes by AVX-512BW intrinsics (x86-64-v4); other clones, 
+ *              scalar form: the same steps in plain C
+ * Method:      minimax absolute error of 2^r on [0, 2^-6] (nlopt SLSQP, epigraph form), c1 and 
+ *              c2 rounded to nearest at 2^-16 and 2^-10 (their multiply-highs' lsbs); tables 
+ *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/64) - 1) 2^16, U[j] = 
+ *              2^(j/64) 2^15, D[j] = (A[j]'s residual + 1/2) 2^5
+ * Constraints: p(0) = 1 (2^r - 1 has no constant term; exact at r = 0)
+ * Formats:     r uint16_t at 2^-22; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^22 
+ *              (floors; c1 = 45426, c2 = 247); M = A[j] + ((pmulhuw(U[j], E) + D[j]) >> 5), 
+ *              saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of the sum, D carrying 
+ *              A's); result round((2^16 + M) 2^-s), s = 8 - k in [1, 19], as avg(M >> (s - 1), 
+ *              0) (pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the 
+ *              saturating add gives the max there, at the clamped top input)
+ * Polynomial:  E within 1.923 of (2^r - 1) 2^22 for every r (polynomial and floors, all 2^16 
+ *              r); M within 0.5336 of (2^f - 1) 2^16 for every input's (j, r)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2668 LSB (polynomial 0.0301, 
+ *              arithmetic and reduction 0.2367) = 0.7668 LSB; taken over every clamped input 
+ *              from the emitted integer steps (the table kernel)
+ * Sweep:       max 0.7542 LSB at x = 15232 (7.4375), mean 0.1583 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  x >= 16384 (stored; 8) overflows: 65535 (the max); results beyond the output 
  *              range give its max or min
  * Target:      exact: below 1 LSB of the output for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              to even; bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating point, no <math.h>); the steps before the result 
+ *              floor (unsigned multiply-highs, shifts: in the bound), the result is rounded 
+ *              once to nearest, ties up (pavgw); bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -132,53 +145,245 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
     return n + (int)x;
 }
 
-/* exp2 in fixed point.  t = x splits into k = floor(t) and
-   f = t - k in [0, 1); exp2(x) = 2^k 2^f with 2^f = P(f) in [1, 2), and
-   the result is P(f) shifted by k, rounded once.  Inputs at or above
-   16384 (stored) saturate to the output's max; inputs below -20481
-   (stored), where the result is below 1/4 lsb, compute as -20481 (0). */
-PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x)
+/* 16-bit lane helpers (gen/templates/fx_common16.h.in), for functions whose
+   input and output are stored in at most 16 bits: the array loop then runs
+   in 16-bit lanes, twice as many as 32-bit ones.  The roundings here are to
+   nearest with ties up (the error bounds need only |error| <= 1/2 lsb).
+   GCC and Clang define >> of a negative int as arithmetic (floor), which
+   the first forms use because GCC recognizes exactly them as pmulhrsw and
+   16-bit shifts; other compilers get the same values from unsigned shifts. */
+
+/* The kernels' bw argument: 1 selects the forms of a step that only
+   AVX-512 runs in 16-bit lanes (a per-element 16-bit shift, a leading-zero
+   count), 0 the forms every x86-64 level vectorizes; both give the same
+   values.  Builds for a baseline with AVX-512BW and CD use the first. */
+#if defined(__GNUC__) && defined(__AVX512BW__) && defined(__AVX512CD__)
+#define PF_FX_BW_NATIVE 1
+#else
+#define PF_FX_BW_NATIVE 0
+#endif
+
+/* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
+   Never called with a = b = -32768 (whose result, 2^15, does not fit). */
+PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 {
-    int64_t xc = x;
-    xc = xc < -20481 ? -20481 : xc;
-    xc = xc > 16383 ? 16383 : xc;
-    uint64_t tb = (uint64_t)(xc + INT64_C(24576)); /* (t + 12) 2^11 */
-    uint64_t kb = tb >> 11; /* k + 12 */
-    uint64_t fr = tb & UINT64_C(0x7ff); /* f 2^11 */
-    int32_t f = (int32_t)(fr << 20); /* f in [0, 1), 2^-31 units */
-    /* P(f) ~ 2^f: Horner, one rounding per step, in the formats of the
-       bit-width analysis (see Formats above) */
-    int32_t p = 7208402; /* c4 = 0.013426695019 */
-    p = (int32_t)pf_fx_mul32(p, f, 31) + 28047457; /* c3 = 0.0522424597293 */
-    p = (int32_t)pf_fx_mul32(p, f, 31) + 129536326; /* c2 = 0.241280209273 */
-    p = (int32_t)pf_fx_mul32(p, f, 31) + 372075618; /* c1 = 0.693044845015 */
-    p = (int32_t)pf_fx_mul32(p, f, 31) + 536870912; /* c0 = 1 */
-    p = p > 1073741823 ? 1073741823 : p < -1073741824 ? -1073741824 : p; /* p0 saturated to fixed<30,29> */
-    /* P 2^k, rounded once to unsigned fixed<16,8>, saturated */
-    uint64_t sh = 33 - kb;
-    uint64_t r = pf_fx_rne_u((uint64_t)(p > 0 ? p : 0), sh);
-    r = r < 65535u ? r : 65535u;
-    return (uint16_t)(x >= 16384 ? 65535u : r);
+#if defined(__GNUC__)
+    return (int16_t)(((((int32_t)a * b) >> 14) + 1) >> 1);
+#else
+    uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
+    return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
 }
+
+/* |x| as a uint16_t (|-32768| = 32768): GCC turns abs() of a promoted
+   int16_t into one pabsw, where x < 0 ? -x : x becomes a compare and a
+   select */
+PF_FX_INLINE uint16_t pf_fx_abs16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (uint16_t)__builtin_abs(x);
+#else
+    return (uint16_t)(x < 0 ? -(int32_t)x : x);
+#endif
+}
+
+/* -1 (all ones) for x < 0, else 0: one arithmetic shift (psraw) */
+PF_FX_INLINE int16_t pf_fx_sgn16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (int16_t)(x >> 15);
+#else
+    return (int16_t)-(x < 0);
+#endif
+}
+
+/* round(z / 2^d), ties up, 1 <= d <= 15: floor(z / 2^d) plus the bit below
+   (no intermediate beyond 16 bits, which would cost 32-bit lanes) */
+PF_FX_INLINE int16_t pf_fx_rsh16(int16_t z, int d)
+{
+#if defined(__GNUC__)
+    return (int16_t)((z >> d) + ((z >> (d - 1)) & 1));
+#else
+    uint32_t u = (uint32_t)((int32_t)z + 32768) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(16-d) */
+    return (int16_t)((int32_t)((u + 1) >> 1) - (32768 >> d));
+#endif
+}
+
+/* round(z / 2^d), ties up, for a 32-bit z (a full 16x16-bit product),
+   1 <= d <= 30 */
+PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
+{
+#if defined(__GNUC__)
+    return ((z >> (d - 1)) + 1) >> 1;
+#else
+    uint32_t u = ((uint32_t)z + 0x80000000u) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(32-d) */
+    return (int32_t)((u + 1) >> 1) - (int32_t)(0x80000000u >> d);
+#endif
+}
+
+/* exp2 in fixed point, in 16-bit lanes.  t = x splits into
+   k = floor(t) and f = t - k in [0, 1); exp2(x) = 2^k 2^f with
+   2^f = P(f) in [1, 2), and the result is P(f) 2^k, rounded once.  Inputs
+   at or above 16384 (stored) saturate to the output's max; inputs below
+   -20481 (stored), where the result is below 1/4 lsb, compute as -20481 (0).
+   k[] holds the constants; bw picks the form of the per-element
+   shift (1: 16-bit lanes, for AVX-512BW's vpsrlvw; 0: 32-bit lanes), which
+   give the same values. */
+/* A[j] = round((2^(j/64) - 1) 2^16) (MPFR) */
+static const uint32_t pf_exp2_q11_uq8_ta[64] = {
+    0, 714, 1435, 2164, 2902, 3647, 4400, 5162,
+    5932, 6710, 7496, 8292, 9096, 9908, 10730, 11560,
+    12400, 13249, 14106, 14974, 15850, 16737, 17633, 18538,
+    19454, 20379, 21315, 22260, 23216, 24183, 25160, 26148,
+    27146, 28155, 29175, 30207, 31249, 32303, 33369, 34446,
+    35534, 36635, 37747, 38872, 40009, 41158, 42320, 43495,
+    44682, 45882, 47095, 48322, 49562, 50815, 52082, 53363,
+    54658, 55966, 57289, 58627, 59979, 61346, 62727, 64124,
+};
+/* U[j] = round(2^(j/64) 2^15) (MPFR) */
+static const uint32_t pf_exp2_q11_uq8_tu[64] = {
+    32768, 33125, 33486, 33850, 34219, 34591, 34968, 35349,
+    35734, 36123, 36516, 36914, 37316, 37722, 38133, 38548,
+    38968, 39392, 39821, 40255, 40693, 41136, 41584, 42037,
+    42495, 42958, 43425, 43898, 44376, 44859, 45348, 45842,
+    46341, 46846, 47356, 47871, 48393, 48920, 49452, 49991,
+    50535, 51085, 51642, 52204, 52773, 53347, 53928, 54515,
+    55109, 55709, 56316, 56929, 57549, 58176, 58809, 59449,
+    60097, 60751, 61413, 62081, 62757, 63441, 64132, 64830,
+};
+/* D[j] = round(((2^(j/64) - 1) 2^16 - A[j] + 1/2) 2^5), in [0, 32] (MPFR) */
+static const uint32_t pf_exp2_q11_uq8_td[64] = {
+    16, 4, 18, 26, 1, 8, 20, 5,
+    0, 8, 30, 7, 5, 27, 12, 27,
+    12, 1, 30, 6, 29, 4, 1, 21,
+    6, 21, 7, 30, 32, 14, 13, 1,
+    13, 20, 28, 7, 25, 22, 3, 3,
+    27, 13, 31, 21, 19, 29, 23, 7,
+    15, 21, 30, 13, 8, 18, 18, 11,
+    2, 28, 30, 14, 15, 8, 29, 19,
+};
+/* P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range) */
+static const uint32_t pf_exp2_q11_uq8_tp[32] = {
+    0, 0, 1, 1, 2, 4, 8, 16,
+    32, 64, 128, 256, 512, 1024, 2048, 4096,
+    8192, 16384, 32768, 65535, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0,
+};
+PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x, const int16_t *k, int bw)
+{
+    (void)bw; /* unused where no step has an AVX-512BW form */
+    int16_t xc = (int16_t)x;
+    xc = (int16_t)(xc < k[0] ? k[0] : xc); /* -20481 */
+    xc = (int16_t)(xc > k[1] ? k[1] : xc); /* 16384 */
+    /* T = (t + 11) 2^22 = hi 2^16 + lo: j = hi & 63, k + 11 = hi >> 6, r = lo 2^-22 */
+    uint16_t tb = (uint16_t)((uint16_t)xc + 22528u); /* (t + 11) 2^11 */
+    uint16_t hi = (uint16_t)(tb >> 5);
+    uint16_t lo = (uint16_t)((uint32_t)tb << 11);
+    /* E = (2^r - 1) 2^22 = r (c1 + c2 r), floors */
+    uint16_t g = (uint16_t)(45426u + ((uint32_t)lo * 247u >> 16));
+    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
+    /* M = (2^(j/64 + r) - 1) 2^16, one rounding: A[j] + round(U[j] E 2^-21 + A[j]'s residual) */
+    unsigned j = hi & 63u;
+    uint16_t v = (uint16_t)(((uint32_t)pf_exp2_q11_uq8_tu[j] * e >> 16) + pf_exp2_q11_uq8_td[j]);
+    uint32_t ms = (uint32_t)pf_exp2_q11_uq8_ta[j] + (uint32_t)(v >> 5);
+    uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);
+    /* round((2^16 + M) 2^-s), s = c + 1 >= 1: avg(M >> c, 0) + 2^(16 - s) */
+    uint16_t kb = (uint16_t)(hi >> 6);
+    uint16_t c = (uint16_t)(18 - kb); /* in [0, 18]; wraps at s = 0 (saturated by P) */
+    uint16_t y0 = (uint16_t)(((uint32_t)(c < 16 ? m >> c : 0) + 1u) >> 1); /* pavgw; vpsrlvw's 0 */
+    uint32_t ys = (uint32_t)y0 + pf_exp2_q11_uq8_tp[kb & 31u];
+    uint16_t r16 = (uint16_t)(ys < 65535u ? ys : 65535u);
+    return (uint16_t)r16;
+}
+
+/* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn
+   the table lookups into vpermi2w/vpermw (nor the carry into a mask): the
+   array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the
+   rest of the array and the other clones use the scalar steps above.  The
+   same values (pfmathgen sweeps the array form on its machine against the
+   scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#include <immintrin.h>
+extern uint16_t pf_exp2_q11_uq8(int16_t x); /* the scalar form, for the last n % 32 */
+/* 32 table entries as 16-bit words, for vpermw/vpermi2w */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_w16(const uint32_t *t)
+{
+    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
+                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
+}
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    const __m512i ta0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ta), ta1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ta + 32);
+    const __m512i tu0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tu), tu1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tu + 32);
+    const __m512i td0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_td), td1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_td + 32);
+    const __m512i tp = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tp);
+    const __m512i c1 = _mm512_set1_epi16(-20110), c2 = _mm512_set1_epi16(247), cc = _mm512_set1_epi16(18);
+    const __m512i bias = _mm512_set1_epi16(22528);
+    const __m512i xlo = _mm512_set1_epi16(-20481);
+    const __m512i xhi = _mm512_set1_epi16(16384);
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        __m512i xc = _mm512_loadu_si512(x + i);
+        xc = _mm512_max_epi16(xc, xlo);
+        xc = _mm512_min_epi16(xc, xhi);
+        __m512i tb = _mm512_add_epi16(xc, bias);
+        __m512i hi = _mm512_srli_epi16(tb, 5), lo = _mm512_slli_epi16(tb, 11);
+        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
+        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);
+        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));
+        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));
+        __m512i kb = _mm512_srli_epi16(hi, 6);
+        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
+        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
+        _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_exp2_q11_uq8(x[i]);
+}
+#endif
+
+/* The constants the body reads (Horner coefficients and multipliers) */
+static const int16_t pf_exp2_q11_uq8_k[2] = {
+    -20481, /* k[0]: -20481: lowest input computed (clamp) */
+    16384,  /* k[1]: 16384: highest input computed (clamp: saturates) */
+};
 
 uint16_t pf_exp2_q11_uq8(int16_t x)
 {
-    return pf_exp2_q11_uq8_inline(x);
+    return pf_exp2_q11_uq8_inline(x, pf_exp2_q11_uq8_k, 0);
 }
 
-/* Array form: the body above is branch-free integer code, so this loop
-   vectorizes.  Built for a baseline without AVX2, it gets one clone per
-   x86-64 level and the widest the CPU has is picked at load time (when the
-   baseline already has AVX2, e.g. -march=native, the loop is simply built
-   for it).  Every clone computes the same bits: integers only. */
+/* Array form in 16-bit lanes.  The constants come through a pointer that an
+   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
+   into shifts and adds before it looks for the rounding multiply-high, and
+   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
+   can bound both operands and prove the product fits; the body therefore
+   feeds pf_fx_mulhrs only loads, constants, its own results and values
+   multiplied by a constant of k[] (a pmullw).  The values are the same, so
+   the scalar and array forms compute the same bits.  Built for a baseline
+   without AVX2, it gets one clone per x86-64 level and the widest the CPU
+   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
+   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
+   clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_exp2_q11_uq8_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+    if (__builtin_cpu_supports("x86-64-v4")) {
+        pf_exp2_q11_uq8_array_bw(x, y, n);
+        return;
+    }
+#endif
+    const int16_t *k = pf_exp2_q11_uq8_k;
+#if defined(__GNUC__)
+    __asm__("" : "+r"(k));
+#endif
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_exp2_q11_uq8_inline(x[i]);
+        y[i] = pf_exp2_q11_uq8_inline(x[i], k, PF_FX_BW_NATIVE);
 }

@@ -9,9 +9,10 @@
  *              from there
  * Domain:      2^t on t in [0, 1]
  * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       the scaling by 2^k is a per-element shift: in 16-bit lanes where AVX-512BW has 
- *              one (vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit per-element shift); the 
- *              same values, the error model does not need the wider lanes
+ * Lanes:       the scaling by 2^k is a per-element shift, truncating (floor: 1 lsb in the 
+ *              bound): in 16-bit lanes where AVX-512BW has one (vpsrlvw), else in 32-bit lanes 
+ *              (AVX2 has no 16-bit per-element shift); the same values, the error model does 
+ *              not need the wider lanes
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
  *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
  * Constraints: p(0) = 1 (exact powers of 2 at integer t)
@@ -22,9 +23,9 @@
  *              Horner rounding error <= 9.154e-05
  * Polynomial:  max relative error 1.678e-04 (2^-12.54) at t = 1
  * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.594e-04 |f(x)| (polynomial 
- *              1.678e-04, arithmetic and reduction 9.154e-05, relative) = 17.4992 LSB at most 
- *              (|f| <= 255.996)
- * Sweep:       max 11.4916 LSB at x = 16381 (7.99853516), mean 0.2688 LSB; exhaustive: all 
+ *              1.678e-04, arithmetic and reduction 9.154e-05, relative) + 0.5000 LSB 
+ *              (arithmetic and reduction, absolute) = 17.9992 LSB at most (|f| <= 255.996)
+ * Sweep:       max 11.4916 LSB at x = 16381 (7.99853516), mean 0.3690 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  x >= 16384 (stored; 8) overflows: 65535 (the max); results beyond the output 
  *              range give its max or min
@@ -227,44 +228,38 @@ PF_FX_INLINE uint16_t pf_exp2_q11_uq8_fast_inline(int16_t x, const int16_t *k, i
 {
     (void)bw; /* unused where no step has an AVX-512BW form */
     int16_t xc = (int16_t)x;
-    xc = (int16_t)(xc < -20481 ? -20481 : xc);
-    xc = (int16_t)(xc > 16383 ? 16383 : xc);
+    xc = (int16_t)(xc < k[0] ? k[0] : xc); /* -20481 */
+    xc = (int16_t)(xc > k[1] ? k[1] : xc); /* 16383 */
     uint16_t tb = (uint16_t)((uint16_t)xc + 22528u); /* (t + 11) 2^11 */
     uint16_t kb = (uint16_t)(tb >> 11); /* k + 11 */
-    int16_t f = (int16_t)((tb & 0x7ff) * k[0]); /* f in [0, 1), 2^-15 units (a product: see the array form) */
+    int16_t f = (int16_t)((tb & 0x7ff) * k[2]); /* f in [0, 1), 2^-15 units (a product: see the array form) */
     /* P(f) ~ 2^f: Horner in 16-bit words, one rounding per step */
-    int16_t f1 = pf_fx_mulhrs(f, k[1]); /* f rounded to 2^-14 */
-    int16_t p = k[2]; /* c3 = 0.0763244628906 */
-    p = (int16_t)(pf_fx_mulhrs(p, f) + k[3]); /* c2 = 0.228302001953, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, f) + k[4]); /* c1 = 0.695037841797, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, f1) + k[5]); /* c0 = 1, 2^-14 units */
-    /* P 2^k rounded once to the output, s = 6 - k in [-1, 17] */
+    int16_t f1 = pf_fx_mulhrs(f, k[3]); /* f rounded to 2^-14 */
+    int16_t p = k[4]; /* c3 = 0.0763244628906 */
+    p = (int16_t)(pf_fx_mulhrs(p, f) + k[5]); /* c2 = 0.228302001953, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, f) + k[6]); /* c1 = 0.695037841797, 2^-15 units */
+    p = (int16_t)(pf_fx_mulhrs(p, f1) + k[7]); /* c0 = 1, 2^-14 units */
+    /* P 2^k truncated to the output: floor(2P 2^-c), c = s + 1 = 7 - k in [0, 18] */
+    uint16_t c = (uint16_t)(18 - kb);
     uint16_t r16;
-    if (bw) { /* a = (uint16_t)p */
-        int16_t s = (int16_t)((17 - (int32_t)kb) ^ k[6]);
-        uint16_t sc = (uint16_t)(s < 0 ? 0 : s > 16 ? 16 : s); /* s in [0, 16] */
-        uint16_t h = (uint16_t)((uint16_t)((uint16_t)p << 1) >> sc); /* floor(a 2^(1 - s)) */
-        r16 = (uint16_t)((uint16_t)(h + 1u) >> 1); /* round(a 2^-s), ties up */
-        r16 = (uint16_t)(s < 0 ? h : r16); /* s = -1: 2a */
-    } else {
-        uint32_t sv = (uint32_t)(17 - (int32_t)kb + 1);
-        uint32_t h = ((uint32_t)(uint16_t)p << 2) >> sv;
-        uint32_t r = (h >> 1) + (h & 1u);
-        r16 = (uint16_t)(r < 65535u ? r : 65535u);
-    }
+    if (bw)
+        r16 = (uint16_t)((uint16_t)((uint16_t)p << 1) >> (c < 16 ? c : 16));
+    else
+        r16 = (uint16_t)(((uint32_t)(uint16_t)p << 1) >> c);
     uint16_t m = (uint16_t)(0u - (uint16_t)(x >= 16384)); /* all ones from the first overflowing input */
     return (uint16_t)((r16 & ~m) | (65535u & m));
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_exp2_q11_uq8_fast_k[7] = {
-    16,     /* k[0]: 2^4: f to 2^-15 units */
-    16384,  /* k[1]: 2^14: f rounded to 14 fraction bits */
-    2501,   /* k[2]: c3 = 0.0763244628906 */
-    7481,   /* k[3]: c2 = 0.228302001953 */
-    22775,  /* k[4]: c1 = 0.695037841797 */
-    16384,  /* k[5]: c0 = 1 */
-    0,      /* k[6]: 0 (hides s's range from GCC, see the kernel) */
+static const int16_t pf_exp2_q11_uq8_fast_k[8] = {
+    -20481, /* k[0]: -20481: lowest input computed (clamp) */
+    16383,  /* k[1]: 16383: highest input computed (clamp) */
+    16,     /* k[2]: 2^4: f to 2^-15 units */
+    16384,  /* k[3]: 2^14: f rounded to 14 fraction bits */
+    2501,   /* k[4]: c3 = 0.0763244628906 */
+    7481,   /* k[5]: c2 = 0.228302001953 */
+    22775,  /* k[6]: c1 = 0.695037841797 */
+    16384,  /* k[7]: c0 = 1 */
 };
 
 uint16_t pf_exp2_q11_uq8_fast(int16_t x)
