@@ -71,6 +71,9 @@ typedef struct {               /* log, log2 */
     int ez32;                  /* 16-bit lanes, wide sum: e K + P at 2^-Ez32 in 32 bits */
     int64_t kz32;              /* round(ln2 2^Ez32) or 2^Ez32 */
     int wide;                  /* 16-bit lanes: 1 if the sum is in 32-bit lanes */
+    int split;                 /* 16-bit lanes, log: e ln2 = e H 2^-Eo + e L 2^-Ep (two words) */
+    int64_t hs, ls;            /* H = round(ln2 2^Eo), L = round(ln2 2^Ep) - H 2^(Ep-Eo) */
+    double dsplit;             /* |error of e ln2| in the split form: emax |ln2 2^Ep - round(.)| 2^-Ep */
 } fx_log_red;
 
 typedef struct {               /* sqrt */
@@ -149,6 +152,12 @@ struct fx_gen {
     char kwhat[64][64];
     char wide_text[400];       /* steps in wider lanes, and why (provenance) */
     int bw16;                  /* the kernel has an AVX-512BW form (fx_emit_vshift16) */
+    /* a kernel without a polynomial (sqrt in 16-bit lanes from IEEE sqrtf):
+       its provenance says what it computes instead of the fit's lines */
+    int nopoly;
+    char nopoly_text[400];     /* the "Order:" line */
+    char bound_text[400];      /* the "Error bound:" line */
+    char arith_text[400];      /* the "Arithmetic:" line, when set */
 
     /* sweep of the compiled code */
     int swept, exhaustive;
