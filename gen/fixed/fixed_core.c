@@ -327,8 +327,11 @@ static void provenance(pf_buf *b, const fx_gen *G)
     wrap_text(b, "Reduction:", G->red_text);
     snprintf(tmp, sizeof tmp, "%s on t in [%g, %g]%s", F->target_text, F->a, F->b,
              F->parity == FIT_PARITY_ODD ? " (odd polynomial t P(t^2))" : "");
-    wrap_text(b, "Domain:", tmp);
-    if (G->W == 16)
+    if (!G->nopoly)
+        wrap_text(b, "Domain:", tmp);
+    if (G->nopoly)
+        snprintf(tmp, sizeof tmp, "%s", G->nopoly_text);
+    else if (G->W == 16)
         snprintf(tmp, sizeof tmp, "%d (%d fixed-point coefficients; int16_t words: 16-bit lanes)", G->order,
                  G->m + 1);
     else
@@ -337,13 +340,15 @@ static void provenance(pf_buf *b, const fx_gen *G)
     wrap_text(b, "Order:", tmp);
     if (G->W == 16)
         wrap_text(b, "Lanes:", G->wide_text[0] ? G->wide_text : "every step in 16-bit lanes");
-    wrap_text(b, "Method:", method_text(G));
-    wrap_text(b, "Constraints:", F->con_zero ? F->con_text : "none");
-    fx_formats_text(G, tmp, sizeof tmp);
-    wrap_text(b, "Formats:", tmp);
-    snprintf(tmp, sizeof tmp, "max %s error %.3e (2^%.2f) at t = %.9g", G->errkind == FIT_REL ? "relative" : "absolute",
-             G->poly_err, log2(G->poly_err), G->poly.max_err_at);
-    wrap_text(b, "Polynomial:", tmp);
+    if (!G->nopoly) {
+        wrap_text(b, "Method:", method_text(G));
+        wrap_text(b, "Constraints:", F->con_zero ? F->con_text : "none");
+        fx_formats_text(G, tmp, sizeof tmp);
+        wrap_text(b, "Formats:", tmp);
+        snprintf(tmp, sizeof tmp, "max %s error %.3e (2^%.2f) at t = %.9g", G->errkind == FIT_REL ? "relative" : "absolute",
+                 G->poly_err, log2(G->poly_err), G->poly.max_err_at);
+        wrap_text(b, "Polynomial:", tmp);
+    }
     char abs_text[96];
     snprintf(abs_text, sizeof abs_text, " + %.4f LSB (arithmetic and reduction, absolute)", G->A / fx_lsb(G));
     if (G->R > 0)
@@ -360,6 +365,8 @@ static void provenance(pf_buf *b, const fx_gen *G)
         size_t o = strlen(tmp);
         snprintf(tmp + o, sizeof tmp - o, "; %s", G->bound_note);
     }
+    if (G->nopoly)
+        snprintf(tmp, sizeof tmp, "%s", G->bound_text);
     wrap_text(b, "Error bound:", tmp);
     if (G->swept) {
         snprintf(tmp, sizeof tmp, "max %.4f LSB at x = %lld (%.9g), mean %.4f LSB; %s", G->sw.max_err,
@@ -377,7 +384,8 @@ static void provenance(pf_buf *b, const fx_gen *G)
               G->exact ? "exact: below 1 LSB of the output for every input"
                        : "fast: within max(2^-10 |f(x)|, 4 LSB) for every input");
     wrap_text(b, "Arithmetic:",
-              G->W == 16 ? "integers only (no floating point, no <math.h>); every rounding to nearest, ties up (the "
+              G->arith_text[0] ? G->arith_text
+              : G->W == 16 ? "integers only (no floating point, no <math.h>); every rounding to nearest, ties up (the "
                            "rounding multiply-high's rule; the error bound needs only half an lsb per rounding); "
                            "bit-identical under any compiler flags"
                          : "integers only (no floating point, no <math.h>); every rounding to nearest, ties to even; "
