@@ -216,6 +216,17 @@ static void budget(fx_gen *G)
     G->A = G->poly_err + G->arith + G->dred + (d < 0 ? ldexp(0.5, -(int)G->log.ez) : 0);
 }
 
+/* round(v / 2^d), ties up, 1 <= d <= 15, as the rounding multiply-high by
+   2^(15-d): floor(v 2^(15-d) 2^-15 + 1/2), pf_fx_rsh16's value in one
+   pmulhrsw instead of two shifts, an and and an add */
+static const char *rsh_mulhrs(fx_gen *G, char *buf, size_t n, const char *v, int d)
+{
+    char w[96];
+    snprintf(w, sizeof w, "2^%d: round(z / 2^%d), a rounding multiply-high", 15 - d, d);
+    snprintf(buf, n, "pf_fx_mulhrs(%s, %s)", v, fx_k16(G, (int64_t)1 << (15 - d), w));
+    return buf;
+}
+
 static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
     pf_buf body = {0}, horner = {0};
@@ -269,7 +280,8 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
         pf_printf(&body, "    int16_t el = (int16_t)((n - %d) * %s); /* e L, exact */\n", Ei, fx_k16(G, G->log.ls, w));
         pf_printf(&body, "    /* e ln2 + P = e H 2^-%d + (e L + P) 2^-%d (but for e's share of round(ln2 2^%d)), "
                          "rounded once */\n", Eo, Ep, Ep);
-        pf_printf(&body, "    int16_t r = (int16_t)(eh + pf_fx_rsh16((int16_t)(el + p), %d));\n", d);
+        char rs[96];
+        pf_printf(&body, "    int16_t r = (int16_t)(eh + %s);\n", rsh_mulhrs(G, rs, sizeof rs, "(int16_t)(el + p)", d));
         pf_put(&body, "    int16_t rc = (int16_t)");
         rc[0] = 0;
         if (mn > -32768)
@@ -283,7 +295,7 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
     } else {
         char pa[96];
         if (Ep > a)
-            snprintf(pa, sizeof pa, "pf_fx_rsh16(p, %d)", Ep - a);
+            rsh_mulhrs(G, pa, sizeof pa, "p", Ep - a);
         else
             snprintf(pa, sizeof pa, "p");
         char w[64];
@@ -294,10 +306,12 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
         else
             pf_printf(&body, "    int16_t z = (int16_t)(pf_fx_mulhrs(ea, %s) + %s); /* e ln2 + P at 2^-%d */\n",
                       fx_k16(G, G->log.k15, "round(ln2 2^15)"), pa, a);
-        if (a > Eo)
-            pf_printf(&body, "    int16_t r = pf_fx_rsh16(z, %d); /* rounded once to the output */\n", a - Eo);
-        else
+        if (a > Eo) {
+            char rs[96];
+            pf_printf(&body, "    int16_t r = %s; /* rounded once to the output */\n", rsh_mulhrs(G, rs, sizeof rs, "z", a - Eo));
+        } else {
             pf_put(&body, "    int16_t r = z;\n");
+        }
         pf_put(&body, "    int16_t rc = (int16_t)");
         rc[0] = 0;
         if (mn > -32768)

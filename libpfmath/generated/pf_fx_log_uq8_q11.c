@@ -260,13 +260,13 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_inline(uint16_t x, const int16_t *k, int bw)
     int16_t eh = (int16_t)((n - 8) * k[5]); /* e H, exact */
     int16_t el = (int16_t)((n - 8) * k[6]); /* e L, exact */
     /* e ln2 + P = e H 2^-11 + (e L + P) 2^-15 (but for e's share of round(ln2 2^15)), rounded once */
-    int16_t r = (int16_t)(eh + pf_fx_rsh16((int16_t)(el + p), 4));
+    int16_t r = (int16_t)(eh + pf_fx_mulhrs((int16_t)(el + p), k[7]));
     int16_t rc = (int16_t)r;
     return (int16_t)(x <= 0 ? -32768 : rc);
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_log_uq8_q11_k[7] = {
+static const int16_t pf_log_uq8_q11_k[8] = {
     1,      /* k[0]: 1 (see the array form) */
     -1923,  /* k[1]: c4 = -0.0586853027344 */
     7391,   /* k[2]: c3 = 0.225555419922 */
@@ -274,6 +274,7 @@ static const int16_t pf_log_uq8_q11_k[7] = {
     32684,  /* k[4]: c1 = 0.997436523438 */
     1420,   /* k[5]: H = round(ln2 2^11): e ln2 at 2^-11, high word */
     -7,     /* k[6]: L = round(ln2 2^15) - H 2^4: low word at 2^-15 */
+    2048,   /* k[7]: 2^11: round(z / 2^4), a rounding multiply-high */
 };
 
 int16_t pf_log_uq8_q11(uint16_t x)
