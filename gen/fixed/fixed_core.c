@@ -734,7 +734,23 @@ void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int
     pf_put(b, ";");
 }
 
+static void norm16_un(fx_gen *G, pf_buf *b, int nb);
+
 void fx_emit_norm16(fx_gen *G, pf_buf *b, int nb)
+{
+    norm16_un(G, b, nb);
+    pf_put(b, "    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */");
+}
+
+void fx_emit_norm16_tq(fx_gen *G, pf_buf *b, int nb)
+{
+    norm16_un(G, b, nb);
+    pf_printf(b, "    int16_t tq = (int16_t)(u & (uint16_t)%s); /* the bits below the leading one: t in [0, 1), 2^-15 "
+                 "units, exact */",
+              fx_k16(G, 0x7fff, "0x7fff: t's mask (from k[]: hides t's range from GCC)"));
+}
+
+static void norm16_un(fx_gen *G, pf_buf *b, int nb)
 {
     /* bw = 0: u = ux 2^(16 - nb), then four (or fewer) stages shift the
        leading one up to bit 15: constant shifts and selects, 16-bit lanes.
@@ -754,7 +770,6 @@ void fx_emit_norm16(fx_gen *G, pf_buf *b, int nb)
                       1u << (16 - sh), sh, 1u << (16 - sh), sh);
     pf_put(b, "    }\n");
     G->bw16 = 1;
-    pf_put(b, "    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */");
 }
 
 void fx_emit_norm(const fx_gen *G, pf_buf *b)

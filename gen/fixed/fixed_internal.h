@@ -194,6 +194,10 @@ void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int
    bits at most) to u with bit 15 set and n = bitlen - 1, for log/sqrt
    (bw = 1: a leading-zero count; sets G->bw16) */
 void fx_emit_norm16(fx_gen *G, pf_buf *b, int nb);
+/* the same u and n, and "int16_t tq": t = u & k[i] with k[i] = 0x7fff, the
+   Horner variable itself (the opaque mask hides t's range from GCC as
+   fx_opaque16's product by 1 does, one vector instruction fewer) */
+void fx_emit_norm16_tq(fx_gen *G, pf_buf *b, int nb);
 /* 32/64-bit words: ux = x (x > 0, stored in at most 32 bits), n =
    bitlen(ux) - 1 and t = ux 2^-n - 1 in [0, 1), for log/sqrt */
 void fx_emit_norm(const fx_gen *G, pf_buf *b);

@@ -247,10 +247,8 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
                  base2 ? "" : " (e ln2 = round(e 2^a K 2^-15), K = round(ln2 2^15) from MPFR, the rounding "
                               "multiply-high)");
     pf_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
-    fx_emit_norm16(G, &body, nb);
+    fx_emit_norm16_tq(G, &body, nb);
     pf_put(&body, "\n");
-    const char *to = fx_opaque16(G, "t");
-    pf_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", to);
     pf_put(&body, "    /* P(t) ~ ");
     pf_put(&body, base2 ? "log2(1 + t)" : "log(1 + t)");
     pf_put(&body, ": Horner in 16-bit words, one rounding per step */\n");

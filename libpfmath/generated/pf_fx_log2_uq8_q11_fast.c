@@ -246,8 +246,7 @@ PF_FX_INLINE int16_t pf_log2_uq8_q11_fast_inline(uint16_t x, const int16_t *k, i
         n = (int16_t)(u < 0x8000u ? n - 1 : n);
         u = (uint16_t)(u < 0x8000u ? u << 1 : u);
     }
-    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
+    int16_t tq = (int16_t)(u & (uint16_t)k[0]); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
     /* P(t) ~ log2(1 + t): Horner in 16-bit words, one rounding per step */
     int16_t tq1 = pf_fx_mulhrs(tq, k[1]); /* tq rounded to 2^-14 */
     int16_t p = k[2]; /* c3 = 0.165649414062 */
@@ -263,7 +262,7 @@ PF_FX_INLINE int16_t pf_log2_uq8_q11_fast_inline(uint16_t x, const int16_t *k, i
 
 /* The constants the body reads (Horner coefficients and multipliers) */
 static const int16_t pf_log2_uq8_q11_fast_k[7] = {
-    1,      /* k[0]: 1 (see the array form) */
+    32767,  /* k[0]: 0x7fff: t's mask (from k[]: hides t's range from GCC) */
     16384,  /* k[1]: 2^14: tq rounded to 14 fraction bits */
     5428,   /* k[2]: c3 = 0.165649414062 */
     -19263, /* k[3]: c2 = -0.587860107422 */

@@ -248,8 +248,7 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k, in
         n = (int16_t)(u < 0x8000u ? n - 1 : n);
         u = (uint16_t)(u < 0x8000u ? u << 1 : u);
     }
-    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
+    int16_t tq = (int16_t)(u & (uint16_t)k[0]); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
     /* P(t) ~ log(1 + t): Horner in 16-bit words, one rounding per step */
     int16_t p = k[1]; /* c3 = 0.114776611328 */
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[2]); /* c2 = -0.407409667969, 2^-15 units */
@@ -264,7 +263,7 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k, in
 
 /* The constants the body reads (Horner coefficients and multipliers) */
 static const int16_t pf_log_uq8_q11_fast_k[7] = {
-    1,      /* k[0]: 1 (see the array form) */
+    32767,  /* k[0]: 0x7fff: t's mask (from k[]: hides t's range from GCC) */
     3761,   /* k[1]: c3 = 0.114776611328 */
     -13350, /* k[2]: c2 = -0.407409667969 */
     32332,  /* k[3]: c1 = 0.986694335938 */
