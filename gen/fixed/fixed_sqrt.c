@@ -47,7 +47,7 @@ static int prepare_f16(fx_gen *G, int nb, int64_t omax)
     snprintf(G->red_text, sizeof G->red_text,
              "none: y = round(sqrt(N)) with N = x 2^%d (2 Eo - Ei) an integer below 2^32; s = sqrtf(N) "
              "(N exact in a float, IEEE sqrt correctly rounded on every x86-64 level), R0 = trunc(s), "
-             "then R = R0 + (D > R0) with D = N - R0^2 exact in 32 bits; x <= 0 -> 0",
+             "then R = R0 + 1 if N > R0 (R0 + 1), exact in 32 bits, else R0; x <= 0 -> 0",
              g);
     snprintf(G->nopoly_text, sizeof G->nopoly_text,
              "none (no polynomial): one IEEE single-precision square root and an exact integer correction");
@@ -56,8 +56,7 @@ static int prepare_f16(fx_gen *G, int nb, int64_t omax)
     snprintf(G->bound_text, sizeof G->bound_text,
              "correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 (half a float ulp, s < 2^16; "
              "2^-7 for a 2-ulp approximate sqrtf) <= 1/2, so R0 = trunc(s) is round(sqrt(N)) or one below, and one "
-             "step decided by the exact D = N - R0^2 reaches it (R0 + 1 when sqrt(N) >= R0 + 1/2, i.e. D > R0; "
-             "no ties)");
+             "exact step reaches it (R0 + 1 when sqrt(N) >= R0 + 1/2, i.e. N > R0^2 + R0 in integers; no ties)");
     snprintf(G->arith_text, sizeof G->arith_text,
              "an int-to-float conversion and a multiply by 2^%d (both exact), IEEE sqrtf (correctly rounded), "
              "then 32-bit integers; the result does not depend on sqrtf's last bits, so it is bit-identical "
@@ -233,8 +232,8 @@ static void emit_f16(fx_gen *G, pf_buf *b)
     else
         pf_printf(&body, "    float s = sqrtf((float)(int32_t)xx); /* N in a float, exact; s within 2^-9 of sqrt(N) */\n");
     pf_put(&body, "    int32_t r0 = (int32_t)s; /* round(sqrt(N)) or one below, as |s - sqrt(N)| <= 1/2 */\n");
-    pf_put(&body, "    int32_t d = (int32_t)(N - (uint32_t)r0 * (uint32_t)r0); /* N - r0^2, exact: -2^17 < d < 2^18 */\n");
-    pf_put(&body, "    int32_t r = r0 + (d > r0); /* r0 + 1 when sqrt(N) >= r0 + 1/2, i.e. N > r0^2 + r0 */\n");
+    pf_put(&body, "    /* r0 + 1 when sqrt(N) >= r0 + 1/2, i.e. N > r0^2 + r0 (integers), r0 (r0 + 1) < 2^32 */\n");
+    pf_put(&body, "    int32_t r = r0 + (N > (uint32_t)r0 * ((uint32_t)r0 + 1u));\n");
     /* the largest result, round(sqrt(max N)): a clamp only when it exceeds the output's max */
     double rmax = floor(sqrt(ldexp((double)pf_type_max_stored(&G->in), g)) + 0.5);
     if (rmax > (double)omax)

@@ -6,16 +6,16 @@
  * Output:      uint16_t y, value y 2^-12 in [0, 15.9997559]
  * Reduction:   none: y = round(sqrt(N)) with N = x 2^16 (2 Eo - Ei) an integer below 2^32; s = 
  *              sqrtf(N) (N exact in a float, IEEE sqrt correctly rounded on every x86-64 
- *              level), R0 = trunc(s), then R = R0 + (D > R0) with D = N - R0^2 exact in 32 
- *              bits; x <= 0 -> 0
+ *              level), R0 = trunc(s), then R = R0 + 1 if N > R0 (R0 + 1), exact in 32 bits, 
+ *              else R0; x <= 0 -> 0
  * Order:       none (no polynomial): one IEEE single-precision square root and an exact integer 
  *              correction
  * Lanes:       32-bit lanes (float sqrt, vsqrtps; N and R0^2 need 32 bits); 16-bit loads and 
  *              stores
  * Error bound: correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 (half a 
  *              float ulp, s < 2^16; 2^-7 for a 2-ulp approximate sqrtf) <= 1/2, so R0 = 
- *              trunc(s) is round(sqrt(N)) or one below, and one step decided by the exact D = N 
- *              - R0^2 reaches it (R0 + 1 when sqrt(N) >= R0 + 1/2, i.e. D > R0; no ties)
+ *              trunc(s) is round(sqrt(N)) or one below, and one exact step reaches it (R0 + 1 
+ *              when sqrt(N) >= R0 + 1/2, i.e. N > R0^2 + R0 in integers; no ties)
  * Sweep:       max 0.5000 LSB at x = 65533 (255.988281), mean 0.2492 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  sqrt(x) for x < 0 (undefined) gives 0; results beyond the output range give its 
@@ -219,12 +219,13 @@ float sqrtf(float);
    s = sqrtf(N) < 2^16 is within half a float ulp, 2^-9, of sqrt(N); even an
    approximate vectorized sqrtf (-ffast-math: rsqrtps and a Newton step,
    within 2 ulp) is within 2^-7.  With s off by at most 1/2 (sqrt(N) is in
-   (R - 1/2, R + 1/2)), R0 = trunc(s) is R or R - 1, and the exact
-   remainder D = N - R0^2 (mod 2^32: it is below 2^18 in magnitude)
-   decides: R = R0 + 1 when
-   sqrt(N) >= R0 + 1/2, i.e. N > R0^2 + R0, i.e. D > R0 (never a tie:
-   (R0 + 1/2)^2 is not an integer).  The loop runs in 32-bit lanes (the
-   float sqrt); loads and stores are 16-bit.  x <= 0 gives 0 (N = 0). */
+   (R - 1/2, R + 1/2)), R0 = trunc(s) is R or R - 1, and one exact
+   unsigned compare decides: R = R0 + 1 when sqrt(N) >= R0 + 1/2, i.e.
+   N > R0^2 + R0 = R0 (R0 + 1) (never a tie: (R0 + 1/2)^2 is not an
+   integer; R0 (R0 + 1) < 2^32 for R0 < 2^16, and R0 = 2^16 only where the
+   result saturates, which the clamp to the output's max then does).  The
+   loop runs in 32-bit lanes (the float sqrt); loads and stores are 16-bit.
+   x <= 0 gives 0 (N = 0). */
 PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_fast_inline(uint16_t x, const int16_t *k, int bw)
 {
     (void)bw; /* no AVX-512BW form */
@@ -232,8 +233,8 @@ PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_fast_inline(uint16_t x, const int16_t *k,
     uint32_t N = xx << k[0]; /* x 2^G < 2^32, exact */
     float s = sqrtf((float)(int32_t)xx * 0x1p16f); /* N in a float, exact; s within 2^-9 of sqrt(N) */
     int32_t r0 = (int32_t)s; /* round(sqrt(N)) or one below, as |s - sqrt(N)| <= 1/2 */
-    int32_t d = (int32_t)(N - (uint32_t)r0 * (uint32_t)r0); /* N - r0^2, exact: -2^17 < d < 2^18 */
-    int32_t r = r0 + (d > r0); /* r0 + 1 when sqrt(N) >= r0 + 1/2, i.e. N > r0^2 + r0 */
+    /* r0 + 1 when sqrt(N) >= r0 + 1/2, i.e. N > r0^2 + r0 (integers), r0 (r0 + 1) < 2^32 */
+    int32_t r = r0 + (N > (uint32_t)r0 * ((uint32_t)r0 + 1u));
     return (uint16_t)r;
 }
 
