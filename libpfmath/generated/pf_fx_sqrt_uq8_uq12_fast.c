@@ -212,6 +212,8 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    does not build with __GNUC__ undefined, a build test_fixed_hash makes */
 float sqrtf(float);
 
+/* Build flags: -fno-math-errno (for vsqrtps; mk/fixedgen.mk sets it, tests/check-vectorize.sh reads this line) */
+
 /* sqrt in fixed point for 16-bit storage, without a polynomial: the result
    is R = round(sqrt(N)) with N = x 2^G (G = 2 Eo - Ei, k[0]) an integer below
    2^32.  N is exact in a float (x has at most 16 significant bits), and
