@@ -45,6 +45,11 @@ regen-fixed: $(BUILD)/pfmathgen
 	  done; \
 	done
 
+# The 16-bit sqrt takes its square root from sqrtf (gen/templates/fx_sqrtf16.c.in),
+# whose loop GCC vectorizes (vsqrtps) only without errno semantics; the same
+# bits either way (the flag changes speed; a pragma cannot, see lib-atrig.mk)
+$(BUILD)/pic/libpfmath/generated/pf_fx_sqrt_uq8_uq12.o $(BUILD)/pic/libpfmath/generated/pf_fx_sqrt_uq8_uq12_fast.o: ALL_CFLAGS += -fno-math-errno
+
 TESTS += $(BUILD)/tests/check-regen-fixed
 $(BUILD)/tests/check-regen-fixed: tests/check-regen-fixed.sh $(BUILD)/pfmathgen mk/fixedgen.mk libpfmath/functions.def mk/funcset.awk
 	@mkdir -p $(dir $@)

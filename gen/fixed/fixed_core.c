@@ -336,7 +336,8 @@ static void provenance(pf_buf *b, const fx_gen *G)
     wrap_text(b, "Reduction:", G->red_text);
     snprintf(tmp, sizeof tmp, "%s on t in [%g, %g]%s", F->target_text, F->a, F->b,
              F->parity == FIT_PARITY_ODD ? " (odd polynomial t P(t^2))" : "");
-    wrap_text(b, "Domain:", G->alt_domain[0] ? G->alt_domain : tmp);
+    if (!G->nopoly)
+        wrap_text(b, "Domain:", G->alt_domain[0] ? G->alt_domain : tmp);
     if (G->alt_order[0])
         snprintf(tmp, sizeof tmp, "%s", G->alt_order);
     else if (G->W == 16)
@@ -348,13 +349,15 @@ static void provenance(pf_buf *b, const fx_gen *G)
     wrap_text(b, "Order:", tmp);
     if (G->W == 16)
         wrap_text(b, "Lanes:", G->wide_text[0] ? G->wide_text : "every step in 16-bit lanes");
-    wrap_text(b, "Method:", G->alt_method[0] ? G->alt_method : method_text(G));
-    wrap_text(b, "Constraints:", G->alt_con[0] ? G->alt_con : F->con_zero ? F->con_text : "none");
-    fx_formats_text(G, tmp, sizeof tmp);
-    wrap_text(b, "Formats:", tmp);
-    snprintf(tmp, sizeof tmp, "max %s error %.3e (2^%.2f) at t = %.9g", G->errkind == FIT_REL ? "relative" : "absolute",
-             G->poly_err, log2(G->poly_err), G->poly.max_err_at);
-    wrap_text(b, "Polynomial:", G->alt_poly[0] ? G->alt_poly : tmp);
+    if (!G->nopoly) {
+        wrap_text(b, "Method:", G->alt_method[0] ? G->alt_method : method_text(G));
+        wrap_text(b, "Constraints:", G->alt_con[0] ? G->alt_con : F->con_zero ? F->con_text : "none");
+        fx_formats_text(G, tmp, sizeof tmp);
+        wrap_text(b, "Formats:", tmp);
+        snprintf(tmp, sizeof tmp, "max %s error %.3e (2^%.2f) at t = %.9g", G->errkind == FIT_REL ? "relative" : "absolute",
+                 G->poly_err, log2(G->poly_err), G->poly.max_err_at);
+        wrap_text(b, "Polynomial:", G->alt_poly[0] ? G->alt_poly : tmp);
+    }
     char abs_text[96];
     snprintf(abs_text, sizeof abs_text, " + %.4f LSB (arithmetic and reduction, absolute)", G->A / fx_lsb(G));
     if (G->R > 0)
@@ -371,6 +374,8 @@ static void provenance(pf_buf *b, const fx_gen *G)
         size_t o = strlen(tmp);
         snprintf(tmp + o, sizeof tmp - o, "; %s", G->bound_note);
     }
+    if (G->nopoly)
+        snprintf(tmp, sizeof tmp, "%s", G->alt_bound);
     wrap_text(b, "Error bound:", tmp);
     if (G->swept) {
         snprintf(tmp, sizeof tmp, "max %.4f LSB at x = %lld (%.9g), mean %.4f LSB; %s", G->sw.max_err,
@@ -739,7 +744,23 @@ void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int
     pf_put(b, ";");
 }
 
+static void norm16_un(fx_gen *G, pf_buf *b, int nb);
+
 void fx_emit_norm16(fx_gen *G, pf_buf *b, int nb)
+{
+    norm16_un(G, b, nb);
+    pf_put(b, "    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */");
+}
+
+void fx_emit_norm16_tq(fx_gen *G, pf_buf *b, int nb)
+{
+    norm16_un(G, b, nb);
+    pf_printf(b, "    int16_t tq = (int16_t)(u & (uint16_t)%s); /* the bits below the leading one: t in [0, 1), 2^-15 "
+                 "units, exact */",
+              fx_k16(G, 0x7fff, "0x7fff: t's mask (from k[]: hides t's range from GCC)"));
+}
+
+static void norm16_un(fx_gen *G, pf_buf *b, int nb)
 {
     /* bw = 0: u = ux 2^(16 - nb), then four (or fewer) stages shift the
        leading one up to bit 15: constant shifts and selects, 16-bit lanes.
@@ -759,7 +780,6 @@ void fx_emit_norm16(fx_gen *G, pf_buf *b, int nb)
                       1u << (16 - sh), sh, 1u << (16 - sh), sh);
     pf_put(b, "    }\n");
     G->bw16 = 1;
-    pf_put(b, "    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */");
 }
 
 void fx_emit_norm(const fx_gen *G, pf_buf *b)

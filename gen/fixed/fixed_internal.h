@@ -85,6 +85,9 @@ typedef struct {               /* log, log2 */
     int ez32;                  /* 16-bit lanes, wide sum: e K + P at 2^-Ez32 in 32 bits */
     int64_t kz32;              /* round(ln2 2^Ez32) or 2^Ez32 */
     int wide;                  /* 16-bit lanes: 1 if the sum is in 32-bit lanes */
+    int split;                 /* 16-bit lanes, log: e ln2 = e H 2^-Eo + e L 2^-Ep (two words) */
+    int64_t hs, ls;            /* H = round(ln2 2^Eo), L = round(ln2 2^Ep) - H 2^(Ep-Eo) */
+    double dsplit;             /* |error of e ln2| in the split form: emax |ln2 2^Ep - round(.)| 2^-Ep */
 } fx_log_red;
 
 typedef struct {               /* sqrt */
@@ -171,6 +174,10 @@ struct fx_gen {
     char alt_domain[200], alt_order[300], alt_method[400], alt_con[200], alt_formats[1400], alt_poly[400];
     char alt_arith[400];       /* ... and the Arithmetic line */
     char order_text[120];      /* if set: the Order line's word text (a function's own fit16) */
+    char alt_bound[400];       /* if set: the Error bound line */
+    int nopoly;                /* a kernel without a polynomial (sqrt from IEEE sqrtf): no Domain,
+                                  Method, Constraints, Formats or Polynomial line; alt_order says
+                                  what it computes */
 
     /* sweep of the compiled code */
     int swept, exhaustive;
@@ -207,6 +214,10 @@ void fx_emit_return16(const fx_gen *G, pf_buf *b, const char *r, int64_t lo, int
    bits at most) to u with bit 15 set and n = bitlen - 1, for log/sqrt
    (bw = 1: a leading-zero count; sets G->bw16) */
 void fx_emit_norm16(fx_gen *G, pf_buf *b, int nb);
+/* the same u and n, and "int16_t tq": t = u & k[i] with k[i] = 0x7fff, the
+   Horner variable itself (the opaque mask hides t's range from GCC as
+   fx_opaque16's product by 1 does, one vector instruction fewer) */
+void fx_emit_norm16_tq(fx_gen *G, pf_buf *b, int nb);
 /* 32/64-bit words: ux = x (x > 0, stored in at most 32 bits), n =
    bitlen(ux) - 1 and t = ux 2^-n - 1 in [0, 1), for log/sqrt */
 void fx_emit_norm(const fx_gen *G, pf_buf *b);

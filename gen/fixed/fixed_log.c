@@ -156,12 +156,53 @@ static void budget16(fx_gen *G)
         /* P's rounding to 2^-a is the final one when a = Eo (z is the result) */
         a16 = G->poly_err + G->arith + G->log.dk16 +
               (G->Ep > G->log.a16 && G->log.a16 > G->out.exp ? ldexp(0.5, -(int)G->log.a16) : 0);
+    /* log, split form (all in 16-bit words): e ln2 2^Ep = e H 2^d + e L
+       + e (ln2 2^Ep - Kp), Kp = round(ln2 2^Ep) = H 2^d + L, d = Ep - Eo.
+       e H is exact at the output's lsb, e L + P at P's lsb is rounded once
+       to it (the final rounding); the only other error is e's share of
+       Kp's rounding, |e| |ln2 2^Ep - Kp| 2^-Ep */
+    double asplit = INFINITY;
+    G->log.split = 0;
+    int d = G->Ep - G->out.exp;
+    if (G->fn->ref == PF_LOG && d >= 1 && d <= 14 && G->Ep <= 30) {
+        mpfr_t l, r;
+        mpfr_inits2(256, l, r, (mpfr_ptr)0);
+        mpfr_const_log2(l, MPFR_RNDN);
+        mpfr_mul_2si(r, l, G->out.exp, MPFR_RNDN);
+        mpfr_rint(r, r, MPFR_RNDN);
+        int64_t H = (int64_t)mpfr_get_si(r, MPFR_RNDN);
+        mpfr_mul_2si(l, l, G->Ep, MPFR_RNDN);
+        mpfr_rint(r, l, MPFR_RNDN);
+        int64_t Kp = (int64_t)mpfr_get_si(r, MPFR_RNDN);
+        mpfr_sub(r, l, r, MPFR_RNDN);
+        double kerr = fabs(mpfr_get_d(r, MPFR_RNDN));
+        mpfr_clears(l, r, (mpfr_ptr)0);
+        int64_t L = Kp - (H << d), em = G->log.emax;
+        /* |P| <= log(2) plus its errors, below 0.7 in P's units */
+        double pmax = 0.7 * ldexp(1.0, G->Ep);
+        if (em * (H < 0 ? -H : H) + (int64_t)ldexp(pmax + (double)(em * (L < 0 ? -L : L)), -d) + 2 <= 32767 &&
+            pmax + (double)(em * (L < 0 ? -L : L)) <= 32767) {
+            G->log.hs = H;
+            G->log.ls = L;
+            G->log.dsplit = (double)em * kerr * ldexp(1.0, -G->Ep);
+            asplit = G->poly_err + G->arith + G->log.dsplit;
+        }
+    }
     int kexact = G->log.kz32 == (int64_t)1 << G->log.ez32; /* log2 */
     double a32 = G->poly_err + G->arith + (kexact ? 0 : (double)G->log.emax * ldexp(0.5, -(int)G->log.ez32));
     if (G->Ep > G->log.ez32)
         a32 = INFINITY;
-    G->log.wide = !fx_within(G, 0, a16);
-    G->A = G->log.wide ? a32 : a16;
+    if (fx_within(G, 0, a16)) {
+        G->log.wide = 0;
+        G->A = a16;
+    } else if (fx_within(G, 0, asplit)) {
+        G->log.wide = 0;
+        G->log.split = 1;
+        G->A = asplit;
+    } else {
+        G->log.wide = 1;
+        G->A = a32;
+    }
 }
 
 static void budget(fx_gen *G)
@@ -175,6 +216,17 @@ static void budget(fx_gen *G)
     G->A = G->poly_err + G->arith + G->dred + (d < 0 ? ldexp(0.5, -(int)G->log.ez) : 0);
 }
 
+/* round(v / 2^d), ties up, 1 <= d <= 15, as the rounding multiply-high by
+   2^(15-d): floor(v 2^(15-d) 2^-15 + 1/2), pf_fx_rsh16's value in one
+   pmulhrsw instead of two shifts, an and and an add */
+static const char *rsh_mulhrs(fx_gen *G, char *buf, size_t n, const char *v, int d)
+{
+    char w[96];
+    snprintf(w, sizeof w, "2^%d: round(z / 2^%d), a rounding multiply-high", 15 - d, d);
+    snprintf(buf, n, "pf_fx_mulhrs(%s, %s)", v, fx_k16(G, (int64_t)1 << (15 - d), w));
+    return buf;
+}
+
 static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
     pf_buf body = {0}, horner = {0};
@@ -185,15 +237,18 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
     if (G->log.wide)
         snprintf(sumtxt, sizeof sumtxt, "in an int32_t at 2^-%d (%s)", (int)G->log.ez32,
                  base2 ? "e exact" : "ln2 = K 2^-Ez, K from MPFR");
+    else if (G->log.split)
+        snprintf(sumtxt, sizeof sumtxt,
+                 "in 16-bit words with ln2 in two words: e H at 2^-%d exact (H = round(ln2 2^%d) = %lld) plus "
+                 "e L + P at 2^-%d (L = round(ln2 2^%d) - H 2^%d = %lld; MPFR) rounded to 2^-%d",
+                 Eo, Eo, (long long)G->log.hs, Ep, Ep, Ep - Eo, (long long)G->log.ls, Eo);
     else
         snprintf(sumtxt, sizeof sumtxt, "in an int16_t at 2^-%d%s", a,
                  base2 ? "" : " (e ln2 = round(e 2^a K 2^-15), K = round(ln2 2^15) from MPFR, the rounding "
                               "multiply-high)");
     pf_put(&body, "    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */\n");
-    fx_emit_norm16(G, &body, nb);
+    fx_emit_norm16_tq(G, &body, nb);
     pf_put(&body, "\n");
-    const char *to = fx_opaque16(G, "t");
-    pf_printf(&body, "    int16_t tq = %s; /* t (a product: see the array form) */\n", to);
     pf_put(&body, "    /* P(t) ~ ");
     pf_put(&body, base2 ? "log2(1 + t)" : "log(1 + t)");
     pf_put(&body, ": Horner in 16-bit words, one rounding per step */\n");
@@ -214,10 +269,31 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
                  "the sum e%s + P and its rounding are in 32-bit lanes: at the 16-bit sum's lsb 2^-%d, the "
                  "roundings of e%s and of P would leave the %s bound",
                  base2 ? "" : " ln2", a < 0 ? Eo : a, base2 ? "" : " ln2", G->exact ? "exact (1 LSB)" : "fast");
+    } else if (G->log.split) {
+        int d = Ep - Eo;
+        char w[96];
+        snprintf(w, sizeof w, "H = round(ln2 2^%d): e ln2 at 2^-%d, high word", Eo, Eo);
+        pf_printf(&body, "    int16_t eh = (int16_t)((n - %d) * %s); /* e H, exact */\n", Ei, fx_k16(G, G->log.hs, w));
+        snprintf(w, sizeof w, "L = round(ln2 2^%d) - H 2^%d: low word at 2^-%d", Ep, d, Ep);
+        pf_printf(&body, "    int16_t el = (int16_t)((n - %d) * %s); /* e L, exact */\n", Ei, fx_k16(G, G->log.ls, w));
+        pf_printf(&body, "    /* e ln2 + P = e H 2^-%d + (e L + P) 2^-%d (but for e's share of round(ln2 2^%d)), "
+                         "rounded once */\n", Eo, Ep, Ep);
+        char rs[96];
+        pf_printf(&body, "    int16_t r = (int16_t)(eh + %s);\n", rsh_mulhrs(G, rs, sizeof rs, "(int16_t)(el + p)", d));
+        pf_put(&body, "    int16_t rc = (int16_t)");
+        rc[0] = 0;
+        if (mn > -32768)
+            snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "(r < %lld ? %lld : ", (long long)mn, (long long)mn);
+        if (mx < 32767)
+            snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "(r > %lld ? %lld : ", (long long)mx, (long long)mx);
+        snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "r%s%s", mx < 32767 ? ")" : "", mn > -32768 ? ")" : "");
+        pf_put(&body, rc);
+        pf_put(&body, ";\n");
+        snprintf(rc, sizeof rc, "rc");
     } else {
         char pa[96];
         if (Ep > a)
-            snprintf(pa, sizeof pa, "pf_fx_rsh16(p, %d)", Ep - a);
+            rsh_mulhrs(G, pa, sizeof pa, "p", Ep - a);
         else
             snprintf(pa, sizeof pa, "p");
         char w[64];
@@ -228,10 +304,12 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
         else
             pf_printf(&body, "    int16_t z = (int16_t)(pf_fx_mulhrs(ea, %s) + %s); /* e ln2 + P at 2^-%d */\n",
                       fx_k16(G, G->log.k15, "round(ln2 2^15)"), pa, a);
-        if (a > Eo)
-            pf_printf(&body, "    int16_t r = pf_fx_rsh16(z, %d); /* rounded once to the output */\n", a - Eo);
-        else
+        if (a > Eo) {
+            char rs[96];
+            pf_printf(&body, "    int16_t r = %s; /* rounded once to the output */\n", rsh_mulhrs(G, rs, sizeof rs, "z", a - Eo));
+        } else {
             pf_put(&body, "    int16_t r = z;\n");
+        }
         pf_put(&body, "    int16_t rc = (int16_t)");
         rc[0] = 0;
         if (mn > -32768)

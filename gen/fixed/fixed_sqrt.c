@@ -28,9 +28,48 @@ static void g_sqrt1p(mpfr_t y, const mpfr_t t, const void *ctx)
 }
 
 
+/* 16-bit storage, N = x 2^G below 2^32 (G = 2 Eo - Ei >= 0): no polynomial
+   but sqrtf and an exact correction (gen/templates/fx_sqrtf16.c.in), for the
+   exact and the fast variant alike (the correction also keeps the fast one
+   bit-identical under -ffast-math's approximate vectorized sqrtf) */
+static int prepare_f16(fx_gen *G, int nb, int64_t omax)
+{
+    int g = 2 * G->out.exp - G->in.exp;
+    if (g < 0 || nb + g > 32 || omax > 65535)
+        return 0;
+    G->nopoly = 1;
+    G->sqrt.gsh = g;
+    double inmax = ldexp((double)pf_type_max_stored(&G->in), -G->in.exp);
+    G->fmax = fmin(fx_out_max(G), sqrt(inmax) * (1 + 1e-9));
+    G->dred = 0;
+    snprintf(G->sat_text, sizeof G->sat_text, "sqrt(x) for x < 0 (undefined) gives 0");
+    G->bound_note[0] = 0;
+    snprintf(G->red_text, sizeof G->red_text,
+             "none: y = round(sqrt(N)) with N = x 2^%d (2 Eo - Ei) an integer below 2^32; s = sqrtf(N) "
+             "(N exact in a float, IEEE sqrt correctly rounded on every x86-64 level), R0 = trunc(s), "
+             "then R = R0 + 1 if N > R0 (R0 + 1), exact in 32 bits, else R0; x <= 0 -> 0",
+             g);
+    snprintf(G->alt_order, sizeof G->alt_order,
+             "none (no polynomial): one IEEE single-precision square root and an exact integer correction");
+    snprintf(G->wide_text, sizeof G->wide_text,
+             "32-bit lanes (float sqrt, vsqrtps; N and R0^2 need 32 bits); 16-bit loads and stores");
+    snprintf(G->alt_bound, sizeof G->alt_bound,
+             "correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 (half a float ulp, s < 2^16; "
+             "2^-7 for a 2-ulp approximate sqrtf) <= 1/2, so R0 = trunc(s) is round(sqrt(N)) or one below, and one "
+             "exact step reaches it (R0 + 1 when sqrt(N) >= R0 + 1/2, i.e. N > R0^2 + R0 in integers; no ties)");
+    snprintf(G->alt_arith, sizeof G->alt_arith,
+             "an int-to-float conversion and a multiply by 2^%d (both exact), IEEE sqrtf (correctly rounded), "
+             "then 32-bit integers; the result does not depend on sqrtf's last bits, so it is bit-identical "
+             "under any compiler flags (-ffast-math included) and on every x86-64 level",
+             g);
+    return 1;
+}
+
 static int prepare(fx_gen *G, char *err, size_t errlen)
 {
     int Ei = G->in.exp, Eo = G->out.exp, W = G->W;
+    G->nopoly = 0;
+    G->alt_arith[0] = 0;
     if (Ei > 200 || Ei < -200 || Eo > 62 || Eo < -62) {
         snprintf(err, errlen, "sqrt: exponents out of the supported range");
         return -1;
@@ -41,6 +80,8 @@ static int prepare(fx_gen *G, char *err, size_t errlen)
     G->sqrt.jlo = elo >= 0 ? elo / 2 : -((-elo + 1) / 2);
     G->sqrt.jhi = ehi >= 0 ? ehi / 2 : -((-ehi + 1) / 2);
     G->sqrt.j0 = G->sqrt.jlo < 0 ? -G->sqrt.jlo : 0;
+    if (W == 16 && prepare_f16(G, nb, omax))
+        return 0;
     if (W == 16) {
         /* 16-bit lanes: the fast variant only (the exact one's correction
            to the correctly rounded result needs exact 32-bit squares) */
@@ -118,6 +159,11 @@ static void budget16(fx_gen *G)
 
 static void budget(fx_gen *G)
 {
+    if (G->nopoly) { /* correctly rounded: no error but the final rounding */
+        G->R = 0;
+        G->A = 0;
+        return;
+    }
     if (G->W == 16) {
         budget16(G);
         return;
@@ -172,8 +218,38 @@ static void emit16(fx_gen *G, pf_buf *b)
     free(horner.s);
 }
 
+static void emit_f16(fx_gen *G, pf_buf *b)
+{
+    pf_buf body = {0};
+    int g = (int)G->sqrt.gsh;
+    int64_t omax = pf_type_max_stored(&G->out);
+    char w[64];
+    snprintf(w, sizeof w, "G = 2 Eo - Ei: N = x 2^%d", g);
+    pf_printf(&body, "    uint32_t xx = (uint32_t)(x > 0 ? x : 0);\n");
+    pf_printf(&body, "    uint32_t N = xx << %s; /* x 2^G < 2^32, exact */\n", fx_k16(G, g, w));
+    if (g)
+        pf_printf(&body, "    float s = sqrtf((float)(int32_t)xx * 0x1p%df); /* N in a float, exact; s within 2^-9 of sqrt(N) */\n", g);
+    else
+        pf_printf(&body, "    float s = sqrtf((float)(int32_t)xx); /* N in a float, exact; s within 2^-9 of sqrt(N) */\n");
+    pf_put(&body, "    int32_t r0 = (int32_t)s; /* round(sqrt(N)) or one below, as |s - sqrt(N)| <= 1/2 */\n");
+    pf_put(&body, "    /* r0 + 1 when sqrt(N) >= r0 + 1/2, i.e. N > r0^2 + r0 (integers), r0 (r0 + 1) < 2^32 */\n");
+    pf_put(&body, "    int32_t r = r0 + (N > (uint32_t)r0 * ((uint32_t)r0 + 1u));\n");
+    /* the largest result, round(sqrt(max N)): a clamp only when it exceeds the output's max */
+    double rmax = floor(sqrt(ldexp((double)pf_type_max_stored(&G->in), g)) + 0.5);
+    if (rmax > (double)omax)
+        pf_printf(&body, "    r = r < %lld ? r : %lld;\n", (long long)omax, (long long)omax);
+    pf_printf(&body, "    return (%s)r;", G->ot);
+    const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};
+    pf_subst(b, pf_template("fx_sqrtf16.c"), kv);
+    free(body.s);
+}
+
 static void emit(fx_gen *G, pf_buf *b)
 {
+    if (G->nopoly) {
+        emit_f16(G, b);
+        return;
+    }
     if (G->W == 16) {
         emit16(G, b);
         return;

@@ -247,8 +247,7 @@ PF_FX_INLINE int16_t pf_log2_uq8_q11_inline(uint16_t x, const int16_t *k, int bw
         n = (int16_t)(u < 0x8000u ? n - 1 : n);
         u = (uint16_t)(u < 0x8000u ? u << 1 : u);
     }
-    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
+    int16_t tq = (int16_t)(u & (uint16_t)k[0]); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
     /* P(t) ~ log2(1 + t): Horner in 16-bit words, one rounding per step */
     int16_t tq1 = pf_fx_mulhrs(tq, k[1]); /* tq rounded to 2^-14 */
     int16_t p = k[2]; /* c4 = -0.0847778320312 */
@@ -256,22 +255,23 @@ PF_FX_INLINE int16_t pf_log2_uq8_q11_inline(uint16_t x, const int16_t *k, int bw
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[4]); /* c2 = -0.679992675781, 2^-15 units */
     p = (int16_t)(pf_fx_mulhrs(p, tq1) + k[5]); /* c1 = 1.43902587891, 2^-14 units */
     p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-14 units */
-    int16_t ea = (int16_t)((n - 8) * k[6]); /* e 2^11 */
-    int16_t z = (int16_t)(ea + pf_fx_rsh16(p, 3)); /* e + P at 2^-11 */
+    int16_t ea = (int16_t)((n - 8) * k[7]); /* e 2^11 */
+    int16_t z = (int16_t)(ea + pf_fx_mulhrs(p, k[6])); /* e + P at 2^-11 */
     int16_t r = z;
     int16_t rc = (int16_t)r;
     return (int16_t)(x <= 0 ? -32768 : rc);
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_log2_uq8_q11_k[7] = {
-    1,      /* k[0]: 1 (see the array form) */
+static const int16_t pf_log2_uq8_q11_k[8] = {
+    32767,  /* k[0]: 0x7fff: t's mask (from k[]: hides t's range from GCC) */
     16384,  /* k[1]: 2^14: tq rounded to 14 fraction bits */
     -2778,  /* k[2]: c4 = -0.0847778320312 */
     10671,  /* k[3]: c3 = 0.325653076172 */
     -22282, /* k[4]: c2 = -0.679992675781 */
     23577,  /* k[5]: c1 = 1.43902587891 */
-    2048,   /* k[6]: 2^11: e at 2^-11 */
+    4096,   /* k[6]: 2^12: round(z / 2^3), a rounding multiply-high */
+    2048,   /* k[7]: 2^11: e at 2^-11 */
 };
 
 int16_t pf_log2_uq8_q11(uint16_t x)

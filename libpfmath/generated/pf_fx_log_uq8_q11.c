@@ -7,12 +7,12 @@
  * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
  *              constant shifts and selects; on AVX-512 CPUs a leading-zero count, the same n), 
  *              t in [0, 1) the 15 bits below the leading one (exact); log(x) = e ln2 + P(t) 
- *              summed in an int32_t at 2^-27 (ln2 = K 2^-Ez, K from MPFR), rounded once; x <= 0 
- *              -> -32768 (most negative)
+ *              summed in 16-bit words with ln2 in two words: e H at 2^-11 exact (H = round(ln2 
+ *              2^11) = 1420) plus e L + P at 2^-15 (L = round(ln2 2^15) - H 2^4 = -7; MPFR) 
+ *              rounded to 2^-11, rounded once; x <= 0 -> -32768 (most negative)
  * Domain:      log(1+t) on t in [0, 1]
  * Order:       4 (5 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       the sum e ln2 + P and its rounding are in 32-bit lanes: at the 16-bit sum's lsb 
- *              2^-11, the roundings of e ln2 and of P would leave the exact (1 LSB) bound
+ * Lanes:       every step in 16-bit lanes
  * Method:      minimax absolute error (nlopt SLSQP, epigraph form, from the least-squares fit), 
  *              coefficients rounded to the lsb of their Horner step (bit-width analysis) by 
  *              pin-and-refit
@@ -23,8 +23,8 @@
  *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
  *              Horner rounding error <= 6.104e-05
  * Polynomial:  max absolute error 7.602e-05 (2^-13.68) at t = 0.893884038
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2807 LSB (polynomial 0.1557, 
- *              arithmetic and reduction 0.1251) = 0.7807 LSB
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.3041 LSB (polynomial 0.1557, 
+ *              arithmetic and reduction 0.1484) = 0.8041 LSB
  * Sweep:       max 0.7196 LSB at x = 62375 (243.652344), mean 0.2615 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  log(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
@@ -249,29 +249,31 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_inline(uint16_t x, const int16_t *k, int bw)
         n = (int16_t)(u < 0x8000u ? n - 1 : n);
         u = (uint16_t)(u < 0x8000u ? u << 1 : u);
     }
-    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
+    int16_t tq = (int16_t)(u & (uint16_t)k[0]); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
     /* P(t) ~ log(1 + t): Horner in 16-bit words, one rounding per step */
     int16_t p = k[1]; /* c4 = -0.0586853027344 */
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[2]); /* c3 = 0.225555419922, 2^-15 units */
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c2 = -0.471221923828, 2^-15 units */
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[4]); /* c1 = 0.997436523438, 2^-15 units */
     p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-15 units */
-    /* e ln2 + P at 2^-27 in 32-bit lanes (see Lanes above), rounded once */
-    int32_t z = (int32_t)(n - 8) * 93032640 + (int32_t)p * 4096;
-    int32_t r = pf_fx_rsh32(z, 16);
-    uint16_t m = (uint16_t)(0u - (uint16_t)(x <= 0)); /* all ones for x <= 0 */
-    int16_t rc = (int16_t)(r < -32768 ? -32768 : r > 32767 ? 32767 : r);
-    return (int16_t)(int16_t)(((uint16_t)rc & ~m) | ((uint16_t)-32768 & m));
+    int16_t eh = (int16_t)((n - 8) * k[5]); /* e H, exact */
+    int16_t el = (int16_t)((n - 8) * k[6]); /* e L, exact */
+    /* e ln2 + P = e H 2^-11 + (e L + P) 2^-15 (but for e's share of round(ln2 2^15)), rounded once */
+    int16_t r = (int16_t)(eh + pf_fx_mulhrs((int16_t)(el + p), k[7]));
+    int16_t rc = (int16_t)r;
+    return (int16_t)(x <= 0 ? -32768 : rc);
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_log_uq8_q11_k[5] = {
-    1,      /* k[0]: 1 (see the array form) */
+static const int16_t pf_log_uq8_q11_k[8] = {
+    32767,  /* k[0]: 0x7fff: t's mask (from k[]: hides t's range from GCC) */
     -1923,  /* k[1]: c4 = -0.0586853027344 */
     7391,   /* k[2]: c3 = 0.225555419922 */
     -15441, /* k[3]: c2 = -0.471221923828 */
     32684,  /* k[4]: c1 = 0.997436523438 */
+    1420,   /* k[5]: H = round(ln2 2^11): e ln2 at 2^-11, high word */
+    -7,     /* k[6]: L = round(ln2 2^15) - H 2^4: low word at 2^-15 */
+    2048,   /* k[7]: 2^11: round(z / 2^4), a rounding multiply-high */
 };
 
 int16_t pf_log_uq8_q11(uint16_t x)

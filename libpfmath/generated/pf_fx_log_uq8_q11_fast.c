@@ -248,28 +248,28 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k, in
         n = (int16_t)(u < 0x8000u ? n - 1 : n);
         u = (uint16_t)(u < 0x8000u ? u << 1 : u);
     }
-    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
+    int16_t tq = (int16_t)(u & (uint16_t)k[0]); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
     /* P(t) ~ log(1 + t): Horner in 16-bit words, one rounding per step */
     int16_t p = k[1]; /* c3 = 0.114776611328 */
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[2]); /* c2 = -0.407409667969, 2^-15 units */
     p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c1 = 0.986694335938, 2^-15 units */
     p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-15 units */
-    int16_t ea = (int16_t)((n - 8) * k[4]); /* e 2^11 */
-    int16_t z = (int16_t)(pf_fx_mulhrs(ea, k[5]) + pf_fx_rsh16(p, 4)); /* e ln2 + P at 2^-11 */
+    int16_t ea = (int16_t)((n - 8) * k[5]); /* e 2^11 */
+    int16_t z = (int16_t)(pf_fx_mulhrs(ea, k[6]) + pf_fx_mulhrs(p, k[4])); /* e ln2 + P at 2^-11 */
     int16_t r = z;
     int16_t rc = (int16_t)r;
     return (int16_t)(x <= 0 ? -32768 : rc);
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_log_uq8_q11_fast_k[6] = {
-    1,      /* k[0]: 1 (see the array form) */
+static const int16_t pf_log_uq8_q11_fast_k[7] = {
+    32767,  /* k[0]: 0x7fff: t's mask (from k[]: hides t's range from GCC) */
     3761,   /* k[1]: c3 = 0.114776611328 */
     -13350, /* k[2]: c2 = -0.407409667969 */
     32332,  /* k[3]: c1 = 0.986694335938 */
-    2048,   /* k[4]: 2^11: e at 2^-11 */
-    22713,  /* k[5]: round(ln2 2^15) */
+    2048,   /* k[4]: 2^11: round(z / 2^4), a rounding multiply-high */
+    2048,   /* k[5]: 2^11: e at 2^-11 */
+    22713,  /* k[6]: round(ln2 2^15) */
 };
 
 int16_t pf_log_uq8_q11_fast(uint16_t x)

@@ -4,31 +4,27 @@
  * Regenerate:  pfmathgen --func sqrt --type 'ufixed<16,8>' --out-type 'ufixed<16,12>' -o libpfmath/generated/pf_fx_sqrt_uq8_uq12.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      uint16_t y, value y 2^-12 in [0, 15.9997559]
- * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (leading-zero count), t in [0, 
- *              1) exact; sqrt(x) = 2^floor(e/2) (sqrt2 if e is odd) P(t), sqrt2 = 1518500250 
- *              2^-30 (MPFR); then corrected by +-1 with exact squares to the correctly rounded 
- *              result (ties to even); x <= 0 -> 0
- * Domain:      sqrt(1+t) on t in [0, 1]
- * Order:       5 (6 fixed-point coefficients; int32_t words, 64-bit products)
- * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), 
- *              coefficients rounded to the lsb of their Horner step (bit-width analysis) by 
- *              pin-and-refit
- * Constraints: p(0) = 1 (exact at powers of 4)
- * Formats:     x unsigned fixed<31,31>; p5 fixed<22,29>, p4 fixed<25,29>, p3 fixed<26,29>, p2 
- *              fixed<27,29>, p1 fixed<29,29>, p0 fixed<30,29>; product shifts 31; p0 saturated 
- *              to its format
- * Polynomial:  max relative error 1.222e-06 (2^-19.64) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 1.230e-06 |f(x)| (polynomial 
- *              1.222e-06, arithmetic and reduction 7.780e-09, relative) = 0.5806 LSB at most 
- *              (|f| <= 15.9998); the +-1 correction then makes the result correctly rounded (at 
- *              most 0.5 LSB)
+ * Reduction:   none: y = round(sqrt(N)) with N = x 2^16 (2 Eo - Ei) an integer below 2^32; s = 
+ *              sqrtf(N) (N exact in a float, IEEE sqrt correctly rounded on every x86-64 
+ *              level), R0 = trunc(s), then R = R0 + 1 if N > R0 (R0 + 1), exact in 32 bits, 
+ *              else R0; x <= 0 -> 0
+ * Order:       none (no polynomial): one IEEE single-precision square root and an exact integer 
+ *              correction
+ * Lanes:       32-bit lanes (float sqrt, vsqrtps; N and R0^2 need 32 bits); 16-bit loads and 
+ *              stores
+ * Error bound: correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 (half a 
+ *              float ulp, s < 2^16; 2^-7 for a 2-ulp approximate sqrtf) <= 1/2, so R0 = 
+ *              trunc(s) is round(sqrt(N)) or one below, and one exact step reaches it (R0 + 1 
+ *              when sqrt(N) >= R0 + 1/2, i.e. N > R0^2 + R0 in integers; no ties)
  * Sweep:       max 0.5000 LSB at x = 65533 (255.988281), mean 0.2492 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  sqrt(x) for x < 0 (undefined) gives 0; results beyond the output range give its 
  *              max or min
  * Target:      exact: below 1 LSB of the output for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              to even; bit-identical under any compiler flags
+ * Arithmetic:  an int-to-float conversion and a multiply by 2^16 (both exact), IEEE sqrtf 
+ *              (correctly rounded), then 32-bit integers; the result does not depend on sqrtf's 
+ *              last bits, so it is bit-identical under any compiler flags (-ffast-math 
+ *              included) and on every x86-64 level
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -136,56 +132,148 @@ PF_FX_INLINE int pf_fx_bitlen(uint32_t x)
     return n + (int)x;
 }
 
-/* sqrt in fixed point.  x = 2^e (1 + t) with t in [0, 1): e from the
-   leading-zero count of the stored integer, t its remaining bits (exact).
-   sqrt(x) = 2^floor(e/2) (sqrt 2 if e is odd) P(t), P(t) ~ sqrt(1 + t).
-   x <= 0 gives 0 (sqrt of a negative number is defined as 0). */
-PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_inline(uint16_t x)
+/* 16-bit lane helpers (gen/templates/fx_common16.h.in), for functions whose
+   input and output are stored in at most 16 bits: the array loop then runs
+   in 16-bit lanes, twice as many as 32-bit ones.  The roundings here are to
+   nearest with ties up (the error bounds need only |error| <= 1/2 lsb).
+   GCC and Clang define >> of a negative int as arithmetic (floor), which
+   the first forms use because GCC recognizes exactly them as pmulhrsw and
+   16-bit shifts; other compilers get the same values from unsigned shifts. */
+
+/* The kernels' bw argument: 1 selects the forms of a step that only
+   AVX-512 runs in 16-bit lanes (a per-element 16-bit shift, a leading-zero
+   count), 0 the forms every x86-64 level vectorizes; both give the same
+   values.  Builds for a baseline with AVX-512BW and CD use the first. */
+#if defined(__GNUC__) && defined(__AVX512BW__) && defined(__AVX512CD__)
+#define PF_FX_BW_NATIVE 1
+#else
+#define PF_FX_BW_NATIVE 0
+#endif
+
+/* round(a b / 2^15), ties up: the rounding multiply-high (pmulhrsw).
+   Never called with a = b = -32768 (whose result, 2^15, does not fit). */
+PF_FX_INLINE int16_t pf_fx_mulhrs(int16_t a, int16_t b)
 {
-    uint32_t ux = x > 0 ? (uint32_t)x : 1u; /* x <= 0 is selected at the end */
-    int n = pf_fx_bitlen(ux) - 1;
-    int32_t t = (int32_t)((ux << (31 - n)) - 0x80000000u); /* t in [0, 1), 2^-31 units */
-    /* P(t) ~ sqrt(1 + t): Horner, one rounding per step, in the formats of
-       the bit-width analysis (see Formats above) */
-    int32_t p = 2857040; /* c5 = 0.00532165169716 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) - 12710696; /* c4 = -0.0236755162477 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) + 30360447; /* c3 = 0.056550739333 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) - 66526788; /* c2 = -0.123915798962 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) + 268400138; /* c1 = 0.499934215099 */
-    p = (int32_t)pf_fx_mul32(p, t, 31) + 536870912; /* c0 = 1 */
-    p = p > 1073741823 ? 1073741823 : p < -1073741824 ? -1073741824 : p; /* p0 saturated to fixed<30,29> */
-    uint64_t eb = (uint64_t)(n + 0); /* e + 2 J0 = n - 8 + 2 J0 >= 0, J0 = 4 */
-    int32_t q = (eb & 1) ? 1518500250 : 1073741824; /* sqrt2 or 1, 2^-30 units */
-    int64_t y = pf_fx_mul32(p, q, 30); /* P q, 2^-29 units */
-    uint64_t sh = 21 - (eb >> 1);
-    uint64_t r = pf_fx_rne_u((uint64_t)y, sh);
-    r = r < 65535u ? r : 65535u;
-    /* correctly rounded: R is right when (2R-1)^2 < 4N < (2R+1)^2, 4N = x 2^G exactly */
-    uint32_t a1 = (uint32_t)(2 * r + 1), a0 = (uint32_t)(2 * r - 1);
-    int64_t n4 = (int64_t)((uint64_t)ux << 18), hi2 = (int64_t)((uint64_t)a1 * a1), lo2 = (int64_t)((uint64_t)a0 * a0);
-    r = r + (n4 > hi2 || (n4 == hi2 && (r & 1))) - (r > 0 && (n4 < lo2 || (n4 == lo2 && (r & 1))));
-    r = r < 65535u ? r : 65535u;
-    return (uint16_t)(x > 0 ? r : 0);
+#if defined(__GNUC__)
+    return (int16_t)(((((int32_t)a * b) >> 14) + 1) >> 1);
+#else
+    uint32_t u = ((uint32_t)((int32_t)a * b) + 0x40000000u) >> 14; /* floor(a b / 2^14) + 2^16 */
+    return (int16_t)((int32_t)((u + 1) >> 1) - 32768);
+#endif
 }
+
+/* |x| as a uint16_t (|-32768| = 32768): GCC turns abs() of a promoted
+   int16_t into one pabsw, where x < 0 ? -x : x becomes a compare and a
+   select */
+PF_FX_INLINE uint16_t pf_fx_abs16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (uint16_t)__builtin_abs(x);
+#else
+    return (uint16_t)(x < 0 ? -(int32_t)x : x);
+#endif
+}
+
+/* -1 (all ones) for x < 0, else 0: one arithmetic shift (psraw) */
+PF_FX_INLINE int16_t pf_fx_sgn16(int16_t x)
+{
+#if defined(__GNUC__)
+    return (int16_t)(x >> 15);
+#else
+    return (int16_t)-(x < 0);
+#endif
+}
+
+/* round(z / 2^d), ties up, 1 <= d <= 15: floor(z / 2^d) plus the bit below
+   (no intermediate beyond 16 bits, which would cost 32-bit lanes) */
+PF_FX_INLINE int16_t pf_fx_rsh16(int16_t z, int d)
+{
+#if defined(__GNUC__)
+    return (int16_t)((z >> d) + ((z >> (d - 1)) & 1));
+#else
+    uint32_t u = (uint32_t)((int32_t)z + 32768) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(16-d) */
+    return (int16_t)((int32_t)((u + 1) >> 1) - (32768 >> d));
+#endif
+}
+
+/* round(z / 2^d), ties up, for a 32-bit z (a full 16x16-bit product),
+   1 <= d <= 30 */
+PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
+{
+#if defined(__GNUC__)
+    return ((z >> (d - 1)) + 1) >> 1;
+#else
+    uint32_t u = ((uint32_t)z + 0x80000000u) >> (d - 1); /* floor(z / 2^(d-1)) + 2^(32-d) */
+    return (int32_t)((u + 1) >> 1) - (int32_t)(0x80000000u >> d);
+#endif
+}
+
+/* <math.h>'s sqrtf, declared here (C17 7.1.4 allows it): glibc's <math.h>
+   does not build with __GNUC__ undefined, a build test_fixed_hash makes */
+float sqrtf(float);
+
+/* Build flags: -fno-math-errno (for vsqrtps; mk/fixedgen.mk sets it, tests/check-vectorize.sh reads this line) */
+
+/* sqrt in fixed point for 16-bit storage, without a polynomial: the result
+   is R = round(sqrt(N)) with N = x 2^G (G = 2 Eo - Ei, k[0]) an integer below
+   2^32.  N is exact in a float (x has at most 16 significant bits), and
+   IEEE sqrt is correctly rounded on every x86-64 level (sqrtss/vsqrtps), so
+   s = sqrtf(N) < 2^16 is within half a float ulp, 2^-9, of sqrt(N); even an
+   approximate vectorized sqrtf (-ffast-math: rsqrtps and a Newton step,
+   within 2 ulp) is within 2^-7.  With s off by at most 1/2 (sqrt(N) is in
+   (R - 1/2, R + 1/2)), R0 = trunc(s) is R or R - 1, and one exact
+   unsigned compare decides: R = R0 + 1 when sqrt(N) >= R0 + 1/2, i.e.
+   N > R0^2 + R0 = R0 (R0 + 1) (never a tie: (R0 + 1/2)^2 is not an
+   integer; R0 (R0 + 1) < 2^32 for R0 < 2^16, and R0 = 2^16 only where the
+   result saturates, which the clamp to the output's max then does).  The
+   loop runs in 32-bit lanes (the float sqrt); loads and stores are 16-bit.
+   x <= 0 gives 0 (N = 0). */
+PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_inline(uint16_t x, const int16_t *k, int bw)
+{
+    (void)bw; /* no AVX-512BW form */
+    uint32_t xx = (uint32_t)(x > 0 ? x : 0);
+    uint32_t N = xx << k[0]; /* x 2^G < 2^32, exact */
+    float s = sqrtf((float)(int32_t)xx * 0x1p16f); /* N in a float, exact; s within 2^-9 of sqrt(N) */
+    int32_t r0 = (int32_t)s; /* round(sqrt(N)) or one below, as |s - sqrt(N)| <= 1/2 */
+    /* r0 + 1 when sqrt(N) >= r0 + 1/2, i.e. N > r0^2 + r0 (integers), r0 (r0 + 1) < 2^32 */
+    int32_t r = r0 + (N > (uint32_t)r0 * ((uint32_t)r0 + 1u));
+    return (uint16_t)r;
+}
+
+/* The constants the body reads (Horner coefficients and multipliers) */
+static const int16_t pf_sqrt_uq8_uq12_k[1] = {
+    16,     /* k[0]: G = 2 Eo - Ei: N = x 2^16 */
+};
 
 uint16_t pf_sqrt_uq8_uq12(uint16_t x)
 {
-    return pf_sqrt_uq8_uq12_inline(x);
+    return pf_sqrt_uq8_uq12_inline(x, pf_sqrt_uq8_uq12_k, 0);
 }
 
-/* Array form: the body above is branch-free integer code, so this loop
-   vectorizes.  Built for a baseline without AVX2, it gets one clone per
-   x86-64 level and the widest the CPU has is picked at load time (when the
-   baseline already has AVX2, e.g. -march=native, the loop is simply built
-   for it).  Every clone computes the same bits: integers only. */
+/* Array form in 16-bit lanes.  The constants come through a pointer that an
+   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
+   into shifts and adds before it looks for the rounding multiply-high, and
+   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
+   can bound both operands and prove the product fits; the body therefore
+   feeds pf_fx_mulhrs only loads, constants, its own results and values
+   multiplied by a constant of k[] (a pmullw).  The values are the same, so
+   the scalar and array forms compute the same bits.  Built for a baseline
+   without AVX2, it gets one clone per x86-64 level and the widest the CPU
+   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
+   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
+   clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_sqrt_uq8_uq12_array(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+    const int16_t *k = pf_sqrt_uq8_uq12_k;
+#if defined(__GNUC__)
+    __asm__("" : "+r"(k));
+#endif
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_sqrt_uq8_uq12_inline(x[i]);
+        y[i] = pf_sqrt_uq8_uq12_inline(x[i], k, PF_FX_BW_NATIVE);
 }

@@ -4,36 +4,27 @@
  * Regenerate:  pfmathgen --func sqrt --type 'ufixed<16,8>' --out-type 'ufixed<16,12>' --variant fast -o libpfmath/generated/pf_fx_sqrt_uq8_uq12_fast.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      uint16_t y, value y 2^-12 in [0, 15.9997559]
- * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
- *              constant shifts and selects), t in [0, 1) the 15 bits below the leading one 
- *              (exact); sqrt(x) = 2^ceil(e/2) P(t) (/ sqrt2 if e is odd: P round(2^15/sqrt2) 
- *              2^-15 = P 23170 2^-15 by the rounding multiply-high, MPFR); x <= 0 -> 0
- * Domain:      sqrt(1+t) on t in [0, 1]
- * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       the scaling by 2^ceil(e/2) is a per-element shift: in 16-bit lanes where 
- *              AVX-512BW has one (vpsrlvw), else in 32-bit lanes (AVX2 has no 16-bit 
- *              per-element shift); the same values, the error model does not need the wider 
- *              lanes
- * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
- *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
- * Constraints: p(0) = 1 (exact at powers of 4)
- * Formats:     x unsigned fixed<15,15> in int16_t; p3 fixed<15,15>, p2 fixed<15,15>, p1 
- *              fixed<15,15>, p0 fixed<15,14> (x rounded to 2^-14); steps p = pf_fx_mulhrs(p, x) 
- *              + c, the rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
- *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
- *              Horner rounding error <= 7.623e-05
- * Polynomial:  max relative error 1.521e-04 (2^-12.68) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.920e-04 |f(x)| (polynomial 
- *              1.521e-04, arithmetic and reduction 1.399e-04, relative) = 19.6374 LSB at most 
- *              (|f| <= 15.9998)
- * Sweep:       max 11.6946 LSB at x = 65217 (254.753906), mean 2.2406 LSB; exhaustive: all 
- *              65536 inputs
+ * Reduction:   none: y = round(sqrt(N)) with N = x 2^16 (2 Eo - Ei) an integer below 2^32; s = 
+ *              sqrtf(N) (N exact in a float, IEEE sqrt correctly rounded on every x86-64 
+ *              level), R0 = trunc(s), then R = R0 + 1 if N > R0 (R0 + 1), exact in 32 bits, 
+ *              else R0; x <= 0 -> 0
+ * Order:       none (no polynomial): one IEEE single-precision square root and an exact integer 
+ *              correction
+ * Lanes:       32-bit lanes (float sqrt, vsqrtps; N and R0^2 need 32 bits); 16-bit loads and 
+ *              stores
+ * Error bound: correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 (half a 
+ *              float ulp, s < 2^16; 2^-7 for a 2-ulp approximate sqrtf) <= 1/2, so R0 = 
+ *              trunc(s) is round(sqrt(N)) or one below, and one exact step reaches it (R0 + 1 
+ *              when sqrt(N) >= R0 + 1/2, i.e. N > R0^2 + R0 in integers; no ties)
+ * Sweep:       max 0.5000 LSB at x = 65533 (255.988281), mean 0.2492 LSB; exhaustive: all 65536 
+ *              inputs
  * Saturation:  sqrt(x) for x < 0 (undefined) gives 0; results beyond the output range give its 
  *              max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
- *              per rounding); bit-identical under any compiler flags
+ * Arithmetic:  an int-to-float conversion and a multiply by 2^16 (both exact), IEEE sqrtf 
+ *              (correctly rounded), then 32-bit integers; the result does not depend on sqrtf's 
+ *              last bits, so it is bit-identical under any compiler flags (-ffast-math 
+ *              included) and on every x86-64 level
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -217,94 +208,47 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* sqrt in fixed point, in 16-bit lanes.  x = 2^e (1 + t) with t in [0, 1):
-   e from a staged normalization of the stored integer, t its remaining bits
-   (exact).  sqrt(x) = 2^ceil(e/2) P(t) (divided by sqrt 2 if e is odd),
-   P(t) ~ sqrt(1 + t).  x <= 0 gives 0 (sqrt of a negative number is
-   defined as 0).  k[] holds the constants; bw = 1 (AVX-512 CPUs, see
-   fx_tail16.c.in) takes the leading-zero count for the normalization and,
-   where it fits, a 16-bit per-element shift (vpsrlvw); bw = 0 the staged
-   normalization and a shift in 32-bit lanes: the same values. */
+/* <math.h>'s sqrtf, declared here (C17 7.1.4 allows it): glibc's <math.h>
+   does not build with __GNUC__ undefined, a build test_fixed_hash makes */
+float sqrtf(float);
+
+/* Build flags: -fno-math-errno (for vsqrtps; mk/fixedgen.mk sets it, tests/check-vectorize.sh reads this line) */
+
+/* sqrt in fixed point for 16-bit storage, without a polynomial: the result
+   is R = round(sqrt(N)) with N = x 2^G (G = 2 Eo - Ei, k[0]) an integer below
+   2^32.  N is exact in a float (x has at most 16 significant bits), and
+   IEEE sqrt is correctly rounded on every x86-64 level (sqrtss/vsqrtps), so
+   s = sqrtf(N) < 2^16 is within half a float ulp, 2^-9, of sqrt(N); even an
+   approximate vectorized sqrtf (-ffast-math: rsqrtps and a Newton step,
+   within 2 ulp) is within 2^-7.  With s off by at most 1/2 (sqrt(N) is in
+   (R - 1/2, R + 1/2)), R0 = trunc(s) is R or R - 1, and one exact
+   unsigned compare decides: R = R0 + 1 when sqrt(N) >= R0 + 1/2, i.e.
+   N > R0^2 + R0 = R0 (R0 + 1) (never a tie: (R0 + 1/2)^2 is not an
+   integer; R0 (R0 + 1) < 2^32 for R0 < 2^16, and R0 = 2^16 only where the
+   result saturates, which the clamp to the output's max then does).  The
+   loop runs in 32-bit lanes (the float sqrt); loads and stores are 16-bit.
+   x <= 0 gives 0 (N = 0). */
 PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_fast_inline(uint16_t x, const int16_t *k, int bw)
 {
-    (void)bw; /* unused where no step has an AVX-512BW form */
-    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */
-    uint16_t u;
-    int16_t n; /* bitlen(ux) - 1 */
-#if defined(__GNUC__)
-    if (bw) {
-        int lz = __builtin_clz((uint32_t)ux) - 16; /* ux >= 1: in [0, 15] */
-        u = (uint16_t)(ux << lz);
-        n = (int16_t)(15 - lz);
-    } else
-#endif
-    {
-        u = (uint16_t)(ux << 0);
-        n = 15;
-        n = (int16_t)(u < 0x100u ? n - 8 : n);
-        u = (uint16_t)(u < 0x100u ? u << 8 : u);
-        n = (int16_t)(u < 0x1000u ? n - 4 : n);
-        u = (uint16_t)(u < 0x1000u ? u << 4 : u);
-        n = (int16_t)(u < 0x4000u ? n - 2 : n);
-        u = (uint16_t)(u < 0x4000u ? u << 2 : u);
-        n = (int16_t)(u < 0x8000u ? n - 1 : n);
-        u = (uint16_t)(u < 0x8000u ? u << 1 : u);
-    }
-    int16_t t = (int16_t)(u & 0x7fffu); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    uint16_t eb = (uint16_t)(n + 0); /* e + 2 j0 >= 0, e = n - 8, j0 = 4 */
-    int16_t tq = (int16_t)((t) * k[0]); /* t (a product: see the array form) */
-    /* P(t) ~ sqrt(1 + t): Horner in 16-bit words, one rounding per step */
-    int16_t tq1 = pf_fx_mulhrs(tq, k[1]); /* tq rounded to 2^-14 */
-    int16_t p = k[2]; /* c3 = 0.0259094238281 */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c2 = -0.109252929688, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[4]); /* c1 = 0.497772216797, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, tq1) + k[5]); /* c0 = 1, 2^-14 units */
-    int16_t pq = pf_fx_mulhrs(p, k[6]); /* P / sqrt2 (computed for every element: branch-free) */
-    int16_t y = (eb & 1) ? pq : p; /* P, or P / sqrt2 for odd e: sqrt(x) = 2^ceil(e/2) y */
-    /* y 2^ceil(e/2) rounded once to the output, s = 2 - ceil(e/2) in [-2, 6] */
-    uint16_t r16;
-    { /* no 16-bit form: a 2 or s do not fit */
-        uint32_t sv = (uint32_t)(6 - (int32_t)((eb + 1) >> 1) + 2);
-        uint32_t h = ((uint32_t)(uint16_t)y << 3) >> sv;
-        uint32_t r = (h >> 1) + (h & 1u);
-        r16 = (uint16_t)(r < 65535u ? r : 65535u);
-    }
-    uint16_t m = (uint16_t)(0u - (uint16_t)(x > 0)); /* x <= 0 gives 0, through a mask */
-    return (uint16_t)(r16 & m);
+    (void)bw; /* no AVX-512BW form */
+    uint32_t xx = (uint32_t)(x > 0 ? x : 0);
+    uint32_t N = xx << k[0]; /* x 2^G < 2^32, exact */
+    float s = sqrtf((float)(int32_t)xx * 0x1p16f); /* N in a float, exact; s within 2^-9 of sqrt(N) */
+    int32_t r0 = (int32_t)s; /* round(sqrt(N)) or one below, as |s - sqrt(N)| <= 1/2 */
+    /* r0 + 1 when sqrt(N) >= r0 + 1/2, i.e. N > r0^2 + r0 (integers), r0 (r0 + 1) < 2^32 */
+    int32_t r = r0 + (N > (uint32_t)r0 * ((uint32_t)r0 + 1u));
+    return (uint16_t)r;
 }
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_sqrt_uq8_uq12_fast_k[7] = {
-    1,      /* k[0]: 1 (see the array form) */
-    16384,  /* k[1]: 2^14: tq rounded to 14 fraction bits */
-    849,    /* k[2]: c3 = 0.0259094238281 */
-    -3580,  /* k[3]: c2 = -0.109252929688 */
-    16311,  /* k[4]: c1 = 0.497772216797 */
-    16384,  /* k[5]: c0 = 1 */
-    23170,  /* k[6]: round(2^15 / sqrt2) */
+static const int16_t pf_sqrt_uq8_uq12_fast_k[1] = {
+    16,     /* k[0]: G = 2 Eo - Ei: N = x 2^16 */
 };
 
 uint16_t pf_sqrt_uq8_uq12_fast(uint16_t x)
 {
     return pf_sqrt_uq8_uq12_fast_inline(x, pf_sqrt_uq8_uq12_fast_k, 0);
 }
-
-/* AVX-512 has a 16-bit per-element shift (vpsrlvw) and a leading-zero count
-   (vplzcntd), AVX2 neither: on a CPU with x86-64-v4 the array form runs this
-   loop, whose kernel (bw = 1) uses them; the clones below keep the forms every
-   level vectorizes (bw = 0), as the scalar form does.  The same values
-   (pfmathgen sweeps the array form on its machine against the scalar one). */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
-__attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_sqrt_uq8_uq12_fast_array_bw(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
-{
-    const int16_t *k = pf_sqrt_uq8_uq12_fast_k;
-    __asm__("" : "+r"(k));
-#pragma GCC ivdep
-    for (size_t i = 0; i < n; i++)
-        y[i] = pf_sqrt_uq8_uq12_fast_inline(x[i], k, 1);
-}
-#endif
 
 /* Array form in 16-bit lanes.  The constants come through a pointer that an
    empty asm hides from GCC: GCC 12 rewrites a product by a known constant
@@ -323,12 +267,6 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_sqrt_uq8_uq12_fast_array(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
-    if (__builtin_cpu_supports("x86-64-v4")) {
-        pf_sqrt_uq8_uq12_fast_array_bw(x, y, n);
-        return;
-    }
-#endif
     const int16_t *k = pf_sqrt_uq8_uq12_fast_k;
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
