@@ -104,16 +104,25 @@ static const float PF_EXP_INVLN2 = 0x1.715476p+0f;
 static const float PF_EXP_LN2HI = 0x1.62e43p-1f;
 static const float PF_EXP_LN2LO = -0x1.05c61p-29f;
 
+/* r = x - k ln2 in two steps (Cody-Waite): the first exact, the second
+   rounding once, so r is within half an ulp of x - k ln2, plus
+   |k| 2^-49 for ln2's own split (the error model counts both) */
+static inline float pf_exp_reduce(float x, float k)
+{
+    return fmaf(-k, PF_EXP_LN2LO, fmaf(-k, PF_EXP_LN2HI, x));
+}
+
 /* exp(x) = 2^k e^r, k = round(x/ln2), r = x - k ln2 in [-ln2/2, ln2/2], in
    float lanes with fmaf (one rounding each, the same bits on every clone).
    - k: fmaf(x, 1/ln2, S), S = 1.5 * 2^23, rounds x/ln2 once and leaves
      k in the low bits of z: z's bits are 0x4b400000 + k, so (z's bits
      << 23) is k << 23 (mod 2^32; 0x4b400000's low 9 bits are zero); z - S
      is k exactly.
-   - r = fmaf(-k, LN2HI, x) is exact: LN2HI is ln2 rounded to float, so the
-     result is a multiple of 2^-25 (2^-24 once |x| >= 1) below 1/2 in
-     magnitude, which float holds.  fmaf(-k, LN2LO, .) then rounds once: r
-     is within half an ulp of x - k ln2 (plus k 2^-49 for ln2's own split).
+   - r: pf_exp_reduce, emitted above with the constants (exact variant:
+     two Cody-Waite steps, fast variant: one).  fmaf(-k, LN2HI, x) is
+     exact: LN2HI is ln2 rounded to float, so the result is a multiple of
+     2^-25 (2^-24 once |x| >= 1) below 1/2 in magnitude, which float
+     holds.
    - p(r) by Horner with fmaf; the last step fmaf(., r, c0) is the rounding
      into float, so this is the result's own rounding (the error model in
      the provenance counts every step).
@@ -145,8 +154,7 @@ static inline float pf_expf_body(float x, int plain)
     const float shift = 0x1.8p23f;
     float z = fmaf(x, PF_EXP_INVLN2, shift);
     float kf = z - shift;
-    float r = fmaf(-kf, PF_EXP_LN2HI, x);
-    r = fmaf(-kf, PF_EXP_LN2LO, r);
+    float r = pf_exp_reduce(x, kf);
     float y = pf_horner_fma(r, pf_expf_C, 7);
     uint32_t zb = pf_asuint(z), ek = zb << 23; /* k << 23 */
     /* y 2^k, exact and normal, the same bits either way: the array form
