@@ -106,9 +106,10 @@ static const float pf_exp2f_C[7] = {
    - p(r) by Horner with fmaf; the last step fmaf(., r, c0) is the rounding
      into float (the error model in the provenance counts every step).
      p(0) = c0 = 1, so powers of two are exact.
-   - Ordinary x (pf_exp2f_plain: x in [-126, 127]) have k in [-126, 127] and
-     y 2^k normal (k = -126 only for r >= 0, where y >= 1), so the product
-     is exact: y's bits plus k << 23 (one integer add) or y times 2^k.
+   - Ordinary x (x in [-126, 127], the key below pf_exp2f_KEY_LIM) have k
+     in [-126, 127] and y 2^k normal (k = -126 only for r >= 0, where
+     y >= 1), so the product is exact: y's bits plus k << 23 (one integer
+     add) or y times 2^k.
    - Elsewhere 2^k is applied as 2^k1 2^k2 (k1 = floor(k/2), both normal
      for |k| <= 252): y 2^k1 is exact and the second product rounds once,
      giving gradual underflow to subnormals and overflow to +inf; on
@@ -123,8 +124,8 @@ static const float pf_exp2f_C[7] = {
    (gen/templates/exp_log_twopath.c.in) takes three operations a vector. */
 static inline uint32_t pf_exp2f_key(float x) { return pf_asuint(x - 0.5f) & 0x7fffffffu; }
 #define pf_exp2f_KEY_LIM 0x42fd0001u /* the bits of 126.5f, plus one */
-/* the scalar form's test, a subset of the ordinary x: one float compare
-   (the key's subtraction and integer test cost the call more) */
+/* the scalar form's test, a subset of the ordinary x in one float
+   compare */
 static inline int pf_exp2f_plain(float x) { return fabsf(x) <= 126.0f; }
 
 static inline float pf_exp2f_body(float x, int plain)

@@ -121,10 +121,10 @@ static inline float pf_exp_reduce(float x, float k)
    - p(r) by Horner with fmaf; the last step fmaf(., r, c0) is the rounding
      into float, so this is the result's own rounding (the error model in
      the provenance counts every step).
-   - Ordinary x (pf_expf_fast_plain: x in [-87, 88]) have k in [-126, 127]
-     (x/ln2 is in [-125.52, 126.96]) and y 2^k normal (k = -126 only for
-     r > 0, where y > 1), so the product is exact: y's bits plus k << 23
-     (one integer add) or y times 2^k.
+   - Ordinary x (x in [-87, 88], the key below pf_expf_fast_KEY_LIM) have k in
+     [-126, 127] (x/ln2 is in [-125.52, 126.96]) and y 2^k normal
+     (k = -126 only for r > 0, where y > 1), so the product is exact: y's
+     bits plus k << 23 (one integer add) or y times 2^k.
    - Elsewhere 2^k is applied as 2^k1 2^k2 (k1 = floor(k/2), both normal
      for |k| <= 252): y 2^k1 is exact and the second product rounds once,
      giving gradual underflow to subnormals and overflow to +inf; on
@@ -140,8 +140,8 @@ static inline float pf_exp_reduce(float x, float k)
    (gen/templates/exp_log_twopath.c.in) takes three operations a vector. */
 static inline uint32_t pf_expf_fast_key(float x) { return pf_asuint(x - 0.5f) & 0x7fffffffu; }
 #define pf_expf_fast_KEY_LIM 0x42af0001u /* the bits of 87.5f, plus one */
-/* the scalar form's test, a subset of the ordinary x: one float compare
-   (the key's subtraction and integer test cost the call more) */
+/* the scalar form's test, a subset of the ordinary x in one float
+   compare */
 static inline int pf_expf_fast_plain(float x) { return fabsf(x) <= 87.0f; }
 
 static inline float pf_expf_fast_body(float x, int plain)
