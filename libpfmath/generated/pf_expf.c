@@ -186,6 +186,14 @@ static inline float pf_expf_ordinary(float x) { return pf_expf_body(x, 1); }
 static inline float pf_expf_inline(float x) { return pf_expf_body(x, 0); }
 static inline float pf_expf_bulk(float x) { return pf_expf_body(x, 2); }
 
+/* The scalar form (defined by the tail below) starts a 64-byte line: its
+   hot path is about 130 bytes of code, and where GCC's 16-byte alignment
+   happened to put it 48 bytes into a line, a call loop took 3.03 ns a
+   call against 2.76 ns when aligned (same run, Zen 4) */
+#if defined(__GNUC__)
+float pf_expf(float x) __attribute__((aligned(64)));
+#endif
+
 /* The scalar form is cloned too, so that fmaf is one instruction where the
    CPU has FMA (the result is the same on every clone).  Ordinary inputs
    (pf_expf_plain) branch to pf_expf_ordinary, the body without its

@@ -181,6 +181,14 @@ static inline float pf_expf_fast_ordinary(float x) { return pf_expf_fast_body(x,
 static inline float pf_expf_fast_inline(float x) { return pf_expf_fast_body(x, 0); }
 static inline float pf_expf_fast_bulk(float x) { return pf_expf_fast_body(x, 2); }
 
+/* The scalar form (defined by the tail below) starts a 64-byte line: its
+   hot path is about 130 bytes of code, and where GCC's 16-byte alignment
+   happened to put it 48 bytes into a line, a call loop took 3.03 ns a
+   call against 2.76 ns when aligned (same run, Zen 4) */
+#if defined(__GNUC__)
+float pf_expf_fast(float x) __attribute__((aligned(64)));
+#endif
+
 /* The scalar form is cloned too, so that fmaf is one instruction where the
    CPU has FMA (the result is the same on every clone).  Ordinary inputs
    (pf_expf_fast_plain) branch to pf_expf_fast_ordinary, the body without its
