@@ -521,6 +521,23 @@ int main(int argc, char **argv)
         }
         pfb_median(v, 15, &overhead, &mn, &mx);
     }
+    /* call floor: the same empty function in the scalar rows' throughput
+       loop (pfb_loop1, one indirect call an element), the part of a scalar
+       row's time that is the call rather than the function */
+    double call_floor;
+    {
+        static float xs[NTIME], ys[NTIME];
+        for (size_t i = 0; i < NTIME; i++)
+            xs[i] = (float)i;
+        double v[15], mn, mx;
+        for (int r = 0; r < 15; r++) {
+            double t0 = now();
+            for (int p = 0; p < 20; p++)
+                pfb_loop1(empty_fn, xs, ys, NTIME);
+            v[r] = (now() - t0) * 1e9 / (20.0 * NTIME);
+        }
+        pfb_median(v, 15, &call_floor, &mn, &mx);
+    }
 
     char cpu[256], date[64];
     cpu_name(cpu, sizeof cpu);
@@ -542,6 +559,8 @@ int main(int argc, char **argv)
             NTIME, reps, target_ms);
     fprintf(md, "- latency: ns per call in a dependent chain (scalar forms only), including the chain's "
                 "own overhead of %.2f ns (an empty function measured the same way)\n", overhead);
+    fprintf(md, "- scalar throughput includes the call: an empty function (in pfbench itself) through "
+                "the same loop takes %.2f ns per element\n", call_floor);
     fprintf(md, "- error: max and mean ULP against MPFR (ref/, pfref_ulp_err_raw, as pfsweep) on %llu "
                 "seeded inputs of the same domain (seed %llu; the timing inputs are its first %u); "
                 "CR = correctly rounded share; exhaustive figures for pfmath: `make sweep`\n",

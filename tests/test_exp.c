@@ -286,30 +286,33 @@ static void test_arrays_match_scalar(void **st)
     }
 }
 
-/* The array forms take a shorter body for blocks (of 128) with |x| <= H in
-   every lane (exp: H = 100, exp2: 160; results up to +inf and down to
-   subnormals), the full one otherwise: on such inputs with a rare lane now
-   and then (at a block's first, middle and last position, and in the
-   partial last block), every lane still gets the scalar form's bits, in
-   place too. */
+/* The array forms take a shorter body for blocks (of 128) whose every lane
+   is ordinary (exp: x in [-87, 88], exp2: [-126, 127]; there 2^k is an
+   add to y's exponent bits, right only while k is in [-126, 127] and the
+   result normal), the full one otherwise: on such inputs, the ends
+   included, with a rare lane now and then (just past either end, where
+   that add would give garbage, and the special values; at a block's first,
+   middle and last position, and in the partial last block), every lane
+   still gets the scalar form's bits, in place too. */
 static void test_arrays_two_paths(void **st)
 {
     (void)st;
     enum { N = 128 * 40 + 77 };
     static float x[N], y[N], z[N];
     static const int at[] = {0, 63, 127, 128 * 3 + 5, 128 * 7 + 127, 128 * 9, 128 * 20 + 64,
-                             128 * 30 + 1, N - 77, N - 1};
+                             128 * 30 + 1, 128 * 33 + 90, 128 * 36 + 17, N - 77, N - 1};
     void (*arr[4])(const float *, float *, size_t) = {pf_expf_array, pf_expf_fast_array,
                                                        pf_exp2f_array, pf_exp2f_fast_array};
     float (*sc[4])(float) = {pf_expf, pf_expf_fast, pf_exp2f, pf_exp2f_fast};
     for (int f = 0; f < 4; f++) {
-        float h = f < 2 ? 100.0f : 160.0f, above = nextafterf(h, INFINITY);
-        const float rare[] = {above, -above, NAN, -NAN, INFINITY, -INFINITY, 1e30f, -1e30f, 2 * h, -2 * h};
+        float lo = f < 2 ? -87.0f : -126.0f, hi = f < 2 ? 88.0f : 127.0f;
+        const float rare[] = {nextafterf(hi, INFINITY), nextafterf(lo, -INFINITY), hi + 0.7f, lo - 0.7f,
+                              NAN, -NAN, INFINITY, -INFINITY, 1e30f, -1e30f, 2 * hi, 2 * lo};
         uint64_t s = 11;
         for (int i = 0; i < N; i++) {
             s = s * 6364136223846793005ull + 1442695040888963407ull;
-            float u = (float)((int64_t)(s >> 11) * 0x1p-53 * 2 * h - h);
-            x[i] = i % 97 == 5 ? h : i % 89 == 7 ? -h : fminf(fmaxf(u, -h), h);
+            float u = (float)((int64_t)(s >> 11) * 0x1p-53 * (hi - lo) + lo);
+            x[i] = i % 97 == 5 ? hi : i % 89 == 7 ? lo : fminf(fmaxf(u, lo), hi);
         }
         for (int j = 0; j < (int)(sizeof at / sizeof at[0]); j++)
             x[at[j]] = rare[j];

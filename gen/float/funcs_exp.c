@@ -28,8 +28,13 @@ static void g_exp2(mpfr_t y, const mpfr_t t, const void *c)
 /* ---- constants of the reduction, computed with MPFR when generating ---- */
 /* With fmaf, LN2HI is ln2 rounded to float: fmaf(-k, LN2HI, x) is exact
    for every k (gen/templates/exp_fma.c.in says why), so no bits are given
-   up; LN2LO is the rest, and LN2HI + LN2LO is ln2 within 2^-49. */
-static int extra_exp_fma(char *buf, size_t n)
+   up; LN2LO is the rest, and LN2HI + LN2LO is ln2 within 2^-49.  The
+   exact variant takes both steps; the fast one only the first, whose error
+   |k (ln2 - LN2HI)| < 160 * 2^-28.9 < 2^-21.6 (|k| <= 160 before the
+   template's selects) moves e^r by that much relative, far below the fast
+   bound (2^-10).  The reduction is emitted
+   here, with its constants, as pf_exp_reduce(x, k). */
+static int extra_exp_common(char *buf, size_t n, int steps)
 {
     mpfr_t ln2, hi, lo, inv;
     mpfr_inits2(256, ln2, hi, lo, inv, (mpfr_ptr)0);
@@ -40,17 +45,44 @@ static int extra_exp_fma(char *buf, size_t n)
     mpfr_prec_round(lo, 24, MPFR_RNDN);
     mpfr_set_prec(inv, 24);
     mpfr_ui_div(inv, 1, ln2, MPFR_RNDN);
-    int len = snprintf(buf, n,
+    int len;
+    if (steps == 2)
+        len = snprintf(buf, n,
                        "/* Reduction constants, computed with MPFR by pfmathgen: 1/ln2 rounded to float,\n"
                        "   and ln2 = LN2HI + LN2LO with LN2HI ln2 rounded to float (fmaf(-k, LN2HI, x)\n"
                        "   is exact) and LN2LO the rest rounded to float. */\n"
                        "static const float PF_EXP_INVLN2 = %af;\n"
                        "static const float PF_EXP_LN2HI = %af;\n"
-                       "static const float PF_EXP_LN2LO = %af;\n\n",
+                       "static const float PF_EXP_LN2LO = %af;\n\n"
+                       "/* r = x - k ln2 in two steps (Cody-Waite): the first exact, the second\n"
+                       "   rounding once, so r is within half an ulp of x - k ln2, plus\n"
+                       "   |k| 2^-49 for ln2's own split (the error model counts both) */\n"
+                       "static inline float pf_exp_reduce(float x, float k)\n"
+                       "{\n"
+                       "    return fmaf(-k, PF_EXP_LN2LO, fmaf(-k, PF_EXP_LN2HI, x));\n"
+                       "}\n\n",
                        mpfr_get_d(inv, MPFR_RNDN), mpfr_get_d(hi, MPFR_RNDN), mpfr_get_d(lo, MPFR_RNDN));
+    else
+        len = snprintf(buf, n,
+                       "/* Reduction constants, computed with MPFR by pfmathgen: 1/ln2 and ln2\n"
+                       "   (LN2HI) rounded to float. */\n"
+                       "static const float PF_EXP_INVLN2 = %af;\n"
+                       "static const float PF_EXP_LN2HI = %af;\n\n"
+                       "/* r = x - k ln2 in one step, exact: r is off x - k ln2 by\n"
+                       "   |k (ln2 - LN2HI)| < 2^-21.6 for |k| <= 160, which moves e^r by that\n"
+                       "   much relative, far below this variant's bound; the second\n"
+                       "   Cody-Waite step would cost an fmaf a lane */\n"
+                       "static inline float pf_exp_reduce(float x, float k)\n"
+                       "{\n"
+                       "    return fmaf(-k, PF_EXP_LN2HI, x);\n"
+                       "}\n\n",
+                       mpfr_get_d(inv, MPFR_RNDN), mpfr_get_d(hi, MPFR_RNDN));
     mpfr_clears(ln2, hi, lo, inv, (mpfr_ptr)0);
     return len;
 }
+
+static int extra_exp_fma(char *buf, size_t n) { return extra_exp_common(buf, n, 2); }
+static int extra_exp_fast(char *buf, size_t n) { return extra_exp_common(buf, n, 1); }
 
 /* ---- the error model of the exact variants (gen/float/funcs.h: pf_spec.model) ----
  * y = p(r) by fmaf Horner, then y 2^k.  At each r of the domain a bound on
@@ -121,6 +153,7 @@ static int model_exp2(const fit_poly *p, int order, pf_scheme *sc)
 }
 
 #define EXP_RED "x = k ln2 + r, k = round(x/ln2), r in [-ln2/2, ln2/2] (Cody-Waite ln2 = hi + lo); exp(x) = 2^k e^r"
+#define EXP_RED_FAST "x = k ln2 + r, k = round(x/ln2), r in [-ln2/2, ln2/2] (one step, ln2 rounded to float); exp(x) = 2^k e^r"
 #define EXP2_RED "x = k + r, k = round(x), r = x - k in [-1/2, 1/2] (exact); exp2(x) = 2^k 2^r"
 
 #define CON_ONE {FIT_CON_VALUE, 0, "p(0) = 1"}
@@ -135,7 +168,7 @@ const pf_spec pf_specs_exp[] = {
     },
     {
         .func = "exp", .reduction = "ln2", .variant = "fast", .tmpl = "exp_fma", .tail = "exp_log_twopath.c", .arity = 1,
-        .reduction_text = EXP_RED, .target_text = "e^t", .g = g_exp,
+        .reduction_text = EXP_RED_FAST, .target_text = "e^t", .g = g_exp,
         .a = -HALF_LN2, .b = HALF_LN2, .parity = FIT_PARITY_NONE, .errkind = FIT_REL,
         .ncon = 5,
         .con = {CON_ONE,
@@ -143,7 +176,7 @@ const pf_spec pf_specs_exp[] = {
                 {FIT_CON_DERIV, -HALF_LN2, "p'(-ln2/2) = e^(-ln2/2)"},
                 {FIT_CON_VALUE, HALF_LN2, "p(ln2/2) = e^(ln2/2)"},
                 {FIT_CON_DERIV, HALF_LN2, "p'(ln2/2) = e^(ln2/2)"}},
-        .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_exp_fma,
+        .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_exp_fast,
     },
     {
         .func = "exp2", .reduction = "int", .variant = "exact", .tmpl = "exp2_fma", .tail = "exp_log_twopath.c", .arity = 1,

@@ -99,52 +99,57 @@ static const float pf_exp2f_C[7] = {
 
 /* exp2(x) = 2^k 2^r, k = round(x), r = x - k in [-1/2, 1/2], in float lanes
    with fmaf (one rounding each, the same bits on every clone).
-   - k: x + S, S = 1.5 * 2^23 + 254, rounds x to an integer k (ties to
-     even, S being even) and leaves k + 254 in the low bits of z;
-     r = x - (z - S) is exact.
+   - k: x + S, S = 1.5 * 2^23, rounds x to an integer k (ties to even) and
+     leaves k in the low bits of z: z's bits are 0x4b400000 + k, so
+     (z's bits << 23) is k << 23 (mod 2^32; 0x4b400000's low 9 bits are
+     zero); r = x - (z - S) is exact.
    - p(r) by Horner with fmaf; the last step fmaf(., r, c0) is the rounding
      into float (the error model in the provenance counts every step).
      p(0) = c0 = 1, so powers of two are exact.
-   - 2^k is applied as 2^k1 2^k2 (k1 = floor(k/2), both normal for |k| <=
-     252): p 2^k1 is exact and the second product rounds once, giving
-     gradual underflow to subnormals and overflow to +inf.
+   - Ordinary x (x in [-126, 127], the key below pf_exp2f_KEY_LIM) have k
+     in [-126, 127] and y 2^k normal (k = -126 only for r >= 0, where
+     y >= 1), so the product is exact: y's bits plus k << 23 (one integer
+     add) or y times 2^k.
+   - Elsewhere 2^k is applied as 2^k1 2^k2 (k1 = floor(k/2), both normal
+     for |k| <= 252): y 2^k1 is exact and the second product rounds once,
+     giving gradual underflow to subnormals and overflow to +inf; on
+     ordinary x that is the same exact product, so the same bits.
    - Past x = 160 the result is +inf and below -160 +0, selected at the
      end, where every lane has been computed: the arithmetic above stays
      valid up to there, and whatever it gives beyond is discarded (+-inf
-     included).  NaN fails both tests and stays NaN through the arithmetic.
-   With plain = 1 (the scalar form, for x where pf_exp2f_plain holds: k in
-   [-126, 126], so 2^k and the result are normal) y 2^k is one exact
-   product, the bits of y s1 s2, and the selects are left out. */
+     included).  NaN fails both tests and stays NaN through the arithmetic. */
+/* The key is |x - 1/2|'s bits (x - 1/2 is exact at the ends, and NaN's
+   bits are above every finite value's): x is ordinary when the key is at
+   most 126.5's bits, x in [-126, 127].  The array form's scan
+   (gen/templates/exp_log_twopath.c.in) takes three operations a vector. */
+static inline uint32_t pf_exp2f_key(float x) { return pf_asuint(x - 0.5f) & 0x7fffffffu; }
+#define pf_exp2f_KEY_LIM 0x42fd0001u /* the bits of 126.5f, plus one */
+/* the scalar form's test, a subset of the ordinary x in one float
+   compare */
 static inline int pf_exp2f_plain(float x) { return fabsf(x) <= 126.0f; }
-/* The array form's ordinary blocks (gen/templates/exp_log_twopath.c.in)
-   hold only x with |x| <= 160.0f, those whose key, |x|'s bits, is below
-   KEY_LIM (NaN's bits are above every finite |x|'s): the scan of a
-   block takes two operations a vector.  There pf_exp2f_bulk, the body with
-   plain = 2, applies 2^k as the two products but leaves out the selects,
-   which fire only beyond it (|x| > 160; NaN is not
-   ordinary): the bits of the full body, on a wider range than
-   pf_exp2f_plain's single product allows. */
-static inline uint32_t pf_exp2f_key(float x) { return pf_asuint(x) & 0x7fffffffu; }
-#define pf_exp2f_KEY_LIM 0x43200001u /* the bits of 160.0f, plus one */
 
 static inline float pf_exp2f_body(float x, int plain)
 {
-    /* 1.5 * 2^23 + 254: z's bit pattern is 0x4b4000fe + k */
-    const float shift = 0x1.8001fcp23f;
+    const float shift = 0x1.8p23f;
     float z = x + shift;
     float r = x - (z - shift);
     float y = pf_horner_fma(r, pf_exp2f_C, 7);
-    /* 2^k = 2^k1 2^k2, k1 = floor(k/2), k2 = k - k1, in the exponent field:
-       (zb >> 1) << 23 is (k1 + 127) << 23 (0x4b4000fe is even and its upper
-       bits shift out), and (zb << 23) is (k + 254) << 23 */
-    uint32_t zb = pf_asuint(z), e1 = (zb >> 1) << 23;
-    if (plain == 1) /* (k + 254) << 23 less 127 << 23: the bits of 2^k */
-        return y * pf_asfloat((zb << 23) - 0x3f800000u);
-    float s1 = pf_asfloat(e1);
-    float s2 = pf_asfloat((zb << 23) - e1);
-    float res = y * s1 * s2;
+    uint32_t zb = pf_asuint(z), ek = zb << 23; /* k << 23 */
+    /* y 2^k, exact and normal, the same bits either way: the array form
+       adds k << 23 to y's bits (an integer add, off the FMA pipes, which
+       the polynomial keeps busy), the scalar form multiplies by 2^k, so
+       that y stays in a float register (GCC moves y to a general register
+       and back for the add: about 1 ns more latency, measured) */
     if (plain == 2)
-        return res;
+        return pf_asfloat(pf_asuint(y) + ek);
+    if (plain == 1)
+        return y * pf_asfloat(ek + 0x3f800000u);
+    /* e1 = k1 << 23: 0x4b400000 is even, so zb >> 1 is 0x25a00000 + k1,
+       whose low 9 bits are k1's; 0x3f800000 is 127 << 23, 2^0's bits */
+    uint32_t e1 = (zb >> 1) << 23;
+    float s1 = pf_asfloat(e1 + 0x3f800000u);
+    float s2 = pf_asfloat(ek - e1 + 0x3f800000u);
+    float res = y * s1 * s2;
     res = x > 160.0f ? (float)INFINITY : res;
     res = x < -160.0f ? 0.0f : res;
     /* NaN fails both tests above; returning x + x (the input quieted) keeps
@@ -153,9 +158,19 @@ static inline float pf_exp2f_body(float x, int plain)
     return x != x ? x + x : res;
 }
 
+/* ordinary x: the scalar form's branch (plain = 1) and the array form's
+   bulk path (plain = 2) */
 static inline float pf_exp2f_ordinary(float x) { return pf_exp2f_body(x, 1); }
 static inline float pf_exp2f_inline(float x) { return pf_exp2f_body(x, 0); }
 static inline float pf_exp2f_bulk(float x) { return pf_exp2f_body(x, 2); }
+
+/* The scalar form (defined by the tail below) starts a 64-byte line: its
+   hot path is about 130 bytes of code, and where GCC's 16-byte alignment
+   happened to put it 48 bytes into a line, a call loop took 3.03 ns a
+   call against 2.76 ns when aligned (same run, Zen 4) */
+#if defined(__GNUC__)
+float pf_exp2f(float x) __attribute__((aligned(64)));
+#endif
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
    CPU has FMA (the result is the same on every clone).  Ordinary inputs
