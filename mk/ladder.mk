@@ -19,6 +19,9 @@ LADDER_LEVELS := 1 2 4 128 8192
 # A function may add levels where a peer sits between them (LADDER_EXTRA_log
 # := 0.6); tests/pfbench_ladder.c lists the levels it looks for.  In file and
 # symbol names the point is a 'p' (pf_logf_l0p6).
+# log, log2: sleef-u10 sits at 0.58 ULP (the mid-double rows); log2: sleef-u35 at 2.5
+LADDER_EXTRA_log  := 0.55 0.6
+LADDER_EXTRA_log2 := 0.55 0.6 3
 ladder_levels = $(LADDER_LEVELS) $(LADDER_EXTRA_$(1))
 ladder_tag    = $(subst .,p,$(1))
 # `make bench` times a ladder confirmed on a sample (a few minutes to build;
@@ -61,6 +64,9 @@ $(BUILD)/tests/test_ladder: tests/test_ladder.c $(BUILD)/obj/tests/pfbench_ladde
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< $(BUILD)/obj/tests/pfbench_ladder_pareto.o -o $@ $(LDFLAGS) \
 	  -fopenmp $(TEST_LIBS) -lcmocka $(LIBS_NUM)
+
+# the log and log2 rows between exact and fast against MPFR (tests/test_ladder_log.c)
+TESTS += $(BUILD)/tests/test_ladder_log
 
 # what the search chose, one row per level (from the files' provenance)
 $(LADDER_DIR)/ladder.md: $(LADDER_SRCS) mk/ladder-table.awk

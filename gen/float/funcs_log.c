@@ -18,6 +18,19 @@ static void g_log1p(mpfr_t y, const mpfr_t t, const void *c)
     mpfr_log1p(y, t, MPFR_RNDN);
 }
 
+/* log2(1+t) - t/ln2: the remainder log2's split scheme fits (r^2 q(r)) */
+static void g_log2rem(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_t a, l;
+    mpfr_inits2(mpfr_get_prec(y) + 64, a, l, (mpfr_ptr)0);
+    mpfr_log1p(a, t, MPFR_RNDN);
+    mpfr_sub(a, a, t, MPFR_RNDN);
+    mpfr_const_log2(l, MPFR_RNDN);
+    mpfr_div(y, a, l, MPFR_RNDN);
+    mpfr_clears(a, l, (mpfr_ptr)0);
+}
+
 /* m ranges of the reductions, as the templates compute them */
 #define BAL_LO (0x1.6a09e6p-1 - 1) /* float just below sqrt(2)/2, minus 1 */
 #define BAL_HI (0x1.6a09e6p+0 - 1)
@@ -212,6 +225,155 @@ static int model_log_common(const fit_poly *p, int order, pf_scheme *sc, int is_
 static int model_log(const fit_poly *p, int order, pf_scheme *sc) { return model_log_common(p, order, sc, 0); }
 static int model_log2(const fit_poly *p, int order, pf_scheme *sc) { return model_log_common(p, order, sc, 1); }
 
+/* ---- the double-evaluation scheme (gen/templates/log_dbl.c.in) ----
+ * y = p(r) PS + k KS in double, one rounding to float.  PS and KS are
+ * 1/ln2 and 1 (log2) or 1 and ln2 (log), rounded to double by MPFR. */
+static int extra_logd_common(char *buf, size_t n, int is_log2)
+{
+    mpfr_t ln2, v;
+    mpfr_inits2(256, ln2, v, (mpfr_ptr)0);
+    mpfr_const_log2(ln2, MPFR_RNDN);
+    mpfr_ui_div(v, 1, ln2, MPFR_RNDN);
+    double ks = is_log2 ? 1.0 : mpfr_get_d(ln2, MPFR_RNDN), ps = is_log2 ? mpfr_get_d(v, MPFR_RNDN) : 1.0;
+    int len = snprintf(buf, n,
+                       "/* Reconstruction constants, computed with MPFR by pfmathgen: y = p(r) PS + k KS,\n"
+                       "   %s rounded to double. */\n"
+                       "static const double PF_LOGD_KS PF_UNUSED = %a;\n"
+                       "static const double PF_LOGD_PS PF_UNUSED = %a;\n\n",
+                       is_log2 ? "PS = 1/ln2" : "KS = ln2", ks, ps);
+    mpfr_clears(ln2, v, (mpfr_ptr)0);
+    return len;
+}
+static int extra_logd(char *buf, size_t n) { return extra_logd_common(buf, n, 0); }
+static int extra_log2d(char *buf, size_t n) { return extra_logd_common(buf, n, 1); }
+
+/* Its error model, in ULP of the float result f (log: k ln2 + log(1+r);
+ * log2: k + log2(1+r)): Horner in double with fma, each step half an ulp
+ * (double) of its result carried through; kd KS and the last fma half an
+ * ulp (double) each, KS and PS's own rounding 2^-53 relative; the fit's
+ * relative error times |log(1+r)| PS; then the rounding to float, half an
+ * ULP.  The double roundings sum to below 2^-50 |f|; the fit's error is
+ * what the order buys. */
+static double ulp_d(double v)
+{
+    v = fabs(v);
+    return v < 0x1p-1022 ? 0x1p-1074 : ldexp(1.0, ilogb(v) - 52);
+}
+
+static int model_logd_common(const fit_poly *p, int order, pf_scheme *sc, int is_log2)
+{
+    if (order < 2 || p->c[0] != 0) {
+        snprintf(sc->text, sizeof sc->text, "error model: needs p(0) = 0 and order >= 2");
+        return -1;
+    }
+    const double KS = is_log2 ? 1 : M_LN2, PS = is_log2 ? 1 / M_LN2 : 1;
+    double worst = 0, worst_r = 0;
+    int worst_k = 0;
+    const int n = 4096;
+    for (int i = 0; i <= n; i++) {
+        double r = BAL_LO + (BAL_HI - BAL_LO) * i / n;
+        double q = (double)p->c[order], eq = 0;
+        for (int j = order - 1; j >= 0; j--) {
+            q = q * r + (double)p->c[j];
+            eq = eq * fabs(r) + 0.5 * ulp_d(fabs(q) + eq);
+        }
+        double g = log1p(r);
+        for (int k = -149; k <= 128; k++) {
+            double f = k * KS + g * PS;
+            if (f == 0)
+                continue; /* x = 1: r = 0, k = 0, every term is exactly 0 */
+            double e = (eq + p->max_err * fabs(g)) * PS + fabs(q) * PS * 0x1p-53 + abs(k) * KS * 0x1p-52 +
+                       0.5 * ulp_d(fabs(f)) * 2;
+            double bnd = 0.5 + e / ulp_of(f);
+            if (bnd > worst)
+                worst = bnd, worst_r = r, worst_k = k;
+        }
+    }
+    sc->ncomp = 0;
+    sc->bound_ulp = worst;
+    snprintf(sc->text, sizeof sc->text,
+             "r = m - 1 exact in float; p(r) by Horner in double with fma, y = %s by one fma in "
+             "double, one rounding to float (the model's worst point is k = %d, r = %.4f)",
+             is_log2 ? "p(r)/ln2 + k" : "p(r) + k ln2", worst_k, worst_r);
+    return 0;
+}
+static int model_logd(const fit_poly *p, int order, pf_scheme *sc) { return model_logd_common(p, order, sc, 0); }
+static int model_log2d(const fit_poly *p, int order, pf_scheme *sc) { return model_logd_common(p, order, sc, 1); }
+
+/* ---- the split scheme of log2 (gen/templates/log2_split.c.in) ----
+ * (ncomp = 0, the ladder's mid row: see model_log2m.)
+ * p(r) = r^2 q(r) fits log2(1+r) - r/ln2; the result is
+ * hi + fmaf(r2, q, w), w = fmaf(r, LL, a_lo + lo) (+ fmaf(r2_lo, q, .) when
+ * compensated), hi + lo = k + a and a + a_lo = r LH exactly.  Per k and r on
+ * a grid: q by Horner (half an ulp a step, carried through); r2's rounding
+ * (or none: r2 + r2_lo = r^2, then r2_lo q's fmaf rounds); a_lo + lo, the two
+ * fmaf and LH + LL's distance to 1/ln2 (below 2^-49 r); the fit's relative
+ * error times |log2(1+r) - r/ln2|; the last addition half an ULP.  ncomp = 1
+ * without r2_lo, 2 with it: the cheaper one within 1 ULP. */
+static double model_log2s_at(const fit_poly *p, int order, int ncomp, double *wr, int *wk)
+{
+    const double L = 1 / M_LN2;
+    double worst = 0;
+    const int n = 4096;
+    for (int i = 0; i <= n; i++) {
+        double r = BAL_LO + (BAL_HI - BAL_LO) * i / n;
+        double q = (double)p->c[order], eq = 0;
+        for (int j = order - 1; j >= 2; j--) {
+            q = q * r + (double)p->c[j];
+            eq = eq * fabs(r) + H(fabs(q) + eq);
+        }
+        double r2 = r * r, er2 = ncomp > 1 ? 0 : H(r2), rem = (log1p(r) - r) * L;
+        for (int k = -149; k <= 128; k++) {
+            double f = k + log1p(r) * L;
+            if (f == 0)
+                continue; /* x = 1: r = 0, k = 0, every term is exactly 0 */
+            if (ncomp == 0) {
+                /* u = fmaf(r2, q, r LL), t = fmaf(r, LH, u) (at k = 0 the result's own
+                   rounding), then k + t */
+                double v = fabs(r) * 0x1p-25, uv = r2 * fabs(q) + v, tv = fabs(log1p(r) * L);
+                double e = H(v) + fabs(r) * 0x1p-49 + r2 * eq + fabs(q) * er2 + eq * er2 + H(uv) +
+                           (k ? H(tv + H(uv)) : 0) + p->max_err * fabs(rem) + fabs((double)p->c[1] * r);
+                double bnd = 0.5 + e / ulp_of(f);
+                if (bnd > worst)
+                    worst = bnd, *wr = r, *wk = k;
+                continue;
+            }
+            double alo = H(r * L), lo = k ? H(k + r * L) : 0, w0 = alo + lo;
+            double w = fabs(r) * 0x1p-25 + w0, ew = H(w0) + H(w) + fabs(r) * 0x1p-49;
+            if (ncomp > 1) {
+                w += H(r2) * fabs(q);
+                ew += H(w);
+            }
+            double sv = r2 * fabs(q) + w;
+            double e = ew + r2 * eq + fabs(q) * er2 + eq * er2 + H(sv) + p->max_err * fabs(rem) +
+                       fabs((double)p->c[1] * r);
+            double bnd = 0.5 + e / ulp_of(f);
+            if (bnd > worst)
+                worst = bnd, *wr = r, *wk = k;
+        }
+    }
+    return worst;
+}
+
+/* the ladder's mid row: nothing compensated (ncomp = 0) */
+static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
+{
+    if (order < 3 || p->c[0] != 0) {
+        snprintf(sc->text, sizeof sc->text, "error model: needs p(0) = 0 and order >= 3");
+        return -1;
+    }
+    double wr = 0;
+    int wk = 0;
+    sc->ncomp = 0;
+    sc->bound_ulp = model_log2s_at(p, order, 0, &wr, &wk);
+    snprintf(sc->text, sizeof sc->text,
+             "r^2 q(r) fits log2(1+r) - r/ln2, q(r) by Horner in float with fmaf; t = fmaf(r, LH, fmaf(r^2, q, "
+             "r LL)) with r^2 rounded, then k + t, nothing compensated (the model's worst point is k = %d, "
+             "r = %.4f)",
+             wk, wr);
+    return 0;
+}
+
 #define LOG_CON_ZERO {FIT_CON_VALUE, 0, "p(0) = 0"}
 #define LOG_CON_SLOPE(s) {FIT_CON_DERIV, 0, s}
 #define BAL_TEXT "x = 2^k m, m in [0x1.6a09e6p-1, 0x1.6a09e6p+0) (balanced about 1), t = m - 1"
@@ -224,6 +386,9 @@ const pf_spec pf_specs_log[] = {
     {"log", "balanced", "exact", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
      NULL, 1.0, NULL, extra_log, model_log, NULL, "exp_log_twopath.c", 0},
+    {"log", "balanced", "mid-double", "log_dbl", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "double",
+     NULL, 1.0, NULL, extra_logd, model_logd, NULL, "exp_log_twopath.c", 0},
     {"log", "balanced", "fast", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_twopath.c", 0},
     {"log", "seed", "exact", "log_seed", 1,
@@ -240,6 +405,12 @@ const pf_spec pf_specs_log[] = {
     {"log2", "balanced", "exact", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
      NULL, 1.0, NULL, extra_log2, model_log2, "exp_log_poly.h", "exp_log_twopath.c", 0},
+    {"log2", "balanced", "mid", "log2_split", 1, BAL_TEXT, "log2(1+t) - t/ln2", g_log2rem, BAL_LO, BAL_HI,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 0")}, 10, 0, "fma",
+     NULL, 0, NULL, extra_log2, model_log2m, NULL, "exp_log_twopath.c", 4},
+    {"log2", "balanced", "mid-double", "log_dbl", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "double",
+     NULL, 1.0, NULL, extra_log2d, model_log2d, NULL, "exp_log_twopath.c", 0},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_twopath.c", 0},
     {0},

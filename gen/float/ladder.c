@@ -16,7 +16,7 @@
 int pfsweep_pairs(pf_sweep_stats *s, pf_func f, pf_fn2 fn, uint64_t seed, uint64_t n);
 
 #define LADDER_MAX_ORDER 21   /* above the library's highest exact order (13) with room */
-#define LADDER_MAX_CANDS 64
+#define LADDER_MAX_CANDS 128
 #define PAIRS_SEED 1          /* pfsweep --all's defaults */
 #define PAIRS_N (1ull << 28)
 

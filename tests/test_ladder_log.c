@@ -1,0 +1,112 @@
+/* The ladder's log and log2 rows between exact and fast (gen/float/funcs_log.c):
+ * "mid" (log2: r^2 q fits log2(1+r) - r/ln2, nothing compensated) and
+ * "mid-double" (p(r) by Horner in double, one rounding to float).  Each is
+ * generated at the order the ladder picks for a level (the L2, L0.6 and
+ * L0.55 files of `make ladder`), compiled, and measured against MPFR (ref/)
+ * on a sample that includes the hard inputs: the floats around the
+ * reduction's binade edges (m = sqrt(2)/2 at k = -1, 0, 1, 2, where k + log m
+ * cancels to +-1/2 and the result's ulp halves), around 1 (tiny r),
+ * subnormals and powers of two.  The measured maximum must be within both
+ * the level and the error model's bound (so a model that under-counts a
+ * rounding fails here), and the array form must give the scalar bits.
+ * The exhaustive proof (every float) is the ladder's own confirmation
+ * (`make ladder`; one level is 1-3 minutes, too long for `make test`). */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "compile.h"
+#include "generate.h"
+#include "pfref.h"
+#include "sweep.h"
+
+#include <dlfcn.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+static float asfloat(uint32_t u)
+{
+    float x;
+    memcpy(&x, &u, 4);
+    return x;
+}
+
+/* every float within d of x's bits */
+static void around(pf_sweep_stats *st, pf_func f, pf_fn1 s1, float x, uint32_t d)
+{
+    uint32_t b;
+    memcpy(&b, &x, 4);
+    for (uint32_t u = b - d; u != b + d; u++)
+        pf_sweep_one(st, f, s1, NULL, asfloat(u), 1.0f);
+}
+
+static void check(const char *func, const char *variant, int order, double U)
+{
+    char err[512], name[64];
+    snprintf(name, sizeof name, "tll_%s_%s_%d", func, variant[3] ? "d" : "m", order);
+    pf_gen_req rq = {.func = func, .variant = variant, .name = name, .method = "minimax", .order = order};
+    pf_gen_result r;
+    if (pf_generate(&rq, &r, err, sizeof err) != 0)
+        fail_msg("%s %s order %d: %s", func, variant, order, err);
+    assert_true(r.has_scheme);
+    void *h = pf_compile_load(r.csrc, r.clen, err, sizeof err);
+    if (!h)
+        fail_msg("%s", err);
+    char arr[96];
+    snprintf(arr, sizeof arr, "%s_array", name);
+    pf_fn1 s1;
+    void (*a1)(const float *, float *, size_t);
+    *(void **)&s1 = dlsym(h, name);
+    *(void **)&a1 = dlsym(h, arr);
+    assert_non_null(s1);
+    assert_non_null(a1);
+    pf_func f = (pf_func)pfref_lookup(func);
+    pf_sweep_stats st;
+    pf_sweep_init(&st);
+    pf_sweep_random(&st, f, s1, NULL, 4242, 1u << 17);
+    uint32_t lo, hi;
+    pf_sweep_reduced_range(f, &lo, &hi);
+    for (uint64_t b = lo; b <= hi; b += 97)
+        pf_sweep_one(&st, f, s1, NULL, asfloat((uint32_t)b), 1.0f);
+    for (int k = -1; k <= 2; k++)
+        around(&st, f, s1, ldexpf(0x1.6a09e6p-1f, k), 1u << 12);
+    around(&st, f, s1, 1.0f, 1u << 14);
+    around(&st, f, s1, 0x1p-126f, 1u << 10);
+    for (int k = -149; k <= 127; k++)
+        pf_sweep_one(&st, f, s1, NULL, ldexpf(1.0f, k), 1.0f);
+    print_message("%s: max %.3f ULP at %a (level %g, model %.3f)\n", name, st.max_ulp, (double)st.worst_x, U,
+                  r.scheme.bound_ulp);
+    assert_true(r.scheme.bound_ulp <= U);
+    assert_true(st.max_ulp <= r.scheme.bound_ulp);
+    /* the array form: the scalar bits, specials and subnormals included */
+    enum { N = 8192 };
+    static float x[N], y[N];
+    for (int i = 0; i < N; i++)
+        x[i] = asfloat((uint32_t)(i * 524287u + 977u));
+    x[0] = 0.0f, x[1] = -0.0f, x[2] = INFINITY, x[3] = -1.0f, x[4] = NAN, x[5] = 0x1p-149f, x[6] = 1.0f;
+    a1(x, y, N);
+    for (int i = 0; i < N; i++) {
+        float s = s1(x[i]);
+        assert_memory_equal(&s, &y[i], 4);
+    }
+    dlclose(h);
+    pf_gen_free(&r);
+}
+
+/* the orders the ladder picks (the L2, L0.6 and L0.55 files of make ladder) */
+static void test_log2_mid(void **st) { (void)st; check("log2", "mid", 10, 2); }
+static void test_log2_double(void **st) { (void)st; check("log2", "mid-double", 10, 0.6); }
+static void test_log_double(void **st) { (void)st; check("log", "mid-double", 11, 0.55); }
+
+int main(void)
+{
+    const struct CMUnitTest t[] = {
+        cmocka_unit_test(test_log2_mid),
+        cmocka_unit_test(test_log2_double),
+        cmocka_unit_test(test_log_double),
+    };
+    return cmocka_run_group_tests(t, NULL, NULL);
+}
