@@ -20,6 +20,9 @@ LADDER_LEVELS := 1 2 4 128 8192
 # := 0.6); tests/pfbench_ladder.c lists the levels it looks for.  In file and
 # symbol names the point is a 'p' (pf_logf_l0p6).
 ladder_levels = $(LADDER_LEVELS) $(LADDER_EXTRA_$(1))
+# acos: SLEEF u35 sits at 1.28 ULP, between 1 and 1.5 (the mid scheme's floor
+# is about 1.1: gen/templates/acos_mid.c.in)
+LADDER_EXTRA_acos := 1.25
 ladder_tag    = $(subst .,p,$(1))
 # `make bench` times a ladder confirmed on a sample (a few minutes to build;
 # the bench measures every point's error itself, like the peers'); `make
