@@ -72,3 +72,9 @@ $(LADDER_DIR)/ladder.md: $(LADDER_SRCS) mk/ladder-table.awk
 	   for f in $(LADDER_SRCS); do awk -f mk/ladder-table.awk $$f; done; } > $@
 	@echo "  wrote $@"
 ladder: $(LADDER_DIR)/ladder.md
+
+# the atrig mid rows on the ladder (asin, acos, atan, atan2), against MPFR
+TESTS += $(BUILD)/tests/test_ladder_atrig
+$(BUILD)/tests/test_ladder_atrig: tests/test_ladder_atrig.c $(TEST_LIBS) | $(BUILD)/pfmathgen
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) -fopenmp $(TEST_LIBS) -lcmocka $(LIBS_NUM)
