@@ -185,13 +185,21 @@ static int extra_pi_float(char *buf, size_t n)
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = ASIN_FAST_CON,               \
      .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float,          \
      .model = mo, .tail = "asin_acos_tail.c"}
+/* The exact atan/atan2 template's ladder cost: its three-way reduction, the
+   quotient's residual and the hi + lo steps.  The default rule (8 over the
+   fast template) made order 9 of it look as cheap as the fast template's
+   order 17, at 2.2x its time.  From one pfbench run (AVX-512, ns per
+   element, ladder points): fast order 13 (cost 14) 0.244, mid order 17
+   (cost 22) 0.342, exact order 11 0.545: a line through the first two puts
+   the exact one at cost 39, 27 over its Horner terms (AVX2: 22). */
+#define ATAN_EXACT_LADDER_COST 26
 #define ROW_ATAN_EXACT(fn, tm, ar, red)                                                           \
     {.func = fn, .reduction = "recip", .variant = "exact", .tmpl = tm, .arity = ar,               \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 0.5,              \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
      .default_order = ATAN_EXACT_ORDER, .real = "fma", .ulp_bound = 1.0,                          \
      .extra = ar == 2 ? extra_pi_m4 : extra_pi_ff, .model = ar == 2 ? pf_model_atan2 : pf_model_atan, \
-     .ladder_cost = 30}
+     .ladder_cost = ATAN_EXACT_LADDER_COST}
 #define ROW_ATAN_FAST(fn, tm, ar, red)                                                            \
     {.func = fn, .reduction = "recip", .variant = "fast", .tmpl = tm, .arity = ar,                \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
