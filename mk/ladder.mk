@@ -23,6 +23,9 @@ LADDER_LEVELS := 1 2 4 128 8192
 LADDER_EXTRA_log  := 0.55 0.6
 LADDER_EXTRA_log2 := 0.55 0.6 3
 ladder_levels = $(LADDER_LEVELS) $(LADDER_EXTRA_$(1))
+# acos: SLEEF u35 sits at 1.28 ULP, between 1 and 1.5 (the mid scheme's floor
+# is about 1.1: gen/templates/acos_mid.c.in)
+LADDER_EXTRA_acos := 1.25
 ladder_tag    = $(subst .,p,$(1))
 # `make bench` times a ladder confirmed on a sample (a few minutes to build;
 # the bench measures every point's error itself, like the peers'); `make
@@ -75,3 +78,9 @@ $(LADDER_DIR)/ladder.md: $(LADDER_SRCS) mk/ladder-table.awk
 	   for f in $(LADDER_SRCS); do awk -f mk/ladder-table.awk $$f; done; } > $@
 	@echo "  wrote $@"
 ladder: $(LADDER_DIR)/ladder.md
+
+# the atrig mid rows on the ladder (asin, acos, atan, atan2), against MPFR
+TESTS += $(BUILD)/tests/test_ladder_atrig
+$(BUILD)/tests/test_ladder_atrig: tests/test_ladder_atrig.c $(TEST_LIBS) | $(BUILD)/pfmathgen
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) -fopenmp $(TEST_LIBS) -lcmocka $(LIBS_NUM)

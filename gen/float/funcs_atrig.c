@@ -43,6 +43,10 @@ int pf_model_atan(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_atan2(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_asin_fast(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_acos_fast(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_asin_mid(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_acos_mid(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_atan_mid(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_atan2_mid(const fit_poly *p, int order, pf_scheme *sc);
 
 /* ---- fit targets, in the fit variable t ---- */
 static void g_asin(mpfr_t y, const mpfr_t t, const void *c)
@@ -181,17 +185,48 @@ static int extra_pi_float(char *buf, size_t n)
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = ASIN_FAST_CON,               \
      .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float,          \
      .model = mo, .tail = "asin_acos_tail.c"}
+/* The exact atan/atan2 template's ladder cost: its three-way reduction, the
+   quotient's residual and the hi + lo steps.  The default rule (8 over the
+   fast template) made order 9 of it look as cheap as the fast template's
+   order 17, at 2.2x its time.  From one pfbench run (AVX-512, ns per
+   element, ladder points): fast order 13 (cost 14) 0.244, mid order 17
+   (cost 22) 0.342, exact order 11 0.545: a line through the first two puts
+   the exact one at cost 39, 27 over its Horner terms (AVX2: 22). */
+#define ATAN_EXACT_LADDER_COST 26
 #define ROW_ATAN_EXACT(fn, tm, ar, red)                                                           \
     {.func = fn, .reduction = "recip", .variant = "exact", .tmpl = tm, .arity = ar,               \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 0.5,              \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
      .default_order = ATAN_EXACT_ORDER, .real = "fma", .ulp_bound = 1.0,                          \
-     .extra = ar == 2 ? extra_pi_m4 : extra_pi_ff, .model = ar == 2 ? pf_model_atan2 : pf_model_atan}
+     .extra = ar == 2 ? extra_pi_m4 : extra_pi_ff, .model = ar == 2 ? pf_model_atan2 : pf_model_atan, \
+     .ladder_cost = ATAN_EXACT_LADDER_COST}
 #define ROW_ATAN_FAST(fn, tm, ar, red)                                                            \
     {.func = fn, .reduction = "recip", .variant = "fast", .tmpl = tm, .arity = ar,                \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 3, .con = ATAN_FAST_CON,               \
      .default_order = 0, .fast_target = 0x1p-10, .real = "fma", .extra = extra_pi_float}
+
+/* The mid rows (variant "mid": ladder only, pfmathgen --max-ulp; the library
+   does not ship them): the exact rows' fits (asin on [0, 1/2]) or the fast
+   reduction's domain (atan on [0, 1], one division) with only the slope at 0
+   constrained, evaluated as K + m v + c with K + m v exact and one final
+   rounding, but the reduced argument (sqrtf, the quotient) rounded once and
+   not carried as hi + lo (gen/templates/{asin,acos,atan,atan2}_mid.c.in).  Their cost over the
+   fast template: the low part of K and a Fast2Sum, about two fmaf (4); the
+   default order is what pfmathgen --variant would take, were it asked. */
+#define MID_LADDER_COST 4
+#define ROW_ASIN_MID(fn, tm, red, mo)                                                             \
+    {.func = fn, .reduction = "sqrthalf", .variant = "mid", .tmpl = tm, .arity = 1,               \
+     .reduction_text = red, .target_text = "asin(t)", .g = g_asin, .a = 0, .b = 0.5,              \
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
+     .default_order = 11, .real = "fma", .extra = extra_pi_ff, .model = mo,                       \
+     .tail = "asin_acos_tail.c", .ladder_cost = MID_LADDER_COST}
+#define ROW_ATAN_MID(fn, tm, ar, red, mo)                                                         \
+    {.func = fn, .reduction = "recip", .variant = "mid", .tmpl = tm, .arity = ar,                 \
+     .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
+     .default_order = 19, .real = "fma", .extra = extra_pi_ff, .model = mo,                       \
+     .ladder_cost = MID_LADDER_COST}
 
 const pf_spec pf_specs_atrig[] = {
     ROW_ASIN_EXACT("asin", "asin_ff", ASIN_RED, pf_model_asin),
@@ -202,5 +237,9 @@ const pf_spec pf_specs_atrig[] = {
     ROW_ATAN_FAST("atan", "atan_fast", 1, ATAN_RED_FAST),
     ROW_ATAN_EXACT("atan2", "atan2_ff", 2, ATAN2_RED),
     ROW_ATAN_FAST("atan2", "atan2_fast", 2, ATAN2_RED_FAST),
+    ROW_ASIN_MID("asin", "asin_mid", ASIN_RED, pf_model_asin_mid),
+    ROW_ASIN_MID("acos", "acos_mid", ACOS_RED, pf_model_acos_mid),
+    ROW_ATAN_MID("atan", "atan_mid", 1, ATAN_RED_FAST, pf_model_atan_mid),
+    ROW_ATAN_MID("atan2", "atan2_mid", 2, ATAN2_RED_FAST, pf_model_atan2_mid),
     {0},
 };

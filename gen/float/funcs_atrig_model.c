@@ -290,3 +290,156 @@ int pf_model_acos_fast(const fit_poly *p, int order, pf_scheme *sc)
 {
     return model_asin_acos_fast(p, order, sc, 1);
 }
+
+/* ---- the mid schemes (gen/templates/{asin,acos,atan,atan2}_mid.c.in) ----
+ * result = K + m v + c, c = fmaf(m v z, q, klo), K + m v exact as h + l
+ * (Fast2Sum), l + c rounded, then one final rounding.  What the exact
+ * schemes keep as hi + lo and these round is the reduced argument:
+ * v = sqrtf(2 - 2|x|) (asin, acos) or t = fl(1/|x|), fl(n/d) (atan,
+ * atan2), within half an ULP of itself; the result moves by that times the
+ * slope of the folded polynomial (2 asin(S/2): 1/sqrt(1 - S^2/4) <= 1.16;
+ * atan: 1/(1 + t^2)).  atan's polynomial runs up to z = 1, where q's
+ * roundings no longer shrink by z per step: each is bounded by half an ULP
+ * of its own partial sum (not u times it, which is up to twice that), and
+ * so is every other rounding here.  The figure is a bound for any level
+ * (the ladder compares it with its U), reported as is. */
+/* the rounding error of an operation whose exact result is r: half an ULP,
+   of the binade below when r is a power of 2 (which rounds to itself; the
+   grid's t = 1, z = 1 would otherwise count the larger ULP) */
+static double half_ulp(double r)
+{
+    return r == 0 ? 0 : 0.5 * ulp_of(fabs(r) * (1 - 0x1p-40));
+}
+
+/* q(z) = c3 + c5 z + ... by fmaf Horner: value, *err the running bound of
+   its roundings plus |q'(z)| dz (z's own error, through the derivative: at
+   z near 1 the alternating partial sums would overcount it) */
+static double q_horner_mid(const model *m, double z, double dz, double *err)
+{
+    double s = (double)m->p->c[m->order], e = 0, ds = 0;
+    for (int k = m->order - 2; k >= 3; k -= 2) {
+        double sn = s * z + (double)m->p->c[k];
+        ds = ds * z + s;
+        e = e * fabs(z) + half_ulp(sn);
+        s = sn;
+    }
+    *err = e + fabs(ds) * dz;
+    return s;
+}
+
+/* one point: v the reduced argument as computed (|v|), z and dz, red the
+   error of v moved to the result, K, klo the constant, kerr its
+   representation error */
+static void point_mid(model *m, double x, double truth, double K, double klo, double v, double z,
+                      double dz, double red, double kerr)
+{
+    double eq, q = q_horner_mid(m, z, dz, &eq);
+    double vz = fabs(v * z), c = fabs(vz * q) + fabs(klo);
+    /* fl(v z), the fmaf; with K = 0 h = v, l = 0 and l + c = c exactly */
+    double e = m->eps * fabs(v + v * z * q) + red + kerr + vz * eq + half_ulp(vz) * fabs(q) +
+               half_ulp(c) + (K != 0 ? half_ulp(c + half_ulp(K + v)) : 0);
+    double b = 0.5 + e / ulp_of(truth);
+    if (b > m->worst) {
+        m->worst = b;
+        m->at = x;
+    }
+}
+
+#define MID_TEXT_SQRT                                                                              \
+    "q(z) by fmaf Horner in float; K + m v + fmaf(m v z, q, klo), v = |x| or S = sqrtf(2 - 2|x|) " \
+    "(rounded once, no residual), K + m v exact (Fast2Sum), K = pi/2, pi as float hi + lo; one "  \
+    "final rounding"
+#define MID_TEXT_QUOT                                                                              \
+    "q(z) by fmaf Horner in float; K + m t + fmaf(m t z, q, klo), t = min/max (one division, "    \
+    "rounded once), K + m t exact (Fast2Sum), K = pi/2, pi as float hi + lo; one final rounding"
+
+static int finish_mid(const model *m, pf_scheme *sc, const char *text)
+{
+    sc->ncomp = 0;
+    sc->bound_ulp = m->worst;
+    snprintf(sc->text, sizeof sc->text, "%s; the model's bound %.3f ULP (at x = %a)", text, m->worst,
+             m->at);
+    return 0;
+}
+
+static void sqrt_branch_mid(model *m, double x, double truth, double K, double klo)
+{
+    double w = (1 - fabs(x)) / 2, S = 2 * sqrt(w);
+    point_mid(m, x, truth, K, klo, S, w, 0, half_ulp(S) / sqrt(1 - S * S / 4), 0x1p-48 * K);
+}
+
+static int model_asin_acos_mid(const fit_poly *p, int order, pf_scheme *sc, int acos_)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio2 = acos(-1.0) / 2;
+    double klo2 = pio2 - (double)(float)pio2, klo1 = 2 * pio2 - (double)(float)(2 * pio2);
+    for (int i = 1; i <= NGRID; i++) {
+        double x = 0.5 * i / NGRID;               /* (0, 1/2] */
+        double xb = 0.5 + 0.5 * i / NGRID;        /* (1/2, 1] */
+        double xt = ldexp(0.5, -i * 40 / NGRID);  /* toward 0 */
+        xb = xb < 1 ? xb : 1 - 0x1p-24;
+        if (!acos_) {
+            point_mid(&m, x, asin(x), 0, 0, x, x * x, half_ulp(x * x), 0, 0);
+            point_mid(&m, xt, asin(xt), 0, 0, xt, xt * xt, half_ulp(xt * xt), 0, 0);
+            sqrt_branch_mid(&m, xb, asin(xb), pio2, klo2);
+        } else {
+            point_mid(&m, x, acos(x), pio2, klo2, x, x * x, half_ulp(x * x), 0, 0x1p-48 * pio2);
+            point_mid(&m, -x, acos(-x), pio2, klo2, x, x * x, half_ulp(x * x), 0, 0x1p-48 * pio2);
+            sqrt_branch_mid(&m, xb, acos(xb), 0, 0);
+            sqrt_branch_mid(&m, -xb, acos(-xb), 2 * pio2, klo1);
+        }
+    }
+    return finish_mid(&m, sc, MID_TEXT_SQRT);
+}
+
+int pf_model_asin_mid(const fit_poly *p, int order, pf_scheme *sc)
+{
+    return model_asin_acos_mid(p, order, sc, 0);
+}
+
+int pf_model_acos_mid(const fit_poly *p, int order, pf_scheme *sc)
+{
+    return model_asin_acos_mid(p, order, sc, 1);
+}
+
+/* t = fl(n/d) in (0, 1]: K + sg atan(t); rnd = 0 when t is exact (atan's
+   |x| <= 1, t = |x|) */
+static void mid_quot(model *m, double x, double truth, double K, double klo, double t, int rnd)
+{
+    double red = rnd ? half_ulp(t) / (1 + t * t) : 0;
+    point_mid(m, x, truth, K, klo, t, t * t, half_ulp(t * t), red, 0x1p-48 * K);
+}
+
+int pf_model_atan_mid(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio2 = acos(-1.0) / 2, klo2 = pio2 - (double)(float)pio2;
+    for (int i = 1; i <= NGRID; i++) {
+        double t = (double)i / NGRID;               /* (0, 1] */
+        double tt = ldexp(1.0, -i * 40 / NGRID);    /* toward 0 */
+        mid_quot(&m, t, atan(t), 0, 0, t, 0);
+        mid_quot(&m, tt, atan(tt), 0, 0, tt, 0);
+        double tb = fmin(t, 1 - 0x1p-24);   /* fl(1/a) < 1 for a > 1 */
+        mid_quot(&m, 1 / tb, atan(1 / tb), pio2, klo2, tb, 1);
+        mid_quot(&m, 1 / tt, atan(1 / tt), pio2, klo2, tt, 1);
+    }
+    return finish_mid(&m, sc, MID_TEXT_QUOT);
+}
+
+int pf_model_atan2_mid(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio2 = acos(-1.0) / 2;
+    double klo[3] = {0, pio2 - (double)(float)pio2, 2 * pio2 - (double)(float)(2 * pio2)};
+    for (int swap = 0; swap <= 1; swap++)
+        for (int negx = 0; negx <= 1; negx++) {
+            int k = swap ? 1 : 2 * negx;   /* K = k pi/2 */
+            double sg = swap != negx ? -1 : 1, K = k * pio2;
+            for (int i = 1; i <= NGRID; i++) {
+                double t = (double)i / NGRID, tt = ldexp(1.0, -i * 40 / NGRID);
+                mid_quot(&m, t, K + sg * atan(t), K, klo[k], t, 1);
+                mid_quot(&m, tt, K + sg * atan(tt), K, klo[k], tt, 1);
+            }
+        }
+    return finish_mid(&m, sc, MID_TEXT_QUOT);
+}
