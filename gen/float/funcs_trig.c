@@ -314,16 +314,19 @@ static double mid_ulp(double f) /* an ulp of a float near |f|, from below */
     frexp(fabs(f) * (1 - 0x1p-6), &e);
     return ldexp(1.0, e - 24);
 }
-static double mid_bound(const fit_poly *p, int tan_, int cos_, double b, double *at)
+/* form: 0 tan's w = fmaf(r z, q, c), q = c3 + c5 z + ...; 1 sin and cos's
+   w = fmaf(t, c3, fmaf(t z, q5, c)), t = r z, q5 = c5 + c7 z + ...; 2 the
+   same with t = r^3 rounded once (z + fmaf(r, r, -z) = r^2 exactly) */
+static double mid_bound(const fit_poly *p, int tan_, int cos_, int form, double b, double *at)
 {
     const double u = 0x1p-24;
     double part[3];
     int bits[2] = {24, 24};
     pio2_split(3, bits, 24, part);
     double cmax = ldexp(1.0, MID_LOG2) * 0.6366197723675814 * part[2] * 1.0001;
-    int nq = 0;
-    double a[FIT_MAX_ORDER + 1];
-    for (int k = 3; k <= p->order; k += 2)
+    int nq = 0, k0 = form ? 5 : 3;
+    double a[FIT_MAX_ORDER + 1], c3 = p->order >= 3 ? (double)p->c[3] : 0;
+    for (int k = k0; k <= p->order; k += 2)
         a[nq++] = (double)p->c[k];
     double worst = 0;
     *at = 0;
@@ -332,14 +335,21 @@ static double mid_bound(const fit_poly *p, int tan_, int cos_, double b, double 
         double r = i < MID_GRID / 4 ? MID_RMIN * pow(0x1p-6 / MID_RMIN, (double)i / (MID_GRID / 4))
                                     : 0x1p-6 + (b - 0x1p-6) * (i - MID_GRID / 4) / (0.75 * MID_GRID);
         double z = r * r, ez = mid_hu(z);
-        double s = nq ? a[nq - 1] : 0, es = 0;
+        double s = nq ? a[nq - 1] : 0, es = 0; /* q or q5 and its error */
         for (int j = nq - 2; j >= 0; j--) {
             double v = s * z + a[j];
             es = fabs(z) * es + fabs(s) * ez + mid_hu(v);
             s = v;
         }
-        double t = r * z, et = r * ez + mid_hu(t);
-        double w = t * s, ew = nq ? fabs(t) * es + fabs(s) * et + mid_hu(fabs(w) + cmax) : 0;
+        double t = r * z, et = form == 2 ? mid_hu(t) + mid_hu(r * u * z) : r * ez + mid_hu(t), ew = 0;
+        if (form == 0 && nq) {
+            double w = t * s;
+            ew = fabs(t) * es + fabs(s) * et + mid_hu(fabs(w) + cmax);
+        } else if (form && p->order >= 3) {
+            double tz = t * z, etz = fabs(z) * et + fabs(t) * ez + mid_hu(tz), in = tz * s;
+            double ein = nq ? fabs(tz) * es + fabs(s) * etz + mid_hu(fabs(in) + cmax) : 0;
+            ew = fabs(c3) * et + ein + mid_hu(fabs(c3 * t + in) + cmax);
+        }
         double f = tan_ ? tan(r) : sin(r), df = tan_ ? 1 + f * f : cos(r);
         double err = ew + p->max_err * fabs(f) + mid_hu(r) * df;
         if (cos_ && r > 1.5707963267948966 - 1)
@@ -352,15 +362,18 @@ static double mid_bound(const fit_poly *p, int tan_, int cos_, double b, double 
     return worst;
 }
 
-static int model_mid(const fit_poly *p, pf_scheme *sc, int tan_, int cos_, double b)
+static int model_mid(const fit_poly *p, pf_scheme *sc, int tan_, int cos_, int form, double b)
 {
     double at;
-    sc->ncomp = 0;
-    sc->bound_ulp = mid_bound(p, tan_, cos_, b, &at);
+    sc->ncomp = form == 2;
+    sc->bound_ulp = mid_bound(p, tan_, cos_, form, b, &at);
     snprintf(sc->text, sizeof sc->text,
              "float lanes with fmaf: r carries one rounding (tail c = -m P3 kept apart), %s; "
              "first-order bound's worst r = %.4g",
-             tan_ ? "r + (r z q(z) + c), -1/p for n odd" : "r + (r z q(z) + c)", at);
+             tan_ ? "r + (r z q(z) + c), -1/p for n odd"
+             : form == 2 ? "r + (c3 r^3 + r^3 z q5(z) + c), r^3 rounded once (r^2 = z + fmaf(r, r, -z))"
+                         : "r + (c3 r^3 + r^3 z q5(z) + c), r^3 = r z",
+             at);
     return 0;
 }
 
@@ -389,17 +402,28 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
 static int model_mid_sin(const fit_poly *p, int order, pf_scheme *sc)
 {
     (void)order;
-    return model_mid(p, sc, 0, 0, 1.5707963267948966 + MID_PAST);
+    return model_mid(p, sc, 0, 0, 1, 1.5707963267948966 + MID_PAST);
 }
 static int model_mid_cos(const fit_poly *p, int order, pf_scheme *sc)
 {
     (void)order;
-    return model_mid(p, sc, 0, 1, 1.5707963267948966 + MID_PAST);
+    return model_mid(p, sc, 0, 1, 1, 1.5707963267948966 + MID_PAST);
+}
+/* the same with r^3 rounded once: one compensated step (@NCOMP@ = 1) */
+static int model_mid_sin_c(const fit_poly *p, int order, pf_scheme *sc)
+{
+    (void)order;
+    return model_mid(p, sc, 0, 0, 2, 1.5707963267948966 + MID_PAST);
+}
+static int model_mid_cos_c(const fit_poly *p, int order, pf_scheme *sc)
+{
+    (void)order;
+    return model_mid(p, sc, 0, 1, 2, 1.5707963267948966 + MID_PAST);
 }
 static int model_mid_tan(const fit_poly *p, int order, pf_scheme *sc)
 {
     (void)order;
-    return model_mid(p, sc, 1, 0, 0.7853981633974483 + MID_PAST);
+    return model_mid(p, sc, 1, 0, 0, 0.7853981633974483 + MID_PAST);
 }
 
 /* ---- rows ---- */
@@ -450,20 +474,25 @@ static int model_mid_tan(const fit_poly *p, int order, pf_scheme *sc)
 
 #define RED_MID ", Cody-Waite with FMA in float |x| < 2^16 (r2 + c, one rounding), Payne-Hanek beyond (array: only in blocks holding such an x)"
 /* mid (ladder only, --max-ulp): float lanes, r + r^3 q(r^2) with c1 = 1
-   exact; ladder_cost 8: the float reduction (three fmaf, a subtraction, the
-   tail's product) and the final addition, beside 2 a Horner term */
-#define ROW_SIN_MID(fn, phase, red, mdl)                                                           \
-    {.func = fn, .reduction = "pi", .variant = "mid", .tmpl = "sin_cw_float", .arity = 1,         \
+   exact; ladder_cost 10: the float reduction (three fmaf, a subtraction, the
+   tail's product), the final subtraction and the split-off c3 term's two
+   operations, beside 2 a Horner term.  Two rows: "mid", r^3 = r z, and
+   "mid-r3", r^3 rounded once (model *_c: one compensated step, 8 more by
+   the ladder's cost).  The variant names differ so that pf_generate finds
+   each (it looks a row up by function, variant and reduction). */
+#define ROW_SIN_MID(fn, var, phase, red, mdl)                                                       \
+    {.func = fn, .reduction = "pi", .variant = var, .tmpl = "sin_cw_float", .arity = 1,           \
      .head = "trig_ph.h", .tail = "tail_twopath.c",                                               \
      .reduction_text = red RED_MID, .target_text = "sin(t)", .g = g_sin, .a = 0,                  \
      .b = PIO2 + MID_PAST, .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1,               \
      .con = {CON_SLOPE1}, .default_order = SIN_EXACT_ORDER, .real = "fma", .kscale = phase,       \
-     .extra = extra_trig_mid, .model = mdl, .ladder_cost = 8}
+     .extra = extra_trig_mid, .model = mdl, .ladder_cost = 10}
 
 const pf_spec pf_specs_trig[] = {
     ROW_SIN_EXACT("sin", "0", SIN_RED),
     SIN_FAST_ROW,
-    ROW_SIN_MID("sin", "0", SIN_RED, model_mid_sin),
+    ROW_SIN_MID("sin", "mid", "0", SIN_RED, model_mid_sin),
+    ROW_SIN_MID("sin", "mid-r3", "0", SIN_RED, model_mid_sin_c),
     ROW_SIN_EXACT("cos", "1", COS_RED),
     /* cos, fast: the even polynomial of cos on the reduction of sin (two
        fewer additions a vector than sin(x + pi/2), no |r| and no clamp:
@@ -475,7 +504,8 @@ const pf_spec pf_specs_trig[] = {
      .reduction_text = COS_RED_EVEN RED_FAST, .target_text = "cos(t)", .g = g_cos, .a = 0, .b = PIO2,
      .parity = FIT_PARITY_EVEN, .errkind = FIT_ABS, .ncon = 2, .con = COS_FAST_CON,
      .default_order = 0, .fast_target = 0x1.cp-12, .real = "fma", .extra = extra_sincos_float},
-    ROW_SIN_MID("cos", "1", COS_RED, model_mid_cos),
+    ROW_SIN_MID("cos", "mid", "1", COS_RED, model_mid_cos),
+    ROW_SIN_MID("cos", "mid-r3", "1", COS_RED, model_mid_cos_c),
     {.func = "tan", .reduction = "pio2", .variant = "exact", .tmpl = "tan_pio2", .arity = 1,
      .head = "trig_ph.h", .tail = "tail_twopath.c",
      .reduction_text = TAN_RED RED_EXACT, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
