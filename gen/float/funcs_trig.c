@@ -290,9 +290,10 @@ static int extra_trig_mid(char *buf, size_t n)
                          fmaf w = r z q + c, propagated to w to first order
    + the fit error       max_err |f(r)| (relative fit)
    + the reduction       r2's one rounding, hu(r), times |f'(r)|; cos
-                         (s = 1): for |x| < 1, r1 = x - P1 rounds too (x is
-                         finer than P1), hu(r) |f'(r)| more where
-                         |r| > pi/2 - 1
+                         (s = 1): for |x| < 1, r1 = x - P1 (m = 1) rounds
+                         too when |r1| >= 1 (x is finer than P1 there; below
+                         1 it is a multiple of 2^-24 and exact), hu(r)
+                         |f'(r)| more where |r| > 1 - 2^-20
    + the tail c          its rounding u |c| and the term dropped from
                          f(r2 + c) (sin: |c| r^2 / 2, tan: |c| tan^2 r),
                          |c| <= 2^MID_LOG2 2/pi P3
@@ -352,7 +353,7 @@ static double mid_bound(const fit_poly *p, int tan_, int cos_, int form, double 
         }
         double f = tan_ ? tan(r) : sin(r), df = tan_ ? 1 + f * f : cos(r);
         double err = ew + p->max_err * fabs(f) + mid_hu(r) * df;
-        if (cos_ && r > 1.5707963267948966 - 1)
+        if (cos_ && r > 1 - 0x1p-20)
             err += mid_hu(r) * df;
         err += u * cmax + cmax * (tan_ ? f * f : z / 2);
         double ulp = 0.5 + err / mid_ulp(f) + (tan_ ? 0.5 : 0);
