@@ -286,8 +286,9 @@ static int extra_trig_mid(char *buf, size_t n)
    above the grid point, so that the points between are covered); an
    absolute error E costs E / ulp(f(r)) ULP (the binade taken 2^-6 below):
      0.5                 the final subtraction r - v (sin, cos) or addition
-   + the roundings of w  z = r^2, Horner on z for q (c3, c5, ...), r z, the
-                         fmaf w = r z q + c, propagated to w to first order
+   + the roundings of w  z = r^2, Horner on z, r z (or r^3 once), and the
+                         fmafs forming w (mid_bound's forms), propagated to
+                         w to first order
    + the fit error       max_err |f(r)| (relative fit)
    + the reduction       r2's one rounding, hu(r), times |f'(r)|; cos
                          (s = 1): for |x| < 1, r1 = x - P1 (m = 1) rounds
