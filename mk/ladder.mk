@@ -27,6 +27,10 @@ ladder_levels = $(LADDER_LEVELS) $(LADDER_EXTRA_$(1))
 # is about 1.1: gen/templates/acos_mid.c.in)
 LADDER_EXTRA_acos := 1.25
 ladder_tag    = $(subst .,p,$(1))
+# trig: the mid rows (float Cody-Waite, gen/float/funcs_trig.c) reach 3 ULP
+LADDER_EXTRA_sin := 3
+LADDER_EXTRA_cos := 3
+LADDER_EXTRA_tan := 3
 # `make bench` times a ladder confirmed on a sample (a few minutes to build;
 # the bench measures every point's error itself, like the peers'); `make
 # bench LADDER_SAMPLE=0` times the exhaustively confirmed one of `make ladder`.
@@ -70,6 +74,12 @@ $(BUILD)/tests/test_ladder: tests/test_ladder.c $(BUILD)/obj/tests/pfbench_ladde
 
 # the log and log2 rows between exact and fast against MPFR (tests/test_ladder_log.c)
 TESTS += $(BUILD)/tests/test_ladder_log
+
+# the trig mid rows at --max-ulp 3 against MPFR on the reduction's hard inputs
+TESTS += $(BUILD)/tests/test_ladder_trig
+$(BUILD)/tests/test_ladder_trig: tests/test_ladder_trig.c $(TEST_LIBS) | $(BUILD)/pfmathgen
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) -fopenmp $(TEST_LIBS) -lcmocka $(LIBS_NUM)
 
 # what the search chose, one row per level (from the files' provenance)
 $(LADDER_DIR)/ladder.md: $(LADDER_SRCS) mk/ladder-table.awk

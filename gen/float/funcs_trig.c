@@ -38,6 +38,7 @@
  *   max(2^-10 relative, 2^-11 absolute) holds for every finite float. */
 #include "funcs.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdint.h>
 #include <string.h>
@@ -253,6 +254,131 @@ static int extra_trig_float(char *buf, size_t n, int nparts)
 static int extra_sincos_float(char *buf, size_t n) { return extra_trig_float(buf, n, 2); }
 static int extra_tan_float(char *buf, size_t n) { return extra_trig_float(buf, n, 3); }
 
+/* Mid variants (ladder only; sin_cw_float.c.in, tan_cw_float.c.in): float
+   lanes, Cody-Waite with FMA for |x| < 2^MID_LOG2 with three 24-bit parts of
+   pi/2 (the first two truncated prefixes, the third rounded: pi/2 - P1 - P2
+   - P3 < 2^-72), the third kept apart as c = -m P3 so that r carries a single
+   rounding (the templates' comments).  2^16 keeps the bench's [-1e4, 1e4]
+   on the Cody-Waite path and |c| <= 2^16 P3 < 2^-32. */
+#define MID_LOG2 16
+static int extra_trig_mid(char *buf, size_t n)
+{
+    double part[3];
+    int bits[2] = {24, 24};
+    pio2_split(3, bits, 24, part);
+    int len = snprintf(buf, n,
+                       "/* Reduction constants, computed with MPFR by pfmathgen (gen/float/funcs_trig.c):\n"
+                       "   2/pi rounded to float; pi/2 = P1 + P2 + P3 + O(2^-72), P1 and P2 24-bit\n"
+                       "   prefixes, P3 rounded; Cody-Waite with FMA for |x| < 2^%d. */\n"
+                       "static const float PF_TRIG_2OPIF = %af;\n"
+                       "static const float PF_TRIG_PIO2F[3] = {%af, %af, %af};\n"
+                       "static const uint32_t PF_TRIG_CW_LIMIT = 0x%08xu; /* bits of 2^%d */\n",
+                       MID_LOG2, twoopi(24, 0), part[0], part[1], part[2],
+                       (unsigned)((127 + MID_LOG2) << 23), MID_LOG2);
+    if (len >= 0 && (size_t)len < n)
+        len += extra_ph(buf + len, n - (size_t)len);
+    return len;
+}
+
+/* Error model of the mid variants, a first-order bound in ULP of the result,
+   the maximum over a fine grid of r in [R_MIN, b].  Each rounding errs by
+   at most half an ulp of its value, hu(v) (the value's binade taken 2^-6
+   above the grid point, so that the points between are covered); an
+   absolute error E costs E / ulp(f(r)) ULP (the binade taken 2^-6 below):
+     0.5                 the final subtraction r - v (sin, cos) or addition
+   + the roundings of w  z = r^2, Horner on z, r z (or r^3 once), and the
+                         fmafs forming w (mid_bound's forms), propagated to
+                         w to first order
+   + the fit error       max_err |f(r)| (relative fit)
+   + the reduction       r2's one rounding, hu(r), times |f'(r)|; cos
+                         (s = 1): for |x| < 1, r1 = x - P1 (m = 1) rounds
+                         too when |r1| >= 1 (x is finer than P1 there; below
+                         1 it is a multiple of 2^-24 and exact), hu(r)
+                         |f'(r)| more where |r| > 1 - 2^-20
+   + the tail c          its rounding u |c| and the term dropped from
+                         f(r2 + c) (sin: |c| r^2 / 2, tan: |c| tan^2 r),
+                         |c| <= 2^MID_LOG2 2/pi P3
+   + tan, n odd          -1/p rounds once more: 0.5.
+   R_MIN = 2^-27.8: no float below 2^20 comes closer to a multiple of pi/2
+   (2^-28.5 units of pi/2, docs/trig.md), so no r with m != 0 is smaller
+   (m = 0 makes r = x exact and c = 0, and the error is the polynomial's). */
+#define MID_RMIN 0x1.2p-28
+#define MID_GRID 16384
+static double mid_hu(double v) /* half an ulp of a float near |v| */
+{
+    int e;
+    frexp(fabs(v) * (1 + 0x1p-6), &e);
+    return ldexp(1.0, e - 25);
+}
+static double mid_ulp(double f) /* an ulp of a float near |f|, from below */
+{
+    int e;
+    frexp(fabs(f) * (1 - 0x1p-6), &e);
+    return ldexp(1.0, e - 24);
+}
+/* form: 0 tan's w = fmaf(r z, q, c), q = c3 + c5 z + ...; 1 sin and cos's
+   w = fmaf(t, c3, fmaf(t z, q5, c)), t = r z, q5 = c5 + c7 z + ...; 2 the
+   same with t = r^3 rounded once (z + fmaf(r, r, -z) = r^2 exactly) */
+static double mid_bound(const fit_poly *p, int tan_, int cos_, int form, double b, double *at)
+{
+    const double u = 0x1p-24;
+    double part[3];
+    int bits[2] = {24, 24};
+    pio2_split(3, bits, 24, part);
+    double cmax = ldexp(1.0, MID_LOG2) * 0.6366197723675814 * part[2] * 1.0001;
+    int nq = 0, k0 = form ? 5 : 3;
+    double a[FIT_MAX_ORDER + 1], c3 = p->order >= 3 ? (double)p->c[3] : 0;
+    for (int k = k0; k <= p->order; k += 2)
+        a[nq++] = (double)p->c[k];
+    double worst = 0;
+    *at = 0;
+    for (int i = 0; i <= MID_GRID; i++) {
+        /* geometric near 0 (where |f| is small), uniform above 2^-6 */
+        double r = i < MID_GRID / 4 ? MID_RMIN * pow(0x1p-6 / MID_RMIN, (double)i / (MID_GRID / 4))
+                                    : 0x1p-6 + (b - 0x1p-6) * (i - MID_GRID / 4) / (0.75 * MID_GRID);
+        double z = r * r, ez = mid_hu(z);
+        double s = nq ? a[nq - 1] : 0, es = 0; /* q or q5 and its error */
+        for (int j = nq - 2; j >= 0; j--) {
+            double v = s * z + a[j];
+            es = fabs(z) * es + fabs(s) * ez + mid_hu(v);
+            s = v;
+        }
+        double t = r * z, et = form == 2 ? mid_hu(t) + mid_hu(r * u * z) : r * ez + mid_hu(t), ew = 0;
+        if (form == 0 && nq) {
+            double w = t * s;
+            ew = fabs(t) * es + fabs(s) * et + mid_hu(fabs(w) + cmax);
+        } else if (form && p->order >= 3) {
+            double tz = t * z, etz = fabs(z) * et + fabs(t) * ez + mid_hu(tz), in = tz * s;
+            double ein = nq ? fabs(tz) * es + fabs(s) * etz + mid_hu(fabs(in) + cmax) : 0;
+            ew = fabs(c3) * et + ein + mid_hu(fabs(c3 * t + in) + cmax);
+        }
+        double f = tan_ ? tan(r) : sin(r), df = tan_ ? 1 + f * f : cos(r);
+        double err = ew + p->max_err * fabs(f) + mid_hu(r) * df;
+        if (cos_ && r > 1 - 0x1p-20)
+            err += mid_hu(r) * df;
+        err += u * cmax + cmax * (tan_ ? f * f : z / 2);
+        double ulp = 0.5 + err / mid_ulp(f) + (tan_ ? 0.5 : 0);
+        if (ulp > worst)
+            worst = ulp, *at = r;
+    }
+    return worst;
+}
+
+static int model_mid(const fit_poly *p, pf_scheme *sc, int tan_, int cos_, int form, double b)
+{
+    double at;
+    sc->ncomp = form == 2;
+    sc->bound_ulp = mid_bound(p, tan_, cos_, form, b, &at);
+    snprintf(sc->text, sizeof sc->text,
+             "float lanes with fmaf: r carries one rounding (tail c = -m P3 kept apart), %s; "
+             "first-order bound's worst r = %.4g",
+             tan_ ? "r + (r z q(z) + c), -1/p for n odd"
+             : form == 2 ? "r + (c3 r^3 + r^3 z q5(z) + c), r^3 rounded once (r^2 = z + fmaf(r, r, -z))"
+                         : "r + (c3 r^3 + r^3 z q5(z) + c), r^3 = r z",
+             at);
+    return 0;
+}
+
 /* Error model of the exact variants (double evaluation): the reduction and
    Horner's rule in double add under 2^-48 relative (the reduction's 2^-49
    above, each fma 2^-53 on terms that do not cancel), -1/p (tan) one more
@@ -270,6 +396,36 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
         return -1;
     }
     return 0;
+}
+
+/* the mid rows' domains: past pi/2 (pi/4) by 2^-7, what the rounded x 2/pi
+   (and cos's + 1) can move r for |x| < 2^MID_LOG2 (sin_cw_float.c.in) */
+#define MID_PAST 0x1p-7
+static int model_mid_sin(const fit_poly *p, int order, pf_scheme *sc)
+{
+    (void)order;
+    return model_mid(p, sc, 0, 0, 1, 1.5707963267948966 + MID_PAST);
+}
+static int model_mid_cos(const fit_poly *p, int order, pf_scheme *sc)
+{
+    (void)order;
+    return model_mid(p, sc, 0, 1, 1, 1.5707963267948966 + MID_PAST);
+}
+/* the same with r^3 rounded once: one compensated step (@NCOMP@ = 1) */
+static int model_mid_sin_c(const fit_poly *p, int order, pf_scheme *sc)
+{
+    (void)order;
+    return model_mid(p, sc, 0, 0, 2, 1.5707963267948966 + MID_PAST);
+}
+static int model_mid_cos_c(const fit_poly *p, int order, pf_scheme *sc)
+{
+    (void)order;
+    return model_mid(p, sc, 0, 1, 2, 1.5707963267948966 + MID_PAST);
+}
+static int model_mid_tan(const fit_poly *p, int order, pf_scheme *sc)
+{
+    (void)order;
+    return model_mid(p, sc, 1, 0, 0, 0.7853981633974483 + MID_PAST);
 }
 
 /* ---- rows ---- */
@@ -318,9 +474,27 @@ static int model_double(const fit_poly *p, int order, pf_scheme *sc)
      .ncon = 3, .con = SIN_FAST_CON, .default_order = 0, .fast_target = 0x1p-10, .real = "fma",  \
      .extra = extra_sincos_float}
 
+#define RED_MID ", Cody-Waite with FMA in float |x| < 2^16 (r2 + c, one rounding), Payne-Hanek beyond (array: only in blocks holding such an x)"
+/* mid (ladder only, --max-ulp): float lanes, r + r^3 q(r^2) with c1 = 1
+   exact; ladder_cost 10: the float reduction (three fmaf, a subtraction, the
+   tail's product), the final subtraction and the split-off c3 term's two
+   operations, beside 2 a Horner term.  Two rows: "mid", r^3 = r z, and
+   "mid-r3", r^3 rounded once (model *_c: one compensated step, 8 more by
+   the ladder's cost).  The variant names differ so that pf_generate finds
+   each (it looks a row up by function, variant and reduction). */
+#define ROW_SIN_MID(fn, var, phase, red, mdl)                                                       \
+    {.func = fn, .reduction = "pi", .variant = var, .tmpl = "sin_cw_float", .arity = 1,           \
+     .head = "trig_ph.h", .tail = "tail_twopath.c",                                               \
+     .reduction_text = red RED_MID, .target_text = "sin(t)", .g = g_sin, .a = 0,                  \
+     .b = PIO2 + MID_PAST, .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1,               \
+     .con = {CON_SLOPE1}, .default_order = SIN_EXACT_ORDER, .real = "fma", .kscale = phase,       \
+     .extra = extra_trig_mid, .model = mdl, .ladder_cost = 10}
+
 const pf_spec pf_specs_trig[] = {
     ROW_SIN_EXACT("sin", "0", SIN_RED),
     SIN_FAST_ROW,
+    ROW_SIN_MID("sin", "mid", "0", SIN_RED, model_mid_sin),
+    ROW_SIN_MID("sin", "mid-r3", "0", SIN_RED, model_mid_sin_c),
     ROW_SIN_EXACT("cos", "1", COS_RED),
     /* cos, fast: the even polynomial of cos on the reduction of sin (two
        fewer additions a vector than sin(x + pi/2), no |r| and no clamp:
@@ -332,12 +506,20 @@ const pf_spec pf_specs_trig[] = {
      .reduction_text = COS_RED_EVEN RED_FAST, .target_text = "cos(t)", .g = g_cos, .a = 0, .b = PIO2,
      .parity = FIT_PARITY_EVEN, .errkind = FIT_ABS, .ncon = 2, .con = COS_FAST_CON,
      .default_order = 0, .fast_target = 0x1.cp-12, .real = "fma", .extra = extra_sincos_float},
+    ROW_SIN_MID("cos", "mid", "1", COS_RED, model_mid_cos),
+    ROW_SIN_MID("cos", "mid-r3", "1", COS_RED, model_mid_cos_c),
     {.func = "tan", .reduction = "pio2", .variant = "exact", .tmpl = "tan_pio2", .arity = 1,
      .head = "trig_ph.h", .tail = "tail_twopath.c",
      .reduction_text = TAN_RED RED_EXACT, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
      .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},
      .default_order = TAN_EXACT_ORDER, .real = "double", .ulp_bound = 1.0,
      .extra = extra_trig_double, .model = model_double},
+    {.func = "tan", .reduction = "pio2", .variant = "mid", .tmpl = "tan_cw_float", .arity = 1,
+     .head = "trig_ph.h", .tail = "tail_twopath.c",
+     .reduction_text = TAN_RED RED_MID, .target_text = "tan(t)", .g = g_tan, .a = 0,
+     .b = PIO4 + MID_PAST, .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1,
+     .con = {CON_SLOPE1}, .default_order = TAN_EXACT_ORDER, .real = "fma",
+     .extra = extra_trig_mid, .model = model_mid_tan, .ladder_cost = 9},
     {.func = "tan", .reduction = "pio2", .variant = "fast", .tmpl = "tan_pio2_fast", .arity = 1,
      .head = "trig_ph.h", .tail = "tail_twopath.c",
      .reduction_text = TAN_RED RED_FAST, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
