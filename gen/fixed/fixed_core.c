@@ -313,9 +313,14 @@ static void wrap_text(pf_buf *b, const char *label, const char *text) { pf_prov_
 
 static const char *method_text(const fx_gen *G)
 {
-    static char buf[320];
+    static char buf[512];
+    /* the exact sin/cos in 32-bit lanes (int32_t words in a 16-bit request,
+       fixed_trig.c's kind 3) take their formats from that kernel's own rule */
+    int own = G->W == 16 && G->wt && strcmp(G->wt, "int32_t") == 0;
     return pf_method_text(buf, sizeof buf, G->minimax, G->errkind == FIT_REL,
-                          "the lsb of their Horner step (bit-width analysis)");
+                          own ? "their formats, from the 32-bit-lane kernel's own rule (fixed_trig.c, fit16: "
+                                "bounds of the partial sums of the real, then of the rounded, coefficients)"
+                              : "the lsb of their Horner step (bit-width analysis)");
 }
 
 static void provenance(pf_buf *b, const fx_gen *G)
@@ -453,8 +458,38 @@ char *fx_emit(const fx_gen *G, size_t *len)
                       "#endif\n",
                       cond, G->name);
         }
+        /* the tail's note on the array loop, true for the kernel at hand: the
+           16-bit kernels' pmulhrsw rules, or the 32-bit lanes of the exact
+           sin/cos (kind 3: int32_t words) and of sqrt from sqrtf (nopoly) */
+        const char *note16 =
+                   "Array form in 16-bit lanes.  The constants come through a pointer that an\n"
+                   "   empty asm hides from GCC: GCC 12 rewrites a product by a known constant\n"
+                   "   into shifts and adds before it looks for the rounding multiply-high, and\n"
+                   "   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it\n"
+                   "   can bound both operands and prove the product fits; the body therefore\n"
+                   "   feeds pf_fx_mulhrs only loads, constants, its own results and values\n"
+                   "   multiplied by a constant of k[] (a pmullw).  The values are the same, so\n"
+                   "   the scalar and array forms compute the same bits.  Built for a baseline\n"
+                   "   without AVX2, it gets one clone per x86-64 level and the widest the CPU\n"
+                   "   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:\n"
+                   "   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every\n"
+                   "   clone computes the same bits.";
+        const char *note32 =
+                   "Array form in 32-bit lanes, 16-bit loads and stores:\n"
+                   "   %s.  The constants come through a\n"
+                   "   pointer that an empty asm hides from GCC, as in the 16-bit kernels.\n"
+                   "   Built for a baseline without AVX2, it gets one clone per x86-64 level\n"
+                   "   and the widest the CPU has is picked at load time (x86-64-v4: 16\n"
+                   "   lanes, v3: 8, the default: 4); every clone computes the same bits.";
+        char note[2048];
+        if (G->nopoly)
+            snprintf(note, sizeof note, note32, "the float square root (vsqrtps) and its exact\n   integer correction need 32 bits");
+        else if (strcmp(G->wt, "int16_t") != 0)
+            snprintf(note, sizeof note, note32, "every step in int32_t words with 32x32 -> 32-bit\n   products (vpmulld)");
+        else
+            snprintf(note, sizeof note, "%s", note16);
         const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "NK", nk, "KLIST", kl.s ? kl.s : "",
-                            "BWARRAY", bwa.s ? bwa.s : "", "BWCALL", bwc.s ? bwc.s : "", NULL};
+                            "BWARRAY", bwa.s ? bwa.s : "", "BWCALL", bwc.s ? bwc.s : "", "ARRAYNOTE", note, NULL};
         pf_subst(&b, pf_template("fx_tail16.c"), kv);
         free(kl.s);
         free(bwa.s);
