@@ -11,7 +11,9 @@
  * test_lanes16: the functions emitted in 16-bit lanes really run in them:
  * built with gcc -O3 -march=x86-64-v3, their array loop holds at least one
  * vpmulhrsw per pf_fx_mulhrs of the source (GCC finds the rounding
- * multiply-high only under the conditions fx_tail16.c.in describes). */
+ * multiply-high only under the conditions fx_tail16.c.in describes); built
+ * with -march=x86-64-v4 (the AVX-512 loop, bw = 1), at least one on zmm
+ * registers (32 lanes) per pf_fx_mulhrs. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -252,6 +254,20 @@ static int count(const char *a, const char *end, const char *needle)
     return c;
 }
 
+/* lines between a and end holding both needles (an instruction and an operand) */
+static int count_line(const char *a, const char *end, const char *insn, const char *reg)
+{
+    int c = 0;
+    for (const char *p = strstr(a, insn); p && p < end; p = strstr(p + 1, insn)) {
+        const char *nl = strchr(p, '\n');
+        size_t len = nl ? (size_t)(nl - p) : strlen(p);
+        const char *r = strstr(p, reg);
+        if (r && (size_t)(r - p) < len)
+            c++;
+    }
+    return c;
+}
+
 static void test_lanes16(void **st)
 {
     (void)st;
@@ -273,34 +289,36 @@ static void test_lanes16(void **st)
                 continue;
             }
             n16++;
-            snprintf(as, sizeof as, "%s/f.s", dir);
-            tu_argv *av = calloc(1, sizeof *av);
-            tu_run_result *r = malloc(sizeof *r);
-            assert_non_null(av);
-            assert_non_null(r);
-            tu_argv_cc(av);
-            tu_argv_words(av, "-std=c17 -O3 -march=x86-64-v3 -S -o");
-            tu_argv_add(av, as);
-            tu_argv_add(av, src);
-            tu_execvp_in(NULL, av->v, r);
-            if (r->status != 0)
-                print_message("%s -S %s: exit %d\n%s%s", av->v[0], src, r->status, r->out, r->err);
-            assert_int_equal(r->status, 0);
-            free(av);
-            free(r);
-            char *a = slurp(as);
-            assert_non_null(a);
-            snprintf(sym, sizeof sym, "pf_%s%s_array:", fns[i].stem, fast ? "_fast" : "");
-            const char *f = strstr(a, sym), *e = f ? strstr(f, ".size") : NULL;
-            int got = f && e ? count(f, e, "vpmulhrsw") : 0;
-            print_message("%-28s %d pf_fx_mulhrs in the source, %d vpmulhrsw in the array loop (x86-64-v3)\n", sym,
-                          calls, got);
-            if (got < calls) {
-                print_message("FAILED: %s does not run in 16-bit lanes\n", sym);
-                bad++;
+            for (int v4 = 0; v4 <= 1; v4++) {
+                snprintf(as, sizeof as, "%s/f.s", dir);
+                tu_argv *av = calloc(1, sizeof *av);
+                tu_run_result *r = malloc(sizeof *r);
+                assert_non_null(av);
+                assert_non_null(r);
+                tu_argv_cc(av);
+                tu_argv_words(av, v4 ? "-std=c17 -O3 -march=x86-64-v4 -S -o" : "-std=c17 -O3 -march=x86-64-v3 -S -o");
+                tu_argv_add(av, as);
+                tu_argv_add(av, src);
+                tu_execvp_in(NULL, av->v, r);
+                if (r->status != 0)
+                    print_message("%s -S %s: exit %d\n%s%s", av->v[0], src, r->status, r->out, r->err);
+                assert_int_equal(r->status, 0);
+                free(av);
+                free(r);
+                char *a = slurp(as);
+                assert_non_null(a);
+                snprintf(sym, sizeof sym, "pf_%s%s_array:", fns[i].stem, fast ? "_fast" : "");
+                const char *f = strstr(a, sym), *e = f ? strstr(f, ".size") : NULL;
+                int got = f && e ? (v4 ? count_line(f, e, "vpmulhrsw", "%zmm") : count(f, e, "vpmulhrsw")) : 0;
+                print_message("%-28s %d pf_fx_mulhrs in the source, %d vpmulhrsw%s in the array loop (x86-64-%s)\n",
+                              sym, calls, got, v4 ? " on zmm" : "", v4 ? "v4" : "v3");
+                if (got < calls) {
+                    print_message("FAILED: %s does not run in 16-bit lanes\n", sym);
+                    bad++;
+                }
+                unlink(as);
+                free(a);
             }
-            unlink(as);
-            free(a);
             free(c);
         }
     rmdir(dir);

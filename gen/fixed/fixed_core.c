@@ -313,9 +313,14 @@ static void wrap_text(pf_buf *b, const char *label, const char *text) { pf_prov_
 
 static const char *method_text(const fx_gen *G)
 {
-    static char buf[320];
+    static char buf[512];
+    /* the exact sin/cos in 32-bit lanes (int32_t words in a 16-bit request,
+       fixed_trig.c's kind 3) take their formats from that kernel's own rule */
+    int own = G->W == 16 && G->wt && strcmp(G->wt, "int32_t") == 0;
     return pf_method_text(buf, sizeof buf, G->minimax, G->errkind == FIT_REL,
-                          "the lsb of their Horner step (bit-width analysis)");
+                          own ? "their formats, from the 32-bit-lane kernel's own rule (fixed_trig.c, fit16: "
+                                "bounds of the partial sums of the real, then of the rounded, coefficients)"
+                              : "the lsb of their Horner step (bit-width analysis)");
 }
 
 static void provenance(pf_buf *b, const fx_gen *G)
@@ -453,8 +458,38 @@ char *fx_emit(const fx_gen *G, size_t *len)
                       "#endif\n",
                       cond, G->name);
         }
+        /* the tail's note on the array loop, true for the kernel at hand: the
+           16-bit kernels' pmulhrsw rules, or the 32-bit lanes of the exact
+           sin/cos (kind 3: int32_t words) and of sqrt from sqrtf (nopoly) */
+        const char *note16 =
+                   "Array form in 16-bit lanes.  The constants come through a pointer that an\n"
+                   "   empty asm hides from GCC: GCC 12 rewrites a product by a known constant\n"
+                   "   into shifts and adds before it looks for the rounding multiply-high, and\n"
+                   "   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it\n"
+                   "   can bound both operands and prove the product fits; the body therefore\n"
+                   "   feeds pf_fx_mulhrs only loads, constants, its own results and values\n"
+                   "   multiplied by a constant of k[] (a pmullw).  The values are the same, so\n"
+                   "   the scalar and array forms compute the same bits.  Built for a baseline\n"
+                   "   without AVX2, it gets one clone per x86-64 level and the widest the CPU\n"
+                   "   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:\n"
+                   "   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every\n"
+                   "   clone computes the same bits.";
+        const char *note32 =
+                   "Array form in 32-bit lanes, 16-bit loads and stores:\n"
+                   "   %s.  The constants come through a\n"
+                   "   pointer that an empty asm hides from GCC, as in the 16-bit kernels.\n"
+                   "   Built for a baseline without AVX2, it gets one clone per x86-64 level\n"
+                   "   and the widest the CPU has is picked at load time (x86-64-v4: 16\n"
+                   "   lanes, v3: 8, the default: 4); every clone computes the same bits.";
+        char note[2048];
+        if (G->nopoly)
+            snprintf(note, sizeof note, note32, "the float square root (vsqrtps) and its exact\n   integer correction need 32 bits");
+        else if (strcmp(G->wt, "int16_t") != 0)
+            snprintf(note, sizeof note, note32, "every step in int32_t words with 32x32 -> 32-bit\n   products (vpmulld)");
+        else
+            snprintf(note, sizeof note, "%s", note16);
         const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "NK", nk, "KLIST", kl.s ? kl.s : "",
-                            "BWARRAY", bwa.s ? bwa.s : "", "BWCALL", bwc.s ? bwc.s : "", NULL};
+                            "BWARRAY", bwa.s ? bwa.s : "", "BWCALL", bwc.s ? bwc.s : "", "ARRAYNOTE", note, NULL};
         pf_subst(&b, pf_template("fx_tail16.c"), kv);
         free(kl.s);
         free(bwa.s);
@@ -616,24 +651,50 @@ void fx_report_text(FILE *o, const fx_gen *G)
     fprintf(o, "%s: %s, %s variant, %s -> %s\n", G->name, F->name, G->exact ? "exact" : "fast", G->in_text,
             G->out_text);
     fprintf(o, "  reduction    %s\n", G->red_text);
-    fprintf(o, "  domain       %s for t in [%g, %g]\n", F->target_text, F->a, F->b);
-    fprintf(o, "  order        %d%s, %s words\n", G->order, G->below_err >= 0 ? " (smallest within the bound)" : "",
-            G->wt);
+    /* a kernel without a Horner fit of its own (sqrt from sqrtf: nopoly; the
+       exp/exp2 table kernel: alt_order) reports its own texts, as the
+       provenance does, not the unused fit */
+    int own = G->nopoly || G->alt_order[0];
+    if (G->nopoly)
+        ;
+    else if (G->alt_domain[0])
+        fprintf(o, "  domain       %s\n", G->alt_domain);
+    else
+        fprintf(o, "  domain       %s for t in [%g, %g]\n", F->target_text, F->a, F->b);
+    if (own)
+        fprintf(o, "  order        %s\n", G->nopoly && !G->alt_order[0] ? "none (no polynomial)" : G->alt_order);
+    else if (G->W == 16)
+        fprintf(o, "  order        %d%s, %s\n", G->order, G->below_err >= 0 ? " (smallest within the bound)" : "",
+                G->order_text[0] ? G->order_text : "int16_t words: 16-bit lanes");
+    else
+        fprintf(o, "  order        %d%s, %s words, %d-bit products\n", G->order,
+                G->below_err >= 0 ? " (smallest within the bound)" : "", G->wt, 2 * G->W);
     if (G->below_err >= 0)
         fprintf(o, "               the order below is bounded by %.4f LSB\n", G->below_err);
-    fprintf(o, "  method       %s\n", method_text(G));
-    fprintf(o, "  constraints  %s\n", F->con_zero ? F->con_text : "none");
-    fx_formats_text(G, tmp, sizeof tmp);
-    fprintf(o, "  formats      %s\n", tmp);
-    fprintf(o, "  coefficients (stored, lsb, value):\n");
-    for (int j = 0; j <= G->m; j++)
-        fprintf(o, "    c%-2d %20lld  2^-%-3d %.12g\n", G->deg[j], (long long)G->C[j], G->E[j],
-                ldexp((double)G->C[j], -G->E[j]));
-    fprintf(o, "  max %s error of the rounded polynomial: %.4e (2^%.2f) at t = %.9g\n",
-            G->errkind == FIT_REL ? "rel" : "abs", G->poly_err, log2(G->poly_err), G->poly.max_err_at);
-    fprintf(o, "    (real-coefficient fit: %.4e)\n", G->real.max_err);
-    fprintf(o, "  error bound  %.4f LSB (R = %.3e relative, A = %.3e absolute, |f| <= %.6g)\n", G->bound_lsb, G->R,
-            G->A, G->fmax);
+    if (!G->nopoly) {
+        fprintf(o, "  method       %s\n", G->alt_method[0] ? G->alt_method : method_text(G));
+        fprintf(o, "  constraints  %s\n", G->alt_con[0] ? G->alt_con : F->con_zero ? F->con_text : "none");
+        if (G->alt_formats[0])
+            snprintf(tmp, sizeof tmp, "%s", G->alt_formats);
+        else
+            fx_formats_text(G, tmp, sizeof tmp);
+        fprintf(o, "  formats      %s\n", tmp);
+    }
+    if (!own) {
+        fprintf(o, "  coefficients (stored, lsb, value):\n");
+        for (int j = 0; j <= G->m; j++)
+            fprintf(o, "    c%-2d %20lld  2^-%-3d %.12g\n", G->deg[j], (long long)G->C[j], G->E[j],
+                    ldexp((double)G->C[j], -G->E[j]));
+        fprintf(o, "  max %s error of the rounded polynomial: %.4e (2^%.2f) at t = %.9g\n",
+                G->errkind == FIT_REL ? "rel" : "abs", G->poly_err, log2(G->poly_err), G->poly.max_err_at);
+        fprintf(o, "    (real-coefficient fit: %.4e)\n", G->real.max_err);
+    } else if (G->alt_poly[0])
+        fprintf(o, "  polynomial   %s\n", G->alt_poly);
+    if (G->nopoly && G->alt_bound[0])
+        fprintf(o, "  error bound  %s\n", G->alt_bound);
+    else
+        fprintf(o, "  error bound  %.4f LSB (R = %.3e relative, A = %.3e absolute, |f| <= %.6g)\n", G->bound_lsb,
+                G->R, G->A, G->fmax);
     if (G->swept) {
         snprintf(tmp, sizeof tmp, "  LSB sweep of the emitted function (%s)", G->sweep_desc);
         pf_fx_stats_print(o, tmp, F->ref, pf_type_to_fmt(&G->in), pf_type_to_fmt(&G->out), &G->sw, !G->exact);
@@ -645,13 +706,24 @@ void fx_report_json(FILE *o, const fx_gen *G)
     const fx_func *F = G->fn;
     fprintf(o, "{\"func\": \"%s\", \"variant\": \"%s\", \"type\": \"%s\", \"out_type\": \"%s\", \"name\": \"%s\", ",
             F->name, G->exact ? "exact" : "fast", G->in_text, G->out_text, G->name);
-    fprintf(o, "\"order\": %d, \"word_bits\": %d, \"method\": \"%s\", \"coefficients\": [", G->order, G->W,
-            G->minimax ? "minimax" : "lsq");
-    for (int j = 0; j <= G->m; j++)
-        fprintf(o, "%s{\"degree\": %d, \"stored\": %lld, \"exp\": %d}", j ? ", " : "", G->deg[j], (long long)G->C[j],
-                G->E[j]);
-    fprintf(o, "], \"%s\": %.6e, \"bound_lsb\": %.6f", G->errkind == FIT_REL ? "max_rel_error" : "max_abs_error",
-            G->poly_err, G->bound_lsb);
+    /* a kernel without a Horner fit of its own (sqrt from sqrtf: nopoly; the
+       exp/exp2 table kernel: alt_order): its description (the provenance's
+       Order line) instead of the unused fit */
+    int own = G->nopoly || G->alt_order[0];
+    if (own) {
+        fprintf(o, "\"word_bits\": %d, \"kernel\": \"", G->W);
+        for (const char *c = G->alt_order[0] ? G->alt_order : "none (no polynomial)"; *c; c++)
+            fprintf(o, *c == '"' || *c == '\\' ? "\\%c" : "%c", *c);
+        fprintf(o, "\", \"bound_lsb\": %.6f", G->bound_lsb);
+    } else {
+        fprintf(o, "\"order\": %d, \"word_bits\": %d, \"method\": \"%s\", \"coefficients\": [", G->order, G->W,
+                G->minimax ? "minimax" : "lsq");
+        for (int j = 0; j <= G->m; j++)
+            fprintf(o, "%s{\"degree\": %d, \"stored\": %lld, \"exp\": %d}", j ? ", " : "", G->deg[j],
+                    (long long)G->C[j], G->E[j]);
+        fprintf(o, "], \"%s\": %.6e, \"bound_lsb\": %.6f", G->errkind == FIT_REL ? "max_rel_error" : "max_abs_error",
+                G->poly_err, G->bound_lsb);
+    }
     if (G->swept)
         fprintf(o, ", \"sweep\": {\"max_lsb\": %.6f, \"mean_lsb\": %.6f, \"worst_input\": %lld, \"count\": %llu, "
                    "\"exhaustive\": %s, \"over_fast\": %llu, \"mismatch\": %llu}",

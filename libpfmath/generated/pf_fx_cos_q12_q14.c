@@ -18,8 +18,9 @@
  *              alone is a quarter lsb here) and about 33 bits for |v| P, so no step fits 16-bit 
  *              words
  * Method:      minimax absolute error (nlopt SLSQP, epigraph form, from the least-squares fit), 
- *              coefficients rounded to the lsb of their Horner step (bit-width analysis) by 
- *              pin-and-refit
+ *              coefficients rounded to their formats, from the 32-bit-lane kernel's own rule 
+ *              (fixed_trig.c, fit16: bounds of the partial sums of the real, then of the 
+ *              rounded, coefficients) by pin-and-refit
  * Constraints: none
  * Formats:     |v| in 2^-30 units split as vh 2^-15 + vl 2^-30; s = v^2 to 2^-30, then s16 = s 
  *              rounded to 2^-16 (|error| <= 7.631e-06); c1 ufixed<32,31>, c3 fixed<15,15>, c5 
@@ -292,18 +293,13 @@ int16_t pf_cos_q12_q14(int16_t x)
     return pf_cos_q12_q14_inline(x, pf_cos_q12_q14_k, 0);
 }
 
-/* Array form in 16-bit lanes.  The constants come through a pointer that an
-   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
-   into shifts and adds before it looks for the rounding multiply-high, and
-   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
-   can bound both operands and prove the product fits; the body therefore
-   feeds pf_fx_mulhrs only loads, constants, its own results and values
-   multiplied by a constant of k[] (a pmullw).  The values are the same, so
-   the scalar and array forms compute the same bits.  Built for a baseline
-   without AVX2, it gets one clone per x86-64 level and the widest the CPU
-   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
-   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
-   clone computes the same bits. */
+/* Array form in 32-bit lanes, 16-bit loads and stores:
+   every step in int32_t words with 32x32 -> 32-bit
+   products (vpmulld).  The constants come through a
+   pointer that an empty asm hides from GCC, as in the 16-bit kernels.
+   Built for a baseline without AVX2, it gets one clone per x86-64 level
+   and the widest the CPU has is picked at load time (x86-64-v4: 16
+   lanes, v3: 8, the default: 4); every clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif

@@ -250,18 +250,13 @@ uint16_t pf_sqrt_uq8_uq12(uint16_t x)
     return pf_sqrt_uq8_uq12_inline(x, pf_sqrt_uq8_uq12_k, 0);
 }
 
-/* Array form in 16-bit lanes.  The constants come through a pointer that an
-   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
-   into shifts and adds before it looks for the rounding multiply-high, and
-   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
-   can bound both operands and prove the product fits; the body therefore
-   feeds pf_fx_mulhrs only loads, constants, its own results and values
-   multiplied by a constant of k[] (a pmullw).  The values are the same, so
-   the scalar and array forms compute the same bits.  Built for a baseline
-   without AVX2, it gets one clone per x86-64 level and the widest the CPU
-   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
-   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
-   clone computes the same bits. */
+/* Array form in 32-bit lanes, 16-bit loads and stores:
+   the float square root (vsqrtps) and its exact
+   integer correction need 32 bits.  The constants come through a
+   pointer that an empty asm hides from GCC, as in the 16-bit kernels.
+   Built for a baseline without AVX2, it gets one clone per x86-64 level
+   and the widest the CPU has is picked at load time (x86-64-v4: 16
+   lanes, v3: 8, the default: 4); every clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
