@@ -17,6 +17,7 @@
 
 #include "compile.h"
 #include "sweep.h"
+#include "ladder_check.h"
 #include "testutil.h"
 #include "tu_exec.h"
 
@@ -72,7 +73,7 @@ static void *load(const char *path)
 
 static void check_unary(const char *f, const char *u, double U, const char *tmpl)
 {
-    char name[64], path[128], arr[80];
+    char name[64], path[128];
     snprintf(name, sizeof name, "lad_%s_mid", f);
     snprintf(path, sizeof path, "/tmp/pf-ladder-atrig-%s.c", f);
     char *src = gen(f, u, name, path);
@@ -80,12 +81,8 @@ static void check_unary(const char *f, const char *u, double U, const char *tmpl
     free(src);
     void *h = load(path);
     pf_fn1 s1;
-    void (*a1)(const float *, float *, size_t);
-    snprintf(arr, sizeof arr, "%s_array", name);
-    *(void **)&s1 = dlsym(h, name);
-    *(void **)&a1 = dlsym(h, arr);
-    assert_non_null(s1);
-    assert_non_null(a1);
+    lc_array1 a1;
+    lc_syms1(h, name, &s1, &a1);
     pf_func fid = (pf_func)pfref_lookup(f);
     pf_sweep_stats st;
     pf_sweep_init(&st);
@@ -106,11 +103,7 @@ static void check_unary(const char *f, const char *u, double U, const char *tmpl
     static float x[N], y[N];
     for (int i = 0; i < N; i++)
         x[i] = i % 2 ? bits((uint32_t)(i * 1048573u + 12345u)) : bits(0x3f000000u + (uint32_t)i - N / 2);
-    a1(x, y, N);
-    for (int i = 0; i < N; i++) {
-        float s = s1(x[i]);
-        assert_memory_equal(&s, &y[i], 4);
-    }
+    lc_array_is_scalar(s1, a1, x, y, N);
     dlclose(h);
     unlink(path);
 }

@@ -20,6 +20,7 @@
 #include "generate.h"
 #include "pfref.h"
 #include "sweep.h"
+#include "ladder_check.h"
 
 #include <dlfcn.h>
 #include <math.h>
@@ -55,14 +56,9 @@ static void check(const char *func, const char *variant, int order, double U)
     void *h = pf_compile_load(r.csrc, r.clen, err, sizeof err);
     if (!h)
         fail_msg("%s", err);
-    char arr[96];
-    snprintf(arr, sizeof arr, "%s_array", name);
     pf_fn1 s1;
-    void (*a1)(const float *, float *, size_t);
-    *(void **)&s1 = dlsym(h, name);
-    *(void **)&a1 = dlsym(h, arr);
-    assert_non_null(s1);
-    assert_non_null(a1);
+    lc_array1 a1;
+    lc_syms1(h, name, &s1, &a1);
     pf_func f = (pf_func)pfref_lookup(func);
     pf_sweep_stats st;
     pf_sweep_init(&st);
@@ -87,11 +83,7 @@ static void check(const char *func, const char *variant, int order, double U)
     for (int i = 0; i < N; i++)
         x[i] = asfloat((uint32_t)(i * 524287u + 977u));
     x[0] = 0.0f, x[1] = -0.0f, x[2] = INFINITY, x[3] = -1.0f, x[4] = NAN, x[5] = 0x1p-149f, x[6] = 1.0f;
-    a1(x, y, N);
-    for (int i = 0; i < N; i++) {
-        float s = s1(x[i]);
-        assert_memory_equal(&s, &y[i], 4);
-    }
+    lc_array_is_scalar(s1, a1, x, y, N);
     dlclose(h);
     pf_gen_free(&r);
 }

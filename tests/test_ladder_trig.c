@@ -19,6 +19,7 @@
 
 #include "compile.h"
 #include "sweep.h"
+#include "ladder_check.h"
 #include "testutil.h"
 #include "tu_exec.h"
 
@@ -69,14 +70,9 @@ static void check_level(const char *func, const char *u, double U)
     void *h = pf_compile_load_file(path, err, sizeof err);
     if (!h)
         fail_msg("%s", err);
-    char arr[96];
-    snprintf(arr, sizeof arr, "%s_array", name);
     pf_fn1 s1;
-    void (*a1)(const float *, float *, size_t);
-    *(void **)&s1 = dlsym(h, name);
-    *(void **)&a1 = dlsym(h, arr);
-    assert_non_null(s1);
-    assert_non_null(a1);
+    lc_array1 a1;
+    lc_syms1(h, name, &s1, &a1);
     pf_func fid = (pf_func)pfref_lookup(func);
     pf_sweep_stats st;
     pf_sweep_init(&st);
@@ -96,11 +92,7 @@ static void check_level(const char *func, const char *u, double U)
         x[i] = asf((uint32_t)(i * 1048573u + 12345u)); /* every exponent: some rare lanes a block */
     for (int i = 0; i < 512; i++)
         x[i] = (float)(i * 0.7853981633974483 + 0.1); /* blocks with no rare lane */
-    a1(x, y, N);
-    for (int i = 0; i < N; i++) {
-        float s = s1(x[i]);
-        assert_memory_equal(&s, &y[i], 4);
-    }
+    lc_array_is_scalar(s1, a1, x, y, N);
     dlclose(h);
     unlink(path);
 }
