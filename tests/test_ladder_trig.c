@@ -1,7 +1,8 @@
 /* The trig mid rows (gen/float/funcs_trig.c: float Cody-Waite with the tail
  * kept apart, gen/templates/sin_cw_float.c.in, tan_cw_float.c.in): the
- * ladder picks them for sin at 2 ULP (mid-r3: r^3 rounded once), cos and
- * tan at 3 ULP (mid), and what it emits is within its level against MPFR (ref/) on the inputs that stress the
+ * ladder picks them for sin at 2 ULP (mid order 11; the model's exact final
+ * subtraction, gen/float/funcs_trig.c mid_final), cos and tan at 3 ULP
+ * (mid), and what it emits is within its level against MPFR (ref/) on the inputs that stress the
  * reduction: the five floats around every k pi/2 below 2^16 (the Cody-Waite
  * range) and just above it, the directed list (1e30, FLT_MAX, floats next
  * to multiples of pi/2 up to 2^127: Payne-Hanek), 2^18 random floats; its

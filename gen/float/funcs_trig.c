@@ -282,10 +282,12 @@ static int extra_trig_mid(char *buf, size_t n)
 
 /* Error model of the mid variants, a first-order bound in ULP of the result,
    the maximum over a fine grid of r in [R_MIN, b].  Each rounding errs by
-   at most half an ulp of its value, hu(v) (the value's binade taken 2^-6
-   above the grid point, so that the points between are covered); an
-   absolute error E costs E / ulp(f(r)) ULP (the binade taken 2^-6 below):
-     0.5                 the final subtraction r - v (sin, cos) or addition
+   at most half an ulp of its value, hu(v) (the value's binade taken
+   MID_MARGIN above the grid point, so that the points between are
+   covered); an absolute error E costs E / ulp(f(r)) ULP (the binade taken
+   MID_MARGIN below):
+     0.5                 the final subtraction r - v (sin, cos: 0 where it
+                         is exact, mid_final) or addition
    + the roundings of w  z = r^2, Horner on z, r z (or r^3 once), and the
                          fmafs forming w (mid_bound's forms), propagated to
                          w to first order
@@ -303,19 +305,57 @@ static int extra_trig_mid(char *buf, size_t n)
    (2^-28.5 units of pi/2, docs/trig.md), so no r with m != 0 is smaller
    (m = 0 makes r = x exact and c = 0, and the error is the polynomial's). */
 #define MID_RMIN 0x1.2p-28
-#define MID_GRID 16384
+/* 2^18 points: neighbours differ by under 2^-11 relative (the geometric
+   part by 2^-12), so r^3 by under 2^-9.4: the margin MID_MARGIN of the
+   binades below covers every value between two points (it was 2^-6 with
+   2^14 points, which charged z = r^2 the binade of 2 from r = 1.39 on) */
+#define MID_GRID (1 << 18)
+#define MID_MARGIN 0x1p-9
 static double mid_hu(double v) /* half an ulp of a float near |v| */
 {
     int e;
-    frexp(fabs(v) * (1 + 0x1p-6), &e);
+    frexp(fabs(v) * (1 + MID_MARGIN), &e);
     return ldexp(1.0, e - 25);
 }
 static double mid_ulp(double f) /* an ulp of a float near |f|, from below */
 {
     int e;
-    frexp(fabs(f) * (1 - 0x1p-6), &e);
+    frexp(fabs(f) * (1 - MID_MARGIN), &e);
     return ldexp(1.0, e - 24);
 }
+/* The final rounding of sin and cos's r - v (v = -(c3 t + inner), the last
+   fmaf's value, 0 <= v <= r), in ULP of f: 0.5, except where v and the
+   result share a binade [B, 2B): then r (a multiple of ulp(r) >= ulp(f),
+   as r >= f) and the rounded v are multiples of ulp(v) = B 2^-23, and so is
+   r - v, which lies in [B, 2B): the subtraction is exact (0).  Near the
+   edge (v within the margin of B) either the rounded v is >= B (exact
+   subtraction) or below B, where its rounding was half the one the caller
+   charged (mid_hu(v) counts B's binade): 0.5 - that half, in ULP.  The
+   binades are taken with the same margins as mid_hu and mid_ulp.
+   This takes the bound of mid order 9 from 2.35 to below 2 (the term that
+   set it, v >= 1/2 for r > 1.497, is where the subtraction is exact). */
+static double mid_final(double r, double t, double c3, double in, double cmax, double f)
+{
+    (void)r;
+    double v = fabs(c3 * t + in), af = fabs(f);
+    int ef, eh;
+    frexp(af * (1 - MID_MARGIN), &ef);
+    frexp(af * (1 + MID_MARGIN), &eh);
+    /* f straddles a binade: no claim, except at 1 (|f| <= 1): there r - v
+       is a multiple of 2^-24 too, and one in [1, 1 + 2^-24] rounds to 1.0
+       (a tie goes to even), no further from f than r - v itself; one
+       beyond would already be 2 ULP away */
+    if (ef != eh && ef != 0)
+        return 0.5;
+    double B = ldexp(1.0, ef - 1);
+    double vlo = (v - cmax) * (1 - MID_MARGIN), vhi = (v + cmax) * (1 + MID_MARGIN);
+    if (vlo >= B)
+        return 0;
+    if (vhi >= B) /* v rounded to below B: its rounding was hu(B) / 2 */
+        return 0.5 - 0.5 * mid_hu(v + cmax) / mid_ulp(f);
+    return 0.5;
+}
+
 /* form: 0 tan's w = fmaf(r z, q, c), q = c3 + c5 z + ...; 1 sin and cos's
    w = fmaf(t, c3, fmaf(t z, q5, c)), t = r z, q5 = c5 + c7 z + ...; 2 the
    same with t = r^3 rounded once (z + fmaf(r, r, -z) = r^2 exactly) */
@@ -357,7 +397,8 @@ static double mid_bound(const fit_poly *p, int tan_, int cos_, int form, double 
         if (cos_ && r > 1 - 0x1p-20)
             err += mid_hu(r) * df;
         err += u * cmax + cmax * (tan_ ? f * f : z / 2);
-        double ulp = 0.5 + err / mid_ulp(f) + (tan_ ? 0.5 : 0);
+        double fin = form ? mid_final(r, t, c3, nq ? t * z * s : 0, cmax, f) : 0.5;
+        double ulp = fin + err / mid_ulp(f) + (tan_ ? 0.5 : 0);
         if (ulp > worst)
             worst = ulp, *at = r;
     }
