@@ -8,6 +8,7 @@
  * constant C = round(log2(e) 2^(Ft+Ei)) errs by at most 1/2 in its last
  * place: |error of t| <= |X|max 2^-(Ft+1), a relative error of
  * ln2 |error of t| in the result. */
+#include "fixed_exp16f.h"
 #include "fixed_internal.h"
 
 #include <math.h>
@@ -497,6 +498,12 @@ static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
         tab_texts(G, base2);
         return 0;
     }
+    /* fast: the segment-table kernel where it meets the bound (fixed_exp16f.c) */
+    if (!G->exact && fx_exp16f_prep(G, base2) == 0) {
+        G->kind = 2;
+        fx_exp16f_texts(G, base2);
+        return 0;
+    }
     if (base2)
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x; k = floor(t), f = t - k (exact, the low bits of the stored integer, in a uint16_t biased "
@@ -613,6 +620,10 @@ static double df_of(const fx_gen *G) { return G->exp.ft > G->W - 1 ? 1.5 * ldexp
 
 static void budget16(fx_gen *G)
 {
+    if (G->kind == 2) {
+        fx_exp16f_budget(G);
+        return;
+    }
     if (G->kind == 1) {
         /* the table kernel: no Horner polynomial on [0, 1] (the fit the
            pipeline makes is not used); the pre-rounding error over every
@@ -654,8 +665,11 @@ static void budget(fx_gen *G)
 static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
     pf_buf body = {0}, horner = {0}, tabs = {0}, kern = {0};
-    if (G->kind == 1) {
-        emit_tab(G, &body, &tabs, &kern, base2);
+    if (G->kind == 1 || G->kind == 2) {
+        if (G->kind == 1)
+            emit_tab(G, &body, &tabs, &kern, base2);
+        else
+            fx_exp16f_emit(G, &body, &tabs, &kern, base2);
         char xsat[32], xlo[32];
         snprintf(xsat, sizeof xsat, "%lld", (long long)G->exp.xsat);
         snprintf(xlo, sizeof xlo, "%lld", (long long)G->exp.xlo);
