@@ -55,7 +55,7 @@ static const hfn fns[] = {
 static const char *const flagsets[][2] = {
     {"", "-O0"}, {"", "-O1 -fno-inline"}, {"", "-O2 -ffast-math"}, {"", "-Os -fno-tree-vectorize"},
     {"", "-O3 -march=native"}, {"clang", "-O0"}, {"clang", "-O3 -march=native -ffast-math"},
-    {"", "-O2 -U__GNUC__"},
+    {"", "-O2 -U__GNUC__"}, {"", "-O2 -DPF_FX_TEST_AVX2"}, /* the AVX2 loops of the table kernels */
 };
 #define NFLAGS ((int)(sizeof flagsets / sizeof flagsets[0]))
 

@@ -17,7 +17,9 @@
  * Per 32 lanes on AVX-512BW: vpminsw, vpsubw, (exp: vpmulhuw), vpsrlw,
  * two vpermw (16 entries repeated in a 32-entry table: the index needs no
  * mask), vpsllw, vpmulhuw, vpsubw, vpsrlw, vpsrlvw: 10 or 11 instructions
- * where the degree-3 Horner took ~20.  No analytic chain: the bound is
+ * where the degree-3 Horner took ~20.  AVX2 (16 lanes): 16 entries are
+ * what one vpshufb reaches, so the same table serves both (bit-identical
+ * clones); 21 or 22 instructions per 16 lanes.  No analytic chain: the bound is
  * taken by running the emitted integer steps (ft_eval, the same C) on every
  * one of the 2^16 inputs against 2^t in long double, and the kernel is used
  * only when that is within the fast bound max(2^-10 relative, 4 lsb) with
@@ -240,7 +242,9 @@ void fx_exp16f_texts(fx_gen *G, int base2)
              X->fratio, X->fr);
     snprintf(G->wide_text, sizeof G->wide_text,
              "16-bit words throughout; the lookups (vpermw) and the per-element shift (vpsrlvw) in 16-bit lanes by "
-             "AVX-512BW intrinsics (x86-64-v4); other clones, scalar form: the same steps in plain C");
+             "AVX-512BW intrinsics (x86-64-v4); AVX2 intrinsics (x86-64-v3): each lookup two vpshufb and a "
+             "vpblendvb, the shift in 32-bit lanes (vpsrlvd) on the even and odd words; the default clone, scalar "
+             "form: the same steps in plain C");
     snprintf(G->alt_arith, sizeof G->alt_arith,
              "integers only (no floating point, no <math.h>); floors (multiply-highs, shifts), all in the bound; "
              "bit-identical under any compiler flags");
@@ -316,5 +320,47 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
                     "        _mm512_storeu_si512(y + i, _mm512_srlv_epi16(v, _mm512_srli_epi16(w, %d)));\n"
                     "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
               rb, 16 - rb, fb, N);
-    G->bw16 = 2;
+    /* AVX2: no vpermw and no 16-bit per-element shift.  A 16-entry table of
+       words is two vpshufb (its low and its high bytes, 16 per 128-bit
+       lane) indexed by j in both bytes of the word, merged by vpblendvb;
+       v >> c is done in 32-bit lanes (vpsrlvd) on the even and the odd
+       words apart, without unpacking: the same values */
+    pf_printf(kern,
+              "\n\n/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16\n"
+              "   words is two vpshufb (its low and its high bytes) merged by vpblendvb;\n"
+              "   no 16-bit per-element shift: v >> c in 32-bit lanes (vpsrlvd) on the even\n"
+              "   and the odd words apart.  The same values. */\n%s"
+              "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
+              "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+              "    uint8_t b[4][16]; /* V's low, high bytes, S's low, high bytes */\n"
+              "    for (int k = 0; k < 16; k++) {\n"
+              "        b[0][k] = (uint8_t)%s_fv[k];\n"
+              "        b[1][k] = (uint8_t)(%s_fv[k] >> 8);\n"
+              "        b[2][k] = (uint8_t)%s_fs[k];\n"
+              "        b[3][k] = (uint8_t)(%s_fs[k] >> 8);\n"
+              "    }\n"
+              "    const __m256i vl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));\n"
+              "    const __m256i vh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));\n"
+              "    const __m256i sl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));\n"
+              "    const __m256i sh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));\n"
+              "    const __m256i d = _mm256_set1_epi16(%lld), m15 = _mm256_set1_epi16(15), dup = _mm256_set1_epi16(0x101);\n"
+              "    const __m256i hib = _mm256_set1_epi16(-256), lo16 = _mm256_set1_epi32(0xffff);\n",
+              cond, N, G->it, G->ot, N, N, N, N, s16(X->fd));
+    if (!base2)
+        pf_printf(kern, "    const __m256i l = _mm256_set1_epi16(%lld);\n", s16(X->fl));
+    pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
+                 "        __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));\n");
+    if (!base2)
+        pf_put(kern, "        w = _mm256_mulhi_epu16(w, l);\n");
+    pf_printf(kern, "        __m256i j = _mm256_mullo_epi16(_mm256_and_si256(_mm256_srli_epi16(w, %d), m15), dup); /* j in both bytes */\n"
+                    "        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);\n"
+                    "        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);\n"
+                    "        v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, %d)));\n"
+                    "        __m256i c = _mm256_srli_epi16(w, %d);\n"
+                    "        __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));\n"
+                    "        __m256i od = _mm256_andnot_si256(lo16, _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)));\n"
+                    "        _mm256_storeu_si256((__m256i *)(y + i), _mm256_or_si256(ev, od));\n"
+                    "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+              rb, 16 - rb, fb, N);
+    G->bw16 = 3;
 }

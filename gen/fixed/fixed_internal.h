@@ -172,7 +172,8 @@ struct fx_gen {
     char wide_text[400];       /* steps in wider lanes, and why (provenance) */
     int bw16;                  /* the kernel has an AVX-512BW form (fx_emit_vshift16); 2: the
                                   function's emit() wrote its own <name>_array_bw (fx_emit
-                                  only adds the run-time dispatch to it) */
+                                  only adds the run-time dispatch to it); 3: and an AVX2 loop,
+                                  <name>_array_avx2, for x86-64-v3 */
     /* a scheme without the Horner polynomial on the family's domain (exp's
        table kernel): when set, these replace the provenance lines built
        from the fit (Domain, Order, Method, Constraints, Formats, Polynomial) */

@@ -13,8 +13,10 @@
  * Order:       1 per segment: 16 chords of T (value and drop, two 16-entry tables); uint16_t 
  *              words: 16-bit lanes
  * Lanes:       16-bit words throughout; the lookups (vpermw) and the per-element shift 
- *              (vpsrlvw) in 16-bit lanes by AVX-512BW intrinsics (x86-64-v4); other clones, 
- *              scalar form: the same steps in plain C
+ *              (vpsrlvw) in 16-bit lanes by AVX-512BW intrinsics (x86-64-v4); AVX2 intrinsics 
+ *              (x86-64-v3): each lookup two vpshufb and a vpblendvb, the shift in 32-bit lanes 
+ *              (vpsrlvd) on the even and odd words; the default clone, scalar form: the same 
+ *              steps in plain C
  * Method:      chords through T(j/16) (C0 at the seams): V[j] = round(T(j/16)), S[j] = V[j] - 
  *              round(T((j+1)/16)), T from MPFR (256 bits), capped at the output's max (or V[0] 
  *              set to it); D, L, d and V[0]'s choice taken over the candidates by the smallest 
@@ -286,6 +288,46 @@ static void pf_exp_q11_uq8_fast_array_bw(const int16_t *restrict x, uint16_t *re
 }
 #endif
 
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16
+   words is two vpshufb (its low and its high bytes) merged by vpblendvb;
+   no 16-bit per-element shift: v >> c in 32-bit lanes (vpsrlvd) on the even
+   and the odd words apart.  The same values. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_exp_q11_uq8_fast_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    uint8_t b[4][16]; /* V's low, high bytes, S's low, high bytes */
+    for (int k = 0; k < 16; k++) {
+        b[0][k] = (uint8_t)pf_exp_q11_uq8_fast_fv[k];
+        b[1][k] = (uint8_t)(pf_exp_q11_uq8_fast_fv[k] >> 8);
+        b[2][k] = (uint8_t)pf_exp_q11_uq8_fast_fs[k];
+        b[3][k] = (uint8_t)(pf_exp_q11_uq8_fast_fs[k] >> 8);
+    }
+    const __m256i vl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
+    const __m256i vh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
+    const __m256i sl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
+    const __m256i sh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
+    const __m256i d = _mm256_set1_epi16(11357), m15 = _mm256_set1_epi16(15), dup = _mm256_set1_epi16(0x101);
+    const __m256i hib = _mm256_set1_epi16(-256), lo16 = _mm256_set1_epi32(0xffff);
+    const __m256i l = _mm256_set1_epi16(-18261);
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));
+        w = _mm256_mulhi_epu16(w, l);
+        __m256i j = _mm256_mullo_epi16(_mm256_and_si256(_mm256_srli_epi16(w, 6), m15), dup); /* j in both bytes */
+        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);
+        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);
+        v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, 10)));
+        __m256i c = _mm256_srli_epi16(w, 10);
+        __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));
+        __m256i od = _mm256_andnot_si256(lo16, _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)));
+        _mm256_storeu_si256((__m256i *)(y + i), _mm256_or_si256(ev, od));
+    }
+    for (; i < n; i++)
+        y[i] = pf_exp_q11_uq8_fast(x[i]);
+}
+#endif
+
 /* The constants the body reads (Horner coefficients and multipliers) */
 static const int16_t pf_exp_q11_uq8_fast_k[1] = {
     11357,  /* k[0]: D = 11357: the clamp, W = (t(D) - t) 2^10 from D - x */
@@ -314,8 +356,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_exp_q11_uq8_fast_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_exp_q11_uq8_fast_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_exp_q11_uq8_fast_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_exp_q11_uq8_fast_array_avx2(x, y, n);
         return;
     }
 #endif
