@@ -454,6 +454,27 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     G->bw16 = 2;
 }
 
+/* exp2's table kernel without the low clamp (one vpmaxsw fewer per 32
+   lanes): with K0 = -floor(min t), (t + K0) 2^Ei of every input up to XSAT
+   fits the uint16_t, and below XLO the kernel's own steps give 0 (its
+   shift count passes 16; the bound is then taken over every input).  The
+   clamped kernel where that does not hold */
+static int prep_tab_noclamp(fx_gen *G, int base2, char *err, size_t errlen)
+{
+    fx_exp_red *X = &G->exp, save = *X;
+    int64_t imin = pf_type_min_stored(&G->in), one = (int64_t)1 << G->in.exp;
+    int64_t k0 = imin >= 0 ? 0 : (-imin + one - 1) / one, xtop = X->sat ? X->xsat : X->xhi;
+    if (base2 && X->loclamp && xtop + k0 * one <= 65535) {
+        X->loclamp = 0;
+        X->xlo = imin;
+        X->k0 = k0;
+        if (prep_tab(G, base2, err, errlen) == 0)
+            return 0;
+        *X = save;
+    }
+    return prep_tab(G, base2, err, errlen);
+}
+
 /* 16-bit lanes (see fx_exp16.c.in): int16_t inputs with 1..15 fraction
    bits, and (t + K0) 2^Ei inside a uint16_t */
 static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
@@ -493,7 +514,7 @@ static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
     G->dred = dt;
     /* exact: the table kernel where the type pair allows it (else the
        Horner form, which the exact bound sends to 32-bit words) */
-    if (G->exact && prep_tab(G, base2, err, errlen) == 0) {
+    if (G->exact && prep_tab_noclamp(G, base2, err, errlen) == 0) {
         G->kind = 1;
         tab_texts(G, base2);
         return 0;
