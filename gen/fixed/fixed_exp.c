@@ -90,7 +90,7 @@ static void tab_eval(const fx_gen *G, int base2, int64_t xc, tab_val *v)
         hi = (uint16_t)((pr >> 16) + (lo < q));
     }
     uint16_t g = (uint16_t)(X->tc1 + ((uint32_t)lo * (uint32_t)X->tc2 >> 16));
-    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
+    uint16_t e = X->tet ? X->te[(lo >> (16 - Ei + TAB_J)) & 31u] : (uint16_t)((uint32_t)lo * g >> 16);
     unsigned j = hi & 63u;
     uint16_t w = (uint16_t)(((uint32_t)X->tu[j] * e >> 16) + X->td[j]);
     uint32_t ms = (uint32_t)X->ta[j] + (w >> 5);
@@ -156,6 +156,20 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
     if (X->tc1 + X->tc2 > 65535) {
         mpfr_clear(a);
         return -2;
+    }
+    /* exp2 whose r = lo 2^-22 has at most 5 bits (r = m 2^-Ei, m < 2^(Ei - 6)):
+       E = (2^r - 1) 2^22 from MPFR, rounded to nearest, in a 32-entry table
+       (one vpermw on tb's low bits) instead of the polynomial */
+    X->tet = base2 && Ei - TAB_J <= 5;
+    if (X->tet) {
+        int mb = Ei - TAB_J;
+        for (int i = 0; i < 32; i++) {
+            mpfr_set_si(a, i & ((1 << mb) - 1), MPFR_RNDN);
+            mpfr_div_2si(a, a, Ei, MPFR_RNDN);
+            mpfr_exp2(a, a, MPFR_RNDN);
+            mpfr_sub_ui(a, a, 1, MPFR_RNDN);
+            X->te[i] = (uint16_t)scaled_int(a, 22, MPFR_RNDN);
+        }
     }
     /* the reduction */
     /* inputs clamp to [xlo, xtop]: from xsat up the result saturates, as
@@ -249,6 +263,11 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
     for (uint32_t r = 0; r < 65536; r++) {
         uint16_t g = (uint16_t)(X->tc1 + (r * (uint32_t)X->tc2 >> 16));
         uint16_t e = (uint16_t)(r * g >> 16);
+        if (X->tet) { /* the table's r: m 2^-Ei */
+            if (r & ((1u << (16 - Ei + TAB_J)) - 1))
+                continue;
+            e = X->te[(r >> (16 - Ei + TAB_J)) & 31u];
+        }
         double d = (double)fabsl((long double)e - (pow2l(ldexpl((long double)r, -22)) - 1) * 0x1p22L);
         poly = d > poly ? d : poly;
     }
@@ -310,6 +329,32 @@ static void tab_texts(fx_gen *G, int base2)
              "plain C",
              base2 ? "" : ", x log2(e) to 2^-22 (the bound needs ~2^-19) a 16x16 -> 32-bit product (pmullw, "
                           "pmulhuw) plus a carry");
+    if (X->tet) { /* exp2, r of <= 5 bits: E from a table, not the polynomial */
+        int mb = Ei - TAB_J;
+        snprintf(G->alt_domain, sizeof G->alt_domain,
+                 "2^r - 1 at r = m 2^-%d, m in [0, %d]; 2^(j/64) for j in [0, 63] from tables (2^t = 2^k 2^(j/64) 2^r)",
+                 Ei, (1 << mb) - 1);
+        snprintf(G->alt_order, sizeof G->alt_order,
+                 "none: 2^r - 1 from a 32-entry table (r has %d bits), and three 64-entry tables of 2^(j/64); "
+                 "uint16_t words: 16-bit lanes",
+                 mb);
+        snprintf(G->alt_method, sizeof G->alt_method,
+                 "tables rounded to nearest from MPFR (256 bits): E[m] = (2^(m 2^-%d) - 1) 2^22, A[j] = (2^(j/64) - 1) "
+                 "2^16, U[j] = 2^(j/64) 2^15, D[j] = (A[j]'s residual + 1/2) 2^5",
+                 Ei);
+        snprintf(G->alt_con, sizeof G->alt_con, "E[0] = 0 (exact at r = 0)");
+        snprintf(G->alt_formats, sizeof G->alt_formats,
+                 "E = E[tb & 31] = (2^r - 1) 2^22 (vpermw on the biased input's low bits); M = A[j] + ((pmulhuw(U[j], "
+                 "E) + D[j]) >> 5), saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of the sum, D carrying "
+                 "A's); result round((2^16 + M) 2^-s), s = %d - k in [%d, %d], as avg(M >> (s - 1), 0) (pavgw) + "
+                 "P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the saturating add gives the max "
+                 "there, at the clamped top input)",
+                 16 - Eo, smin, smax);
+        snprintf(G->alt_poly, sizeof G->alt_poly,
+                 "E within %.3f of (2^r - 1) 2^22 (its rounding); M within %.4f of (2^f - 1) 2^16 for every input's "
+                 "(j, r)",
+                 X->tpoly, X->tkern);
+    }
     snprintf(G->alt_arith, sizeof G->alt_arith,
              "integers only (no floating point, no <math.h>); the steps before the result floor (unsigned "
              "multiply-highs, shifts: in the bound), the result is rounded once to nearest, ties up (pavgw); "
@@ -352,6 +397,8 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     tab_table(tabs, N, "tu", X->tu, 64, "U[j] = round(2^(j/64) 2^15) (MPFR)");
     tab_table(tabs, N, "td", X->td, 64, "D[j] = round(((2^(j/64) - 1) 2^16 - A[j] + 1/2) 2^5), in [0, 32] (MPFR)");
     tab_table(tabs, N, "tp", X->tp, 32, "P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range)");
+    if (X->tet)
+        tab_table(tabs, N, "te", X->te, 32, "E[m] = round((2^(m 2^-Ei) - 1) 2^22) (MPFR), m = i mod 2^(Ei - 6)");
     pf_put(body, "    int16_t xc = (int16_t)x;\n");
     if (kl)
         pf_printf(body, "    xc = (int16_t)(xc < %s ? %s : xc); /* %lld */\n", kl, kl, (long long)X->xlo);
@@ -374,6 +421,12 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(body, "    uint16_t lo = (uint16_t)(pr + q);\n");
         pf_put(body, "    uint16_t hi = (uint16_t)((pr >> 16) + (lo < q)); /* the carry */\n");
     }
+    if (X->tet)
+        pf_printf(body, "    /* E = (2^r - 1) 2^22, r = m 2^-%d: from the table (vpermw) */\n"
+                        "    uint16_t e = (uint16_t)%s_te[tb & 31u];\n"
+                        "    (void)lo;\n",
+                  Ei, N);
+    else
     pf_printf(body, "    /* E = (2^r - 1) 2^22 = r (c1 + c2 r), floors */\n"
                     "    uint16_t g = (uint16_t)(%lldu + ((uint32_t)lo * %lldu >> 16));\n"
                     "    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);\n",
@@ -414,6 +467,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                     "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
                     "    const __m512i tp = %s_w16(%s_tp);\n",
               N, N, N, N, N, N, N, N, N, N, N, N, N, N);
+    if (X->tet)
+        pf_printf(kern, "    const __m512i te = %s_w16(%s_te);\n", N, N);
+    if (X->tet)
+        pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(X->tcc));
+    else
     pf_printf(kern, "    const __m512i c1 = _mm512_set1_epi16(%lld), c2 = _mm512_set1_epi16(%lld), cc = _mm512_set1_epi16(%lld);\n",
               s16(X->tc1), s16(X->tc2), s16(X->tcc));
     if (base2)
@@ -432,7 +490,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
     if (X->sat)
         pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
-    if (base2)
+    if (base2 && X->tet)
+        pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                        "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
+                  Ei - TAB_J);
+    else if (base2)
         pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
                         "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
                   Ei - TAB_J, 16 - Ei + TAB_J);
@@ -442,8 +504,9 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                      "        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);\n"
                      "        __m512i hi = _mm512_mulhi_epu16(u, l1);\n"
                      "        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);\n");
-    pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n"
-                 "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
+    if (!X->tet)
+        pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n");
+    pf_put(kern, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
                  "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
                  "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
                  "        __m512i kb = _mm512_srli_epi16(hi, 6);\n"
