@@ -90,7 +90,7 @@ static void tab_eval(const fx_gen *G, int base2, int64_t xc, tab_val *v)
         hi = (uint16_t)((pr >> 16) + (lo < q));
     }
     uint16_t g = (uint16_t)(X->tc1 + ((uint32_t)lo * (uint32_t)X->tc2 >> 16));
-    uint16_t e = X->tet ? X->te[(lo >> (16 - Ei + TAB_J)) & 31u] : (uint16_t)((uint32_t)lo * g >> 16);
+    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
     unsigned j = hi & 63u;
     uint16_t w = (uint16_t)(((uint32_t)X->tu[j] * e >> 16) + X->td[j]);
     uint32_t ms = (uint32_t)X->ta[j] + (w >> 5);
@@ -158,17 +158,16 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
         return -2;
     }
     /* exp2 whose r = lo 2^-22 has at most 5 bits (r = m 2^-Ei, m < 2^(Ei - 6)):
-       E = (2^r - 1) 2^22 from MPFR, rounded to nearest, in a 32-entry table
-       (one vpermw on tb's low bits) instead of the polynomial */
+       the AVX-512 loop reads E from a 32-entry table of the polynomial's own
+       values (one vpermw on tb's low bits instead of two multiply-highs and
+       an add): the same bits as the plain-C steps, which AVX2 runs faster */
     X->tet = base2 && Ei - TAB_J <= 5;
     if (X->tet) {
         int mb = Ei - TAB_J;
-        for (int i = 0; i < 32; i++) {
-            mpfr_set_si(a, i & ((1 << mb) - 1), MPFR_RNDN);
-            mpfr_div_2si(a, a, Ei, MPFR_RNDN);
-            mpfr_exp2(a, a, MPFR_RNDN);
-            mpfr_sub_ui(a, a, 1, MPFR_RNDN);
-            X->te[i] = (uint16_t)scaled_int(a, 22, MPFR_RNDN);
+        for (uint32_t i = 0; i < 32; i++) {
+            uint32_t lo = (uint16_t)((i & ((1u << mb) - 1)) << (16 - mb));
+            uint16_t g = (uint16_t)(X->tc1 + (lo * (uint32_t)X->tc2 >> 16));
+            X->te[i] = (uint16_t)(lo * g >> 16);
         }
     }
     /* the reduction */
@@ -263,11 +262,6 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
     for (uint32_t r = 0; r < 65536; r++) {
         uint16_t g = (uint16_t)(X->tc1 + (r * (uint32_t)X->tc2 >> 16));
         uint16_t e = (uint16_t)(r * g >> 16);
-        if (X->tet) { /* the table's r: m 2^-Ei */
-            if (r & ((1u << (16 - Ei + TAB_J)) - 1))
-                continue;
-            e = X->te[(r >> (16 - Ei + TAB_J)) & 31u];
-        }
         double d = (double)fabsl((long double)e - (pow2l(ldexpl((long double)r, -22)) - 1) * 0x1p22L);
         poly = d > poly ? d : poly;
     }
@@ -329,31 +323,12 @@ static void tab_texts(fx_gen *G, int base2)
              "plain C",
              base2 ? "" : ", x log2(e) to 2^-22 (the bound needs ~2^-19) a 16x16 -> 32-bit product (pmullw, "
                           "pmulhuw) plus a carry");
-    if (X->tet) { /* exp2, r of <= 5 bits: E from a table, not the polynomial */
-        int mb = Ei - TAB_J;
-        snprintf(G->alt_domain, sizeof G->alt_domain,
-                 "2^r - 1 at r = m 2^-%d, m in [0, %d]; 2^(j/64) for j in [0, 63] from tables (2^t = 2^k 2^(j/64) 2^r)",
-                 Ei, (1 << mb) - 1);
-        snprintf(G->alt_order, sizeof G->alt_order,
-                 "none: 2^r - 1 from a 32-entry table (r has %d bits), and three 64-entry tables of 2^(j/64); "
-                 "uint16_t words: 16-bit lanes",
-                 mb);
-        snprintf(G->alt_method, sizeof G->alt_method,
-                 "tables rounded to nearest from MPFR (256 bits): E[m] = (2^(m 2^-%d) - 1) 2^22, A[j] = (2^(j/64) - 1) "
-                 "2^16, U[j] = 2^(j/64) 2^15, D[j] = (A[j]'s residual + 1/2) 2^5",
-                 Ei);
-        snprintf(G->alt_con, sizeof G->alt_con, "E[0] = 0 (exact at r = 0)");
-        snprintf(G->alt_formats, sizeof G->alt_formats,
-                 "E = E[tb & 31] = (2^r - 1) 2^22 (vpermw on the biased input's low bits); M = A[j] + ((pmulhuw(U[j], "
-                 "E) + D[j]) >> 5), saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of the sum, D carrying "
-                 "A's); result round((2^16 + M) 2^-s), s = %d - k in [%d, %d], as avg(M >> (s - 1), 0) (pavgw) + "
-                 "P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the saturating add gives the max "
-                 "there, at the clamped top input)",
-                 16 - Eo, smin, smax);
-        snprintf(G->alt_poly, sizeof G->alt_poly,
-                 "E within %.3f of (2^r - 1) 2^22 (its rounding); M within %.4f of (2^f - 1) 2^16 for every input's "
-                 "(j, r)",
-                 X->tpoly, X->tkern);
+    if (X->tet) { /* exp2, r of <= 5 bits: the AVX-512 loop reads E from a table */
+        size_t o = strlen(G->alt_formats);
+        snprintf(G->alt_formats + o, sizeof G->alt_formats - o,
+                 "; r has %d bits (r = m 2^-%d): the AVX-512 loop reads E from a 32-entry table of these same "
+                 "values (vpermw on the biased input's low bits)",
+                 Ei - TAB_J, Ei);
     }
     snprintf(G->alt_arith, sizeof G->alt_arith,
              "integers only (no floating point, no <math.h>); the steps before the result floor (unsigned "
@@ -397,8 +372,6 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     tab_table(tabs, N, "tu", X->tu, 64, "U[j] = round(2^(j/64) 2^15) (MPFR)");
     tab_table(tabs, N, "td", X->td, 64, "D[j] = round(((2^(j/64) - 1) 2^16 - A[j] + 1/2) 2^5), in [0, 32] (MPFR)");
     tab_table(tabs, N, "tp", X->tp, 32, "P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range)");
-    if (X->tet)
-        tab_table(tabs, N, "te", X->te, 32, "E[m] = round((2^(m 2^-Ei) - 1) 2^22) (MPFR), m = i mod 2^(Ei - 6)");
     pf_put(body, "    int16_t xc = (int16_t)x;\n");
     if (kl)
         pf_printf(body, "    xc = (int16_t)(xc < %s ? %s : xc); /* %lld */\n", kl, kl, (long long)X->xlo);
@@ -421,12 +394,6 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(body, "    uint16_t lo = (uint16_t)(pr + q);\n");
         pf_put(body, "    uint16_t hi = (uint16_t)((pr >> 16) + (lo < q)); /* the carry */\n");
     }
-    if (X->tet)
-        pf_printf(body, "    /* E = (2^r - 1) 2^22, r = m 2^-%d: from the table (vpermw) */\n"
-                        "    uint16_t e = (uint16_t)%s_te[tb & 31u];\n"
-                        "    (void)lo;\n",
-                  Ei, N);
-    else
     pf_printf(body, "    /* E = (2^r - 1) 2^22 = r (c1 + c2 r), floors */\n"
                     "    uint16_t g = (uint16_t)(%lldu + ((uint32_t)lo * %lldu >> 16));\n"
                     "    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);\n",
@@ -462,6 +429,13 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
               "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
               cond, G->ot, N, G->it, N, N, G->it, G->ot);
+    if (X->tet) {
+        pf_buf te = {0};
+        tab_table(&te, N, "te", X->te, 32,
+                  "E[i] = the polynomial's E at r = (i mod 2^(Ei - 6)) 2^-Ei (the plain-C steps' values)");
+        pf_put(kern, te.s);
+        free(te.s);
+    }
     pf_printf(kern, "    const __m512i ta0 = %s_w16(%s_ta), ta1 = %s_w16(%s_ta + 32);\n"
                     "    const __m512i tu0 = %s_w16(%s_tu), tu1 = %s_w16(%s_tu + 32);\n"
                     "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"

@@ -7,29 +7,32 @@
  * Reduction:   t = x; T = (t + 16) 2^22 = hi 2^16 + lo from the stored integer biased by 16 
  *              2^11 (exact): j = hi & 63, k + 16 = hi >> 6, r = lo 2^-22 in [0, 2^-6), t = k + 
  *              j/64 + r; inputs clamped to [-32768, 16384] (stored), the last one saturating
- * Domain:      2^r - 1 at r = m 2^-11, m in [0, 31]; 2^(j/64) for j in [0, 63] from tables (2^t 
- *              = 2^k 2^(j/64) 2^r)
- * Order:       none: 2^r - 1 from a 32-entry table (r has 5 bits), and three 64-entry tables of 
- *              2^(j/64); uint16_t words: 16-bit lanes
+ * Domain:      2^r - 1 on r in [0, 2^-6]; 2^(j/64) for j in [0, 63] from tables (2^t = 2^k 
+ *              2^(j/64) 2^r)
+ * Order:       2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and three 64-entry 
+ *              tables of 2^(j/64); uint16_t words: 16-bit lanes
  * Lanes:       16-bit words throughout; lookups (vpermi2w, vpermw) and the per-element shift 
  *              (vpsrlvw) in 16-bit lanes by AVX-512BW intrinsics (x86-64-v4); other clones, 
  *              scalar form: the same steps in plain C
- * Method:      tables rounded to nearest from MPFR (256 bits): E[m] = (2^(m 2^-11) - 1) 2^22, 
- *              A[j] = (2^(j/64) - 1) 2^16, U[j] = 2^(j/64) 2^15, D[j] = (A[j]'s residual + 1/2) 
- *              2^5
- * Constraints: E[0] = 0 (exact at r = 0)
- * Formats:     E = E[tb & 31] = (2^r - 1) 2^22 (vpermw on the biased input's low bits); M = 
- *              A[j] + ((pmulhuw(U[j], E) + D[j]) >> 5), saturated at 65535 (2^f 2^16 = 2^16 + 
- *              M: one rounding of the sum, D carrying A's); result round((2^16 + M) 2^-s), s = 
- *              8 - k in [1, 24], as avg(M >> (s - 1), 0) (pavgw) + P[k] (P = 2^(16 - s), 1 at s 
- *              = 17, 0 beyond, 65535 at s = 0: the saturating add gives the max there, at the 
- *              clamped top input)
- * Polynomial:  E within 0.433 of (2^r - 1) 2^22 (its rounding); M within 0.5193 of (2^f - 1) 
- *              2^16 for every input's (j, r)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2597 LSB (polynomial 0.0068, 
- *              arithmetic and reduction 0.2529) = 0.7597 LSB; taken over every clamped input 
+ * Method:      minimax absolute error of 2^r on [0, 2^-6] (nlopt SLSQP, epigraph form), c1 and 
+ *              c2 rounded to nearest at 2^-16 and 2^-10 (their multiply-highs' lsbs); tables 
+ *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/64) - 1) 2^16, U[j] = 
+ *              2^(j/64) 2^15, D[j] = (A[j]'s residual + 1/2) 2^5
+ * Constraints: p(0) = 1 (2^r - 1 has no constant term; exact at r = 0)
+ * Formats:     r uint16_t at 2^-22; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^22 
+ *              (floors; c1 = 45426, c2 = 247); M = A[j] + ((pmulhuw(U[j], E) + D[j]) >> 5), 
+ *              saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of the sum, D carrying 
+ *              A's); result round((2^16 + M) 2^-s), s = 8 - k in [1, 24], as avg(M >> (s - 1), 
+ *              0) (pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the 
+ *              saturating add gives the max there, at the clamped top input); r has 5 bits (r = 
+ *              m 2^-11): the AVX-512 loop reads E from a 32-entry table of these same values 
+ *              (vpermw on the biased input's low bits)
+ * Polynomial:  E within 1.923 of (2^r - 1) 2^22 for every r (polynomial and floors, all 2^16 
+ *              r); M within 0.5336 of (2^f - 1) 2^16 for every input's (j, r)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2668 LSB (polynomial 0.0301, 
+ *              arithmetic and reduction 0.2367) = 0.7668 LSB; taken over every clamped input 
  *              from the emitted integer steps (the table kernel)
- * Sweep:       max 0.7597 LSB at x = 15450 (7.54394531), mean 0.1584 LSB; exhaustive: all 65536 
+ * Sweep:       max 0.7542 LSB at x = 15232 (7.4375), mean 0.1583 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  x >= 16384 (stored; 8) overflows: 65535 (the max); results beyond the output 
  *              range give its max or min
@@ -268,13 +271,6 @@ static const uint32_t pf_exp2_q11_uq8_tp[32] = {
     256, 512, 1024, 2048, 4096, 8192, 16384, 32768,
     65535, 0, 0, 0, 0, 0, 0, 0,
 };
-/* E[m] = round((2^(m 2^-Ei) - 1) 2^22) (MPFR), m = i mod 2^(Ei - 6) */
-static const uint32_t pf_exp2_q11_uq8_te[32] = {
-    0, 1420, 2840, 4261, 5682, 7104, 8526, 9949,
-    11372, 12796, 14220, 15644, 17069, 18495, 19921, 21348,
-    22775, 24202, 25630, 27059, 28488, 29917, 31347, 32777,
-    34208, 35640, 37072, 38504, 39937, 41370, 42804, 44238,
-};
 PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x, const int16_t *k, int bw)
 {
     (void)bw; /* unused where no step has an AVX-512BW form */
@@ -284,9 +280,9 @@ PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x, const int16_t *k, int bw
     uint16_t tb = (uint16_t)((uint16_t)xc + 32768u); /* (t + 16) 2^11 */
     uint16_t hi = (uint16_t)(tb >> 5);
     uint16_t lo = (uint16_t)((uint32_t)tb << 11);
-    /* E = (2^r - 1) 2^22, r = m 2^-11: from the table (vpermw) */
-    uint16_t e = (uint16_t)pf_exp2_q11_uq8_te[tb & 31u];
-    (void)lo;
+    /* E = (2^r - 1) 2^22 = r (c1 + c2 r), floors */
+    uint16_t g = (uint16_t)(45426u + ((uint32_t)lo * 247u >> 16));
+    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
     /* M = (2^(j/64 + r) - 1) 2^16, one rounding: A[j] + round(U[j] E 2^-21 + A[j]'s residual) */
     unsigned j = hi & 63u;
     uint16_t v = (uint16_t)(((uint32_t)pf_exp2_q11_uq8_tu[j] * e >> 16) + pf_exp2_q11_uq8_td[j]);
@@ -319,6 +315,13 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+/* E[i] = the polynomial's E at r = (i mod 2^(Ei - 6)) 2^-Ei (the plain-C steps' values) */
+static const uint32_t pf_exp2_q11_uq8_te[32] = {
+    0, 1419, 2840, 4260, 5682, 7103, 8526, 9948,
+    11371, 12795, 14219, 15644, 17069, 18494, 19921, 21347,
+    22774, 24202, 25629, 27058, 28487, 29917, 31346, 32777,
+    34208, 35639, 37071, 38503, 39936, 41369, 42803, 44237,
+};
     const __m512i ta0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ta), ta1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ta + 32);
     const __m512i tu0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tu), tu1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tu + 32);
     const __m512i td0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_td), td1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_td + 32);
