@@ -450,6 +450,25 @@ char *fx_emit(const fx_gen *G, size_t *len)
                       "}\n"
                       "#endif\n\n",
                       cond, G->name, G->it, G->ot, G->name, G->name);
+            if (G->bw16 == 3) /* 2, and an AVX2 loop of its own too (<name>_array_avx2) */
+                pf_printf(&bwc,
+                          "%s#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */\n"
+                          "    if (__builtin_cpu_supports(\"avx2\")) {\n"
+                          "        %s_array_avx2(x, y, n);\n"
+                          "        return;\n"
+                          "    }\n"
+                          "#endif\n"
+                          "    if (__builtin_cpu_supports(\"x86-64-v4\")) {\n"
+                          "        %s_array_bw(x, y, n);\n"
+                          "        return;\n"
+                          "    }\n"
+                          "    if (__builtin_cpu_supports(\"x86-64-v3\")) {\n"
+                          "        %s_array_avx2(x, y, n);\n"
+                          "        return;\n"
+                          "    }\n"
+                          "#endif\n",
+                          cond, G->name, G->name, G->name);
+            else
             pf_printf(&bwc,
                       "%s    if (__builtin_cpu_supports(\"x86-64-v4\")) {\n"
                       "        %s_array_bw(x, y, n);\n"

@@ -8,6 +8,7 @@
  * constant C = round(log2(e) 2^(Ft+Ei)) errs by at most 1/2 in its last
  * place: |error of t| <= |X|max 2^-(Ft+1), a relative error of
  * ln2 |error of t| in the result. */
+#include "fixed_exp16f.h"
 #include "fixed_internal.h"
 
 #include <math.h>
@@ -155,6 +156,19 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
     if (X->tc1 + X->tc2 > 65535) {
         mpfr_clear(a);
         return -2;
+    }
+    /* exp2 whose r = lo 2^-22 has at most 5 bits (r = m 2^-Ei, m < 2^(Ei - 6)):
+       the AVX-512 loop reads E from a 32-entry table of the polynomial's own
+       values (one vpermw on tb's low bits instead of two multiply-highs and
+       an add): the same bits as the plain-C steps, which AVX2 runs faster */
+    X->tet = base2 && Ei - TAB_J <= 5;
+    if (X->tet) {
+        int mb = Ei - TAB_J;
+        for (uint32_t i = 0; i < 32; i++) {
+            uint32_t lo = (uint16_t)((i & ((1u << mb) - 1)) << (16 - mb));
+            uint16_t g = (uint16_t)(X->tc1 + (lo * (uint32_t)X->tc2 >> 16));
+            X->te[i] = (uint16_t)(lo * g >> 16);
+        }
     }
     /* the reduction */
     /* inputs clamp to [xlo, xtop]: from xsat up the result saturates, as
@@ -309,6 +323,13 @@ static void tab_texts(fx_gen *G, int base2)
              "plain C",
              base2 ? "" : ", x log2(e) to 2^-22 (the bound needs ~2^-19) a 16x16 -> 32-bit product (pmullw, "
                           "pmulhuw) plus a carry");
+    if (X->tet) { /* exp2, r of <= 5 bits: the AVX-512 loop reads E from a table */
+        size_t o = strlen(G->alt_formats);
+        snprintf(G->alt_formats + o, sizeof G->alt_formats - o,
+                 "; r has %d bits (r = m 2^-%d): the AVX-512 loop reads E from a 32-entry table of these same "
+                 "values (vpermw on the biased input's low bits)",
+                 Ei - TAB_J, Ei);
+    }
     snprintf(G->alt_arith, sizeof G->alt_arith,
              "integers only (no floating point, no <math.h>); the steps before the result floor (unsigned "
              "multiply-highs, shifts: in the bound), the result is rounded once to nearest, ties up (pavgw); "
@@ -408,11 +429,23 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
               "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
               cond, G->ot, N, G->it, N, N, G->it, G->ot);
+    if (X->tet) {
+        pf_buf te = {0};
+        tab_table(&te, N, "te", X->te, 32,
+                  "E[i] = the polynomial's E at r = (i mod 2^(Ei - 6)) 2^-Ei (the plain-C steps' values)");
+        pf_put(kern, te.s);
+        free(te.s);
+    }
     pf_printf(kern, "    const __m512i ta0 = %s_w16(%s_ta), ta1 = %s_w16(%s_ta + 32);\n"
                     "    const __m512i tu0 = %s_w16(%s_tu), tu1 = %s_w16(%s_tu + 32);\n"
                     "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
                     "    const __m512i tp = %s_w16(%s_tp);\n",
               N, N, N, N, N, N, N, N, N, N, N, N, N, N);
+    if (X->tet)
+        pf_printf(kern, "    const __m512i te = %s_w16(%s_te);\n", N, N);
+    if (X->tet)
+        pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(X->tcc));
+    else
     pf_printf(kern, "    const __m512i c1 = _mm512_set1_epi16(%lld), c2 = _mm512_set1_epi16(%lld), cc = _mm512_set1_epi16(%lld);\n",
               s16(X->tc1), s16(X->tc2), s16(X->tcc));
     if (base2)
@@ -431,7 +464,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
     if (X->sat)
         pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
-    if (base2)
+    if (base2 && X->tet)
+        pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                        "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
+                  Ei - TAB_J);
+    else if (base2)
         pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
                         "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
                   Ei - TAB_J, 16 - Ei + TAB_J);
@@ -441,8 +478,9 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                      "        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);\n"
                      "        __m512i hi = _mm512_mulhi_epu16(u, l1);\n"
                      "        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);\n");
-    pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n"
-                 "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
+    if (!X->tet)
+        pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n");
+    pf_put(kern, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
                  "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
                  "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
                  "        __m512i kb = _mm512_srli_epi16(hi, 6);\n"
@@ -451,6 +489,27 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     pf_printf(kern, "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
               N);
     G->bw16 = 2;
+}
+
+/* exp2's table kernel without the low clamp (one vpmaxsw fewer per 32
+   lanes): with K0 = -floor(min t), (t + K0) 2^Ei of every input up to XSAT
+   fits the uint16_t, and below XLO the kernel's own steps give 0 (its
+   shift count passes 16; the bound is then taken over every input).  The
+   clamped kernel where that does not hold */
+static int prep_tab_noclamp(fx_gen *G, int base2, char *err, size_t errlen)
+{
+    fx_exp_red *X = &G->exp, save = *X;
+    int64_t imin = pf_type_min_stored(&G->in), one = (int64_t)1 << G->in.exp;
+    int64_t k0 = imin >= 0 ? 0 : (-imin + one - 1) / one, xtop = X->sat ? X->xsat : X->xhi;
+    if (base2 && X->loclamp && xtop + k0 * one <= 65535) {
+        X->loclamp = 0;
+        X->xlo = imin;
+        X->k0 = k0;
+        if (prep_tab(G, base2, err, errlen) == 0)
+            return 0;
+        *X = save;
+    }
+    return prep_tab(G, base2, err, errlen);
 }
 
 /* 16-bit lanes (see fx_exp16.c.in): int16_t inputs with 1..15 fraction
@@ -492,9 +551,15 @@ static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
     G->dred = dt;
     /* exact: the table kernel where the type pair allows it (else the
        Horner form, which the exact bound sends to 32-bit words) */
-    if (G->exact && prep_tab(G, base2, err, errlen) == 0) {
+    if (G->exact && prep_tab_noclamp(G, base2, err, errlen) == 0) {
         G->kind = 1;
         tab_texts(G, base2);
+        return 0;
+    }
+    /* fast: the segment-table kernel where it meets the bound (fixed_exp16f.c) */
+    if (!G->exact && fx_exp16f_prep(G, base2) == 0) {
+        G->kind = 2;
+        fx_exp16f_texts(G, base2);
         return 0;
     }
     if (base2)
@@ -613,6 +678,10 @@ static double df_of(const fx_gen *G) { return G->exp.ft > G->W - 1 ? 1.5 * ldexp
 
 static void budget16(fx_gen *G)
 {
+    if (G->kind == 2) {
+        fx_exp16f_budget(G);
+        return;
+    }
     if (G->kind == 1) {
         /* the table kernel: no Horner polynomial on [0, 1] (the fit the
            pipeline makes is not used); the pre-rounding error over every
@@ -654,8 +723,11 @@ static void budget(fx_gen *G)
 static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
     pf_buf body = {0}, horner = {0}, tabs = {0}, kern = {0};
-    if (G->kind == 1) {
-        emit_tab(G, &body, &tabs, &kern, base2);
+    if (G->kind == 1 || G->kind == 2) {
+        if (G->kind == 1)
+            emit_tab(G, &body, &tabs, &kern, base2);
+        else
+            fx_exp16f_emit(G, &body, &tabs, &kern, base2);
         char xsat[32], xlo[32];
         snprintf(xsat, sizeof xsat, "%lld", (long long)G->exp.xsat);
         snprintf(xlo, sizeof xlo, "%lld", (long long)G->exp.xlo);

@@ -73,6 +73,13 @@ typedef struct {               /* exp, exp2 */
     int64_t tcc;               /* c = s - 1 = tcc - (hi >> 6) */
     uint16_t ta[64], tu[64], td[64], tp[32];
     double terr, tkern, tred, tpoly; /* pre-rounding error (lsb); kernel (2^-16), t (2^-22), E (2^-22) */
+    int tet;                   /* exp2 with r of <= 5 bits: E from a 32-entry table te (vpermw) */
+    uint16_t te[32];
+    /* 16-bit lanes, fast: the segment-table kernel (kind 2, fixed_exp.c) */
+    int64_t fd, fl;            /* u = fd - min(x, fd); exp: w = u fl 2^-16 (w = (t(fd) - t) 2^fb) */
+    int ffb, fq;               /* fb; the table's offset, (fq & 3)/4 of W's lsb; fq >> 2: V[0] = the max */
+    uint16_t fv[16], fs[16];   /* segment values and drops */
+    double fratio, fr;         /* max error / fast bound; R of the bound (relative, beyond 1 lsb) */
 } fx_exp_red;
 
 typedef struct {               /* log, log2 */
@@ -167,7 +174,8 @@ struct fx_gen {
     char wide_text[400];       /* steps in wider lanes, and why (provenance) */
     int bw16;                  /* the kernel has an AVX-512BW form (fx_emit_vshift16); 2: the
                                   function's emit() wrote its own <name>_array_bw (fx_emit
-                                  only adds the run-time dispatch to it) */
+                                  only adds the run-time dispatch to it); 3: and an AVX2 loop,
+                                  <name>_array_avx2, for x86-64-v3 */
     /* a scheme without the Horner polynomial on the family's domain (exp's
        table kernel): when set, these replace the provenance lines built
        from the fit (Domain, Order, Method, Constraints, Formats, Polynomial) */

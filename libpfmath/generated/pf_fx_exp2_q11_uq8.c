@@ -4,9 +4,9 @@
  * Regenerate:  pfmathgen --func exp2 --type 'fixed<15,11>' --out-type 'ufixed<16,8>' -o libpfmath/generated/pf_fx_exp2_q11_uq8.c
  * Input:       int16_t x, value x 2^-11 in [-16, 15.9995117]
  * Output:      uint16_t y, value y 2^-8 in [0, 255.996094]
- * Reduction:   t = x; T = (t + 11) 2^22 = hi 2^16 + lo from the stored integer biased by 11 
- *              2^11 (exact): j = hi & 63, k + 11 = hi >> 6, r = lo 2^-22 in [0, 2^-6), t = k + 
- *              j/64 + r; inputs clamped to [-20481, 16384] (stored), the last one saturating
+ * Reduction:   t = x; T = (t + 16) 2^22 = hi 2^16 + lo from the stored integer biased by 16 
+ *              2^11 (exact): j = hi & 63, k + 16 = hi >> 6, r = lo 2^-22 in [0, 2^-6), t = k + 
+ *              j/64 + r; inputs clamped to [-32768, 16384] (stored), the last one saturating
  * Domain:      2^r - 1 on r in [0, 2^-6]; 2^(j/64) for j in [0, 63] from tables (2^t = 2^k 
  *              2^(j/64) 2^r)
  * Order:       2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and three 64-entry 
@@ -22,9 +22,11 @@
  * Formats:     r uint16_t at 2^-22; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^22 
  *              (floors; c1 = 45426, c2 = 247); M = A[j] + ((pmulhuw(U[j], E) + D[j]) >> 5), 
  *              saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of the sum, D carrying 
- *              A's); result round((2^16 + M) 2^-s), s = 8 - k in [1, 19], as avg(M >> (s - 1), 
+ *              A's); result round((2^16 + M) 2^-s), s = 8 - k in [1, 24], as avg(M >> (s - 1), 
  *              0) (pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the 
- *              saturating add gives the max there, at the clamped top input)
+ *              saturating add gives the max there, at the clamped top input); r has 5 bits (r = 
+ *              m 2^-11): the AVX-512 loop reads E from a 32-entry table of these same values 
+ *              (vpermw on the biased input's low bits)
  * Polynomial:  E within 1.923 of (2^r - 1) 2^22 for every r (polynomial and floors, all 2^16 
  *              r); M within 0.5336 of (2^f - 1) 2^16 for every input's (j, r)
  * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2668 LSB (polynomial 0.0301, 
@@ -225,7 +227,7 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    k = floor(t) and f = t - k in [0, 1); exp2(x) = 2^k 2^f with
    2^f = P(f) in [1, 2), and the result is P(f) 2^k, rounded once.  Inputs
    at or above 16384 (stored) saturate to the output's max; inputs below
-   -20481 (stored), where the result is below 1/4 lsb, compute as -20481 (0).
+   -32768 (stored), where the result is below 1/4 lsb, compute as -32768 (0).
    k[] holds the constants; bw picks the form of the per-element
    shift (1: 16-bit lanes, for AVX-512BW's vpsrlvw; 0: 32-bit lanes), which
    give the same values. */
@@ -264,19 +266,18 @@ static const uint32_t pf_exp2_q11_uq8_td[64] = {
 };
 /* P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range) */
 static const uint32_t pf_exp2_q11_uq8_tp[32] = {
-    0, 0, 1, 1, 2, 4, 8, 16,
-    32, 64, 128, 256, 512, 1024, 2048, 4096,
-    8192, 16384, 32768, 65535, 0, 0, 0, 0,
-    0, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 1,
+    1, 2, 4, 8, 16, 32, 64, 128,
+    256, 512, 1024, 2048, 4096, 8192, 16384, 32768,
+    65535, 0, 0, 0, 0, 0, 0, 0,
 };
 PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x, const int16_t *k, int bw)
 {
     (void)bw; /* unused where no step has an AVX-512BW form */
     int16_t xc = (int16_t)x;
-    xc = (int16_t)(xc < k[0] ? k[0] : xc); /* -20481 */
-    xc = (int16_t)(xc > k[1] ? k[1] : xc); /* 16384 */
-    /* T = (t + 11) 2^22 = hi 2^16 + lo: j = hi & 63, k + 11 = hi >> 6, r = lo 2^-22 */
-    uint16_t tb = (uint16_t)((uint16_t)xc + 22528u); /* (t + 11) 2^11 */
+    xc = (int16_t)(xc > k[0] ? k[0] : xc); /* 16384 */
+    /* T = (t + 16) 2^22 = hi 2^16 + lo: j = hi & 63, k + 16 = hi >> 6, r = lo 2^-22 */
+    uint16_t tb = (uint16_t)((uint16_t)xc + 32768u); /* (t + 16) 2^11 */
     uint16_t hi = (uint16_t)(tb >> 5);
     uint16_t lo = (uint16_t)((uint32_t)tb << 11);
     /* E = (2^r - 1) 2^22 = r (c1 + c2 r), floors */
@@ -289,7 +290,7 @@ PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x, const int16_t *k, int bw
     uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);
     /* round((2^16 + M) 2^-s), s = c + 1 >= 1: avg(M >> c, 0) + 2^(16 - s) */
     uint16_t kb = (uint16_t)(hi >> 6);
-    uint16_t c = (uint16_t)(18 - kb); /* in [0, 18]; wraps at s = 0 (saturated by P) */
+    uint16_t c = (uint16_t)(23 - kb); /* in [0, 23]; wraps at s = 0 (saturated by P) */
     uint16_t y0 = (uint16_t)(((uint32_t)(c < 16 ? m >> c : 0) + 1u) >> 1); /* pavgw; vpsrlvw's 0 */
     uint32_t ys = (uint32_t)y0 + pf_exp2_q11_uq8_tp[kb & 31u];
     uint16_t r16 = (uint16_t)(ys < 65535u ? ys : 65535u);
@@ -314,22 +315,27 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+/* E[i] = the polynomial's E at r = (i mod 2^(Ei - 6)) 2^-Ei (the plain-C steps' values) */
+static const uint32_t pf_exp2_q11_uq8_te[32] = {
+    0, 1419, 2840, 4260, 5682, 7103, 8526, 9948,
+    11371, 12795, 14219, 15644, 17069, 18494, 19921, 21347,
+    22774, 24202, 25629, 27058, 28487, 29917, 31346, 32777,
+    34208, 35639, 37071, 38503, 39936, 41369, 42803, 44237,
+};
     const __m512i ta0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ta), ta1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ta + 32);
     const __m512i tu0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tu), tu1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tu + 32);
     const __m512i td0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_td), td1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_td + 32);
     const __m512i tp = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tp);
-    const __m512i c1 = _mm512_set1_epi16(-20110), c2 = _mm512_set1_epi16(247), cc = _mm512_set1_epi16(18);
-    const __m512i bias = _mm512_set1_epi16(22528);
-    const __m512i xlo = _mm512_set1_epi16(-20481);
+    const __m512i te = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_te);
+    const __m512i cc = _mm512_set1_epi16(23);
+    const __m512i bias = _mm512_set1_epi16(-32768);
     const __m512i xhi = _mm512_set1_epi16(16384);
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
         __m512i xc = _mm512_loadu_si512(x + i);
-        xc = _mm512_max_epi16(xc, xlo);
         xc = _mm512_min_epi16(xc, xhi);
         __m512i tb = _mm512_add_epi16(xc, bias);
-        __m512i hi = _mm512_srli_epi16(tb, 5), lo = _mm512_slli_epi16(tb, 11);
-        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
+        __m512i hi = _mm512_srli_epi16(tb, 5), e = _mm512_permutexvar_epi16(tb, te);
         __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);
         v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));
         __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));
@@ -344,9 +350,8 @@ static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restri
 #endif
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_exp2_q11_uq8_k[2] = {
-    -20481, /* k[0]: -20481: lowest input computed (clamp) */
-    16384,  /* k[1]: 16384: highest input computed (clamp: saturates) */
+static const int16_t pf_exp2_q11_uq8_k[1] = {
+    16384,  /* k[0]: 16384: highest input computed (clamp: saturates) */
 };
 
 uint16_t pf_exp2_q11_uq8(int16_t x)

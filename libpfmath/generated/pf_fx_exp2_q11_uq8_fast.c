@@ -4,35 +4,40 @@
  * Regenerate:  pfmathgen --func exp2 --type 'fixed<15,11>' --out-type 'ufixed<16,8>' --variant fast -o libpfmath/generated/pf_fx_exp2_q11_uq8_fast.c
  * Input:       int16_t x, value x 2^-11 in [-16, 15.9995117]
  * Output:      uint16_t y, value y 2^-8 in [0, 255.996094]
- * Reduction:   t = x; k = floor(t), f = t - k (exact, the low bits of the stored integer, in a 
- *              uint16_t biased by 11); inputs clamped to [-20481, 16383] (stored), saturating 
- *              from there
- * Domain:      2^t on t in [0, 1]
- * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       the scaling by 2^k is a per-element shift, truncating (floor: 1 lsb in the 
- *              bound): in 16-bit lanes where AVX-512BW has one (vpsrlvw), else in 32-bit lanes 
- *              (AVX2 has no 16-bit per-element shift); the same values, the error model does 
- *              not need the wider lanes
- * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
- *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
- * Constraints: p(0) = 1 (exact powers of 2 at integer t)
- * Formats:     x unsigned fixed<15,15> in int16_t; p3 fixed<15,15>, p2 fixed<15,15>, p1 
- *              fixed<15,15>, p0 fixed<15,14> (x rounded to 2^-14); steps p = pf_fx_mulhrs(p, x) 
- *              + c, the rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
- *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
- *              Horner rounding error <= 9.154e-05
- * Polynomial:  max relative error 1.678e-04 (2^-12.54) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.594e-04 |f(x)| (polynomial 
- *              1.678e-04, arithmetic and reduction 9.154e-05, relative) + 0.5000 LSB 
- *              (arithmetic and reduction, absolute) = 17.9992 LSB at most (|f| <= 255.996)
- * Sweep:       max 11.4916 LSB at x = 16381 (7.99853516), mean 0.3690 LSB; exhaustive: all 
+ * Reduction:   t = x; W = (t(D) - t) 2^11 = u = D - min(x, D), D = 16384 (stored; exact, a 
+ *              uint16_t); c = W >> 11, g = (W mod 2^11) 2^-11 in [0, 1): f(x) = 2^(t(D) - g) 
+ *              2^-c
+ * Domain:      T(g) = 2^(t(D) + Eo - g - d) on g in [0, 1), d = 0/4 2^-11 (centres the floors), 
+ *              16 segments
+ * Order:       1 per segment: 16 chords of T (value and drop, two 16-entry tables); uint16_t 
+ *              words: 16-bit lanes
+ * Lanes:       16-bit words throughout; the lookups (vpermw) and the per-element shift 
+ *              (vpsrlvw) in 16-bit lanes by AVX-512BW intrinsics (x86-64-v4); AVX2 intrinsics 
+ *              (x86-64-v3): each lookup two vpshufb and a vpblendvb, the shift in 32-bit lanes 
+ *              (vpsrlvd) on the even and odd words; the default clone, scalar form: the same 
+ *              steps in plain C
+ * Method:      chords through T(j/16) (C0 at the seams): V[j] = round(T(j/16)), S[j] = V[j] - 
+ *              round(T((j+1)/16)), T from MPFR (256 bits), capped at the output's max (or V[0] 
+ *              set to it); D, L, d and V[0]'s choice taken over the candidates by the smallest 
+ *              worst case over every input
+ * Constraints: T(0) at D: the output's max at and above XSAT (the saturation)
+ * Formats:     W uint16_t at 2^-11; j = (W >> 7) & 15, r = W mod 2^7 as rr = W << 9 (r 2^-7 at 
+ *              2^-16); T ~ V[j] - pmulhuw(S[j], rr) (floor); result T >> c (vpsrlvw; floor, 0 
+ *              for c >= 16)
+ * Polynomial:  worst case over every input 0.2756 of the fast bound max(2^-10 |f|, 4 lsb); |y - 
+ *              f| <= 2.406e-04 |f| + 1 lsb
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.406e-04 |f(x)| (polynomial 
+ *              0.000e+00, arithmetic and reduction 2.406e-04, relative) + 0.5000 LSB 
+ *              (arithmetic and reduction, absolute) = 16.7650 LSB at most (|f| <= 255.996); 
+ *              taken over every input from the emitted integer steps against 2^t in long double 
+ *              (the segment table kernel)
+ * Sweep:       max 15.1520 LSB at x = 16323 (7.97021484), mean 0.6435 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  x >= 16384 (stored; 8) overflows: 65535 (the max); results beyond the output 
  *              range give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
- *              per rounding); bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating point, no <math.h>); floors (multiply-highs, shifts), 
+ *              all in the bound; bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -224,65 +229,109 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    k[] holds the constants; bw picks the form of the per-element
    shift (1: 16-bit lanes, for AVX-512BW's vpsrlvw; 0: 32-bit lanes), which
    give the same values. */
+/* V[j] = round(T(j/16)), T(g) = 2^(t(D) + Eo - g - d) (MPFR), capped at the max */
+static const uint32_t pf_exp2_q11_uq8_fast_fv[16] = {
+    65535, 62757, 60097, 57549, 55109, 52773, 50535, 48393,
+    46341, 44376, 42495, 40693, 38968, 37316, 35734, 34219,
+};
+/* S[j] = V[j] - round(T((j+1)/16)): the chord's drop over the segment (MPFR) */
+static const uint32_t pf_exp2_q11_uq8_fast_fs[16] = {
+    2778, 2660, 2548, 2440, 2336, 2238, 2142, 2052,
+    1965, 1881, 1802, 1725, 1652, 1582, 1515, 1451,
+};
 PF_FX_INLINE uint16_t pf_exp2_q11_uq8_fast_inline(int16_t x, const int16_t *k, int bw)
 {
     (void)bw; /* unused where no step has an AVX-512BW form */
-    int16_t xc = (int16_t)x;
-    xc = (int16_t)(xc < k[0] ? k[0] : xc); /* -20481 */
-    xc = (int16_t)(xc > k[1] ? k[1] : xc); /* 16383 */
-    uint16_t tb = (uint16_t)((uint16_t)xc + 22528u); /* (t + 11) 2^11 */
-    uint16_t kb = (uint16_t)(tb >> 11); /* k + 11 */
-    int16_t f = (int16_t)((tb & 0x7ff) * k[2]); /* f in [0, 1), 2^-15 units (a product: see the array form) */
-    /* P(f) ~ 2^f: Horner in 16-bit words, one rounding per step */
-    int16_t f1 = pf_fx_mulhrs(f, k[3]); /* f rounded to 2^-14 */
-    int16_t p = k[4]; /* c3 = 0.0763244628906 */
-    p = (int16_t)(pf_fx_mulhrs(p, f) + k[5]); /* c2 = 0.228302001953, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, f) + k[6]); /* c1 = 0.695037841797, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, f1) + k[7]); /* c0 = 1, 2^-14 units */
-    /* P 2^k truncated to the output: floor(2P 2^-c), c = s + 1 = 7 - k in [0, 18] */
-    uint16_t c = (uint16_t)(18 - kb);
-    uint16_t r16;
-    if (bw)
-        r16 = (uint16_t)((uint16_t)((uint16_t)p << 1) >> (c < 16 ? c : 16));
-    else
-        r16 = (uint16_t)(((uint32_t)(uint16_t)p << 1) >> c);
-    uint16_t m = (uint16_t)(0u - (uint16_t)(x >= 16384)); /* all ones from the first overflowing input */
-    return (uint16_t)((r16 & ~m) | (65535u & m));
+    int16_t xc = (int16_t)(x > k[0] ? k[0] : x); /* 16384 */
+    uint16_t u = (uint16_t)((uint16_t)k[0] - (uint16_t)xc); /* D - x >= 0 */
+    uint16_t w = u; /* (t(D) - t) 2^11 */
+    /* T(g) on segment j: the chord V[j] - S[j] r, r = (w mod 2^7) 2^-7 */
+    unsigned j = (unsigned)(w >> 7) & 15u;
+    uint16_t rr = (uint16_t)((uint32_t)w << 9);
+    uint16_t v = (uint16_t)(pf_exp2_q11_uq8_fast_fv[j] - ((uint32_t)pf_exp2_q11_uq8_fast_fs[j] * rr >> 16));
+    /* 2^-c, c = floor(t(D) - t), truncated; c >= 16: below 1 lsb, 0 (vpsrlvw's) */
+    unsigned c = (unsigned)(w >> 11);
+    return (uint16_t)(c < 16u ? v >> c : 0);
 }
 
+/* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn
+   the table lookups into vpermw: the array form runs this loop on a CPU
+   with x86-64-v4 (see its dispatch), the rest of the array and the other
+   clones use the scalar steps above.  The same values (pfmathgen sweeps the
+   array form on its machine against the scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#include <immintrin.h>
+extern uint16_t pf_exp2_q11_uq8_fast(int16_t x); /* the scalar form, for the last n % 32 */
+/* the 16 entries as 16-bit words, twice (vpermw reads 5 index bits) */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_fast_w16(const uint32_t *t)
+{
+    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
+}
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_exp2_q11_uq8_fast_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    const __m512i tv = pf_exp2_q11_uq8_fast_w16(pf_exp2_q11_uq8_fast_fv), ts = pf_exp2_q11_uq8_fast_w16(pf_exp2_q11_uq8_fast_fs);
+    const __m512i d = _mm512_set1_epi16(16384);
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        __m512i w = _mm512_sub_epi16(d, _mm512_min_epi16(_mm512_loadu_si512(x + i), d));
+        __m512i j = _mm512_srli_epi16(w, 7), rr = _mm512_slli_epi16(w, 9);
+        __m512i v = _mm512_sub_epi16(_mm512_permutexvar_epi16(j, tv),
+                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), rr));
+        _mm512_storeu_si512(y + i, _mm512_srlv_epi16(v, _mm512_srli_epi16(w, 11)));
+    }
+    for (; i < n; i++)
+        y[i] = pf_exp2_q11_uq8_fast(x[i]);
+}
+#endif
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16
+   words is two vpshufb (its low and its high bytes) merged by vpblendvb;
+   no 16-bit per-element shift: v >> c in 32-bit lanes (vpsrlvd) on the even
+   and the odd words apart.  The same values. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_exp2_q11_uq8_fast_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    uint8_t b[4][16]; /* V's low, high bytes, S's low, high bytes */
+    for (int k = 0; k < 16; k++) {
+        b[0][k] = (uint8_t)pf_exp2_q11_uq8_fast_fv[k];
+        b[1][k] = (uint8_t)(pf_exp2_q11_uq8_fast_fv[k] >> 8);
+        b[2][k] = (uint8_t)pf_exp2_q11_uq8_fast_fs[k];
+        b[3][k] = (uint8_t)(pf_exp2_q11_uq8_fast_fs[k] >> 8);
+    }
+    const __m256i vl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
+    const __m256i vh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
+    const __m256i sl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
+    const __m256i sh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
+    const __m256i d = _mm256_set1_epi16(16384), m15 = _mm256_set1_epi16(15), dup = _mm256_set1_epi16(0x101);
+    const __m256i hib = _mm256_set1_epi16(-256), lo16 = _mm256_set1_epi32(0xffff);
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));
+        __m256i j = _mm256_mullo_epi16(_mm256_and_si256(_mm256_srli_epi16(w, 7), m15), dup); /* j in both bytes */
+        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);
+        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);
+        v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, 9)));
+        __m256i c = _mm256_srli_epi16(w, 11);
+        __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));
+        __m256i od = _mm256_andnot_si256(lo16, _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)));
+        _mm256_storeu_si256((__m256i *)(y + i), _mm256_or_si256(ev, od));
+    }
+    for (; i < n; i++)
+        y[i] = pf_exp2_q11_uq8_fast(x[i]);
+}
+#endif
+
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_exp2_q11_uq8_fast_k[8] = {
-    -20481, /* k[0]: -20481: lowest input computed (clamp) */
-    16383,  /* k[1]: 16383: highest input computed (clamp) */
-    16,     /* k[2]: 2^4: f to 2^-15 units */
-    16384,  /* k[3]: 2^14: f rounded to 14 fraction bits */
-    2501,   /* k[4]: c3 = 0.0763244628906 */
-    7481,   /* k[5]: c2 = 0.228302001953 */
-    22775,  /* k[6]: c1 = 0.695037841797 */
-    16384,  /* k[7]: c0 = 1 */
+static const int16_t pf_exp2_q11_uq8_fast_k[1] = {
+    16384,  /* k[0]: D = 16384: the clamp, W = (t(D) - t) 2^11 from D - x */
 };
 
 uint16_t pf_exp2_q11_uq8_fast(int16_t x)
 {
     return pf_exp2_q11_uq8_fast_inline(x, pf_exp2_q11_uq8_fast_k, 0);
 }
-
-/* AVX-512 has a 16-bit per-element shift (vpsrlvw) and a leading-zero count
-   (vplzcntd), AVX2 neither: on a CPU with x86-64-v4 the array form runs this
-   loop, whose kernel (bw = 1) uses them; the clones below keep the forms every
-   level vectorizes (bw = 0), as the scalar form does.  The same values
-   (pfmathgen sweeps the array form on its machine against the scalar one). */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
-__attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_exp2_q11_uq8_fast_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
-{
-    const int16_t *k = pf_exp2_q11_uq8_fast_k;
-    __asm__("" : "+r"(k));
-#pragma GCC ivdep
-    for (size_t i = 0; i < n; i++)
-        y[i] = pf_exp2_q11_uq8_fast_inline(x[i], k, 1);
-}
-#endif
 
 /* Array form in 16-bit lanes.  The constants come through a pointer that an
    empty asm hides from GCC: GCC 12 rewrites a product by a known constant
@@ -302,8 +351,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_exp2_q11_uq8_fast_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_exp2_q11_uq8_fast_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_exp2_q11_uq8_fast_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_exp2_q11_uq8_fast_array_avx2(x, y, n);
         return;
     }
 #endif
