@@ -286,6 +286,45 @@ static void test_arrays_match_scalar(void **st)
     }
 }
 
+/* The scalar forms branch to the body without selects when k (x/ln2 resp.
+   x rounded) is in [-126, 127], tested on z's bits: at the ends of that
+   band 2^k is still normal but y 2^k may be subnormal (k = -126, y < 1) or
+   near the top, and the branch must give the full body's bits there.  Every
+   float of the band's edges (|x| from the old limit, 87 resp. 126, to past
+   the new one, 88.5 resp. 128), and across the overflow and subnormal
+   thresholds, against the array form, whose blocks there hold lanes that
+   are not ordinary and so run the full body. */
+static void test_scalar_branch_edges(void **st)
+{
+    (void)st;
+    enum { B = 4096 };
+    static float x[B], y[B];
+    void (*arr[4])(const float *, float *, size_t) = {pf_expf_array, pf_expf_fast_array,
+                                                       pf_exp2f_array, pf_exp2f_fast_array};
+    float (*sc[4])(float) = {pf_expf, pf_expf_fast, pf_exp2f, pf_exp2f_fast};
+    for (int f = 0; f < 4; f++) {
+        float a = f < 2 ? 87.0f : 126.0f, b = f < 2 ? 88.5f : 128.0f;
+        long n = 0, dif = 0;
+        for (int sg = 0; sg < 2; sg++) {
+            uint32_t ua = asu(sg ? -a : a), ub = asu(sg ? -b : b);
+            for (uint32_t u = ua; u <= ub;) {
+                int m = 0;
+                for (; m < B && u <= ub; m++, u++)
+                    x[m] = asf(u);
+                x[0] = 1e30f; /* not ordinary: the block takes the full body */
+                arr[f](x, y, (size_t)m);
+                for (int i = 1; i < m; i++, n++) {
+                    float w = sc[f](x[i]);
+                    dif += memcmp(&w, &y[i], 4) != 0;
+                }
+            }
+        }
+        print_message("scalar branch edges, function %d: %ld floats, %ld differ\n", f, n, dif);
+        assert_true(n > 100000);
+        assert_int_equal(dif, 0);
+    }
+}
+
 /* The array forms take a shorter body for blocks (of 128) whose every lane
    is ordinary (exp: x in [-87, 88], exp2: [-126, 127]; there 2^k is an
    add to y's exponent bits, right only while k is in [-126, 127] and the
@@ -343,6 +382,7 @@ int main(void)
         cmocka_unit_test(test_emitted_exact), cmocka_unit_test(test_library_exact),
         cmocka_unit_test(test_hard_cases),    cmocka_unit_test(test_library_fast),
         cmocka_unit_test(test_arrays_match_scalar), cmocka_unit_test(test_arrays_two_paths),
+        cmocka_unit_test(test_scalar_branch_edges),
         cmocka_unit_test(test_error_model),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

