@@ -26,13 +26,13 @@ ladder_levels = $(LADDER_LEVELS) $(LADDER_EXTRA_$(1))
 # acos: SLEEF u35 sits at 1.28 ULP, between 1 and 1.5 (the mid scheme's floor
 # is about 1.1: gen/templates/acos_mid.c.in)
 LADDER_EXTRA_acos := 1.25
-# atan, atan2: the lean rows (one fmaf, pi/2 as one float) reach about 2.3
-# ULP at order 17, between libmvec and SLEEF u35's ~2.1-3.2 and the 2 and 4
-# levels (gen/templates/atan_lean.c.in)
-# asin: SLEEF u35 sits at 2.4 ULP; the lean row reaches 2.1 at order 11
-# (gen/templates/asin_lean.c.in), above the 2 level
+# asin: SLEEF u35 sits at 2.4 ULP; the lite row reaches 2.1 at order 11
+# (gen/templates/asin_lite.c.in), above the 2 level
 LADDER_EXTRA_asin  := 2.5
-LADDER_EXTRA_atan  := 3
+# atan2: libmvec sits at 3.2 ULP and SLEEF u35 at 2.5, between the 2 and 4
+# levels; at 3 the lean row (one fmaf, pi/2 and pi as one float:
+# gen/templates/atan2_lean.c.in) takes order 17, about 2.1 ULP.  (atan's 3
+# would take the lite row at order 15, 2.5 ULP: no peer between.)
 LADDER_EXTRA_atan2 := 3
 ladder_tag    = $(subst .,p,$(1))
 # trig: the mid rows (float Cody-Waite, gen/float/funcs_trig.c) reach 3 ULP

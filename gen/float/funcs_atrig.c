@@ -237,7 +237,10 @@ static int extra_pi_float(char *buf, size_t n)
    result is one fmaf mt P(z) + k with P = 1 + c3 z + ... rounded and k the
    nearest float of pi/2 (or pi): libmvec's shape.  Against the mid
    template: no Fast2Sum, no low part of K, no product t z (z P's variable
-   carries c1 = 1), so no cost over the fast template's Horner terms. */
+   carries c1 = 1), so no cost over the fast template's Horner terms
+   (ladder_cost 1: after it at the same order).  Their floor is about 2 ULP
+   (P's rounding near 1 and pi/2's 4.4e-8, 0.73 ULP of a result just above
+   pi/4): atan2 at order 17 measures 2.1 ULP against libmvec's 3.2. */
 #define ROW_ATAN_LEAN(fn, tm, ar, red, mo)                                                        \
     {.func = fn, .reduction = "recip", .variant = "lean", .tmpl = tm, .arity = ar,                \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
@@ -258,8 +261,10 @@ static int extra_pi_float(char *buf, size_t n)
 
 /* The lite rows (variant "lite": ladder only): the mid template without its
    Fast2Sum, (khi + m t) + fmaf(m t z, q, klo): two additions less than mid
-   (cost 2), three operations more than lean, about half an ULP better than
-   lean where pi/2's own error counts. */
+   (cost 2), three operations more than lean, without pi/2's own error;
+   khi + m t rounds exactly by Sterbenz where the result is smallest
+   (t >= khi/2).  Order 17: 1.37 ULP over every float (atan), against the
+   mid template's 1.3 at two operations more. */
 #define ROW_ATAN_LITE(fn, tm, ar, red, mo)                                                        \
     {.func = fn, .reduction = "recip", .variant = "lite", .tmpl = tm, .arity = ar,                \
      .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
