@@ -26,6 +26,14 @@ ladder_levels = $(LADDER_LEVELS) $(LADDER_EXTRA_$(1))
 # acos: SLEEF u35 sits at 1.28 ULP, between 1 and 1.5 (the mid scheme's floor
 # is about 1.1: gen/templates/acos_mid.c.in)
 LADDER_EXTRA_acos := 1.25
+# asin: SLEEF u35 sits at 2.4 ULP; the lite row reaches 2.1 at order 11
+# (gen/templates/asin_lite.c.in), above the 2 level
+LADDER_EXTRA_asin  := 2.5
+# atan2: libmvec sits at 3.2 ULP and SLEEF u35 at 2.5, between the 2 and 4
+# levels; at 3 the lean row (one fmaf, pi/2 and pi as one float:
+# gen/templates/atan2_lean.c.in) takes order 17, about 2.1 ULP.  (atan's 3
+# would take the lite row at order 15, 2.5 ULP: no peer between.)
+LADDER_EXTRA_atan2 := 3
 ladder_tag    = $(subst .,p,$(1))
 # trig: the mid rows (float Cody-Waite, gen/float/funcs_trig.c) reach 3 ULP
 LADDER_EXTRA_sin := 3

@@ -19,7 +19,7 @@
 /* the levels a function's ladder may hold, ULP (mk/ladder.mk: LADDER_LEVELS
    for every function, plus LADDER_EXTRA_<f>); absent ones are skipped.  In a
    symbol name the level's point is a 'p' (pf_logf_l0p6). */
-static const char *const levels[] = {"0.55", "0.6", "0.75", "1", "1.25", "1.5", "2", "3", "4", "128", "8192"};
+static const char *const levels[] = {"0.55", "0.6", "0.75", "1", "1.25", "1.5", "2", "2.5", "3", "4", "128", "8192"};
 #define NLEVELS ((int)(sizeof levels / sizeof levels[0]))
 
 static void *lh;

@@ -1,14 +1,16 @@
-/* The atrig family's mid rows on the accuracy ladder (gen/templates/
- * {asin,acos,atan,atan2}_mid.c.in, gen/float/funcs_atrig.c): pfmathgen
- * --max-ulp picks the mid template where the tests below say it must (its
- * cost is below the exact template's, its model within the level), and what
- * it emits is within the level against MPFR (ref/) on inputs the search's
- * sample did not use: the hard regions of each reduction (around |x| = 1/2,
- * where S = sqrtf(2 - 2|x|) ~ 1 rounds hardest and asin is pi/6; toward
- * |x| = 1; atan around |x| = 1, the fold, where z reaches 1; atan2 around
- * |y| = |x| in every quadrant and the axes), the directed list and a fresh
- * random sample.  The array form gives the scalar form's bits.  Confirmation
- * here is --confirm sample; the exhaustive proof is `pfmathgen --max-ulp U`
+/* The atrig family's ladder-only rows on the accuracy ladder (gen/templates/
+ * {asin,acos}_mid.c.in, {asin,atan,atan2}_lite.c.in, atan2_lean.c.in,
+ * gen/float/funcs_atrig.c): pfmathgen --max-ulp picks the template the tests
+ * below name where they say it must (its cost is below the others', its
+ * model within the level), and what it emits is within the level against
+ * MPFR (ref/) on inputs the search's sample did not use: the hard regions of
+ * each reduction (around |x| = 1/2, where S = sqrtf(2 - 2|x|) ~ 1 rounds
+ * hardest and asin is pi/6; toward |x| = 1; asin near 0.84, where
+ * pi/2 - S crosses 1 above the result; atan around |x| = 1, the fold, where
+ * z reaches 1; atan2 around |y| = |x| in every quadrant and the axes), the
+ * directed list and a fresh random sample.  The array form gives the scalar
+ * form's bits.  Confirmation here is --confirm sample; the exhaustive proof
+ * is `pfmathgen --max-ulp U`
  * without it (minutes per level, not in `make test`). */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -74,10 +76,10 @@ static void *load(const char *path)
 static void check_unary(const char *f, const char *u, double U, const char *tmpl)
 {
     char name[64], path[128];
-    snprintf(name, sizeof name, "lad_%s_mid", f);
+    snprintf(name, sizeof name, "lad_%s_l%.0f", f, 100 * U);
     snprintf(path, sizeof path, "/tmp/pf-ladder-atrig-%s.c", f);
     char *src = gen(f, u, name, path);
-    assert_non_null(strstr(src, tmpl));   /* the mid template was chosen */
+    assert_non_null(strstr(src, tmpl));   /* the named template was chosen */
     free(src);
     void *h = load(path);
     pf_fn1 s1;
@@ -96,6 +98,9 @@ static void check_unary(const char *f, const char *u, double U, const char *tmpl
         around(&st, fid, s1, 0.5f, 1u << 16);
         around(&st, fid, s1, 1.0f - 0x1p-10f, 1u << 12);
         around(&st, fid, s1, 0x1p-12f, 1u << 10);
+        /* asin near 0.84: pi/2 - 2s crosses 1 while the result is below it
+           (the lite row's rounding of khi + u is then a whole ULP) */
+        around(&st, fid, s1, 0x1.ad44e8p-1f, 1u << 12);
     }
     print_message("%s: max %.3f ULP (level %g) at %a\n", name, st.max_ulp, U, (double)st.worst_x);
     assert_true(st.max_ulp <= U);
@@ -121,24 +126,35 @@ static void test_acos_mid(void **st)
     check_unary("acos", "1.25", 1.25, "mid template");
 }
 
-static void test_atan_mid(void **st)
+/* asin's 2.5 level (mk/ladder.mk: SLEEF u35 is at 2.4): the lite row */
+static void test_asin_lite(void **st)
 {
     (void)st;
-    check_unary("atan", "2", 2, "mid template");
+    check_unary("asin", "2.5", 2.5, "lite template");
 }
 
-static void test_atan2_mid(void **state)
+/* atan at 2: the lite row (the mid template's terms without its Fast2Sum) */
+static void test_atan_lite(void **st)
 {
-    (void)state;
+    (void)st;
+    check_unary("atan", "2", 2, "lite template");
+}
+
+/* atan2 at level u (U): the template tmpl */
+static void check_atan2(const char *u, double U, const char *tmpl)
+{
+    char name[64], arr[80];
+    snprintf(name, sizeof name, "lad_atan2_l%.0f", 100 * U);
+    snprintf(arr, sizeof arr, "%s_array", name);
     const char *path = "/tmp/pf-ladder-atrig-atan2.c";
-    char *src = gen("atan2", "2", "lad_atan2_mid", path);
-    assert_non_null(strstr(src, "mid template"));
+    char *src = gen("atan2", u, name, path);
+    assert_non_null(strstr(src, tmpl));
     free(src);
     void *h = load(path);
     pf_fn2 s2;
     void (*a2)(const float *, const float *, float *, size_t);
-    *(void **)&s2 = dlsym(h, "lad_atan2_mid");
-    *(void **)&a2 = dlsym(h, "lad_atan2_mid_array");
+    *(void **)&s2 = dlsym(h, name);
+    *(void **)&a2 = dlsym(h, arr);
     assert_non_null(s2);
     assert_non_null(a2);
     pf_sweep_stats st;
@@ -154,9 +170,9 @@ static void test_atan2_mid(void **state)
             pf_sweep_one(&st, PF_ATAN2, NULL, s2, q & 1 ? -y2 : y2, q & 2 ? -x2 : x2);
             pf_sweep_one(&st, PF_ATAN2, NULL, s2, q & 1 ? -x2 : x2, q & 2 ? -y2 : y2);
         }
-    print_message("lad_atan2_mid: max %.3f ULP (level 2) at (%a, %a)\n", st.max_ulp, (double)st.worst_x,
+    print_message("%s: max %.3f ULP (level %g) at (%a, %a)\n", name, st.max_ulp, U, (double)st.worst_x,
                   (double)st.worst_x2);
-    assert_true(st.max_ulp <= 2);
+    assert_true(st.max_ulp <= U);
     enum { N = 4096 };
     static float y[N], x[N], r[N];
     for (int i = 0; i < N; i++) {
@@ -172,13 +188,28 @@ static void test_atan2_mid(void **state)
     unlink(path);
 }
 
+/* atan2 at 2: the lite row; at 3 (mk/ladder.mk): the lean row, one fmaf */
+static void test_atan2_lite(void **st)
+{
+    (void)st;
+    check_atan2("2", 2, "lite template");
+}
+
+static void test_atan2_lean(void **st)
+{
+    (void)st;
+    check_atan2("3", 3, "lean template");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_asin_mid),
         cmocka_unit_test(test_acos_mid),
-        cmocka_unit_test(test_atan_mid),
-        cmocka_unit_test(test_atan2_mid),
+        cmocka_unit_test(test_asin_lite),
+        cmocka_unit_test(test_atan_lite),
+        cmocka_unit_test(test_atan2_lite),
+        cmocka_unit_test(test_atan2_lean),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -47,6 +47,11 @@ int pf_model_asin_mid(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_acos_mid(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_atan_mid(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_atan2_mid(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_atan_lean(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_asin_lite(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_atan_lite(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_atan2_lite(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_atan2_lean(const fit_poly *p, int order, pf_scheme *sc);
 
 /* ---- fit targets, in the fit variable t ---- */
 static void g_asin(mpfr_t y, const mpfr_t t, const void *c)
@@ -228,6 +233,45 @@ static int extra_pi_float(char *buf, size_t n)
      .default_order = 19, .real = "fma", .extra = extra_pi_ff, .model = mo,                       \
      .ladder_cost = MID_LADDER_COST}
 
+/* The lean rows (variant "lean": ladder only): the mid rows' fits, but the
+   result is one fmaf mt P(z) + k with P = 1 + c3 z + ... rounded and k the
+   nearest float of pi/2 (or pi): libmvec's shape.  Against the mid
+   template: no Fast2Sum, no low part of K, no product t z (z P's variable
+   carries c1 = 1), so no cost over the fast template's Horner terms
+   (ladder_cost 1: after it at the same order).  Their floor is about 2 ULP
+   (P's rounding near 1 and pi/2's 4.4e-8, 0.73 ULP of a result just above
+   pi/4): atan2 at order 17 measures 2.1 ULP against libmvec's 3.2. */
+#define ROW_ATAN_LEAN(fn, tm, ar, red, mo)                                                        \
+    {.func = fn, .reduction = "recip", .variant = "lean", .tmpl = tm, .arity = ar,                \
+     .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
+     .default_order = 17, .real = "fma", .extra = extra_pi_float, .model = mo,                    \
+     .ladder_cost = 1}
+
+/* asin's lite row (gen/templates/asin_lite.c.in): the mid template without
+   its Fast2Sum, (khi + u) + fmaf(u z, q, klo), and with the square root of
+   z itself, 2 sqrt(w) one exact product (no separate 2 - 2a): about the
+   fast template's operations (ladder_cost 1: after it at the same order). */
+#define ROW_ASIN_LITE(fn, tm, red, mo)                                                            \
+    {.func = fn, .reduction = "sqrthalf", .variant = "lite", .tmpl = tm, .arity = 1,              \
+     .reduction_text = red, .target_text = "asin(t)", .g = g_asin, .a = 0, .b = 0.5,              \
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
+     .default_order = 11, .real = "fma", .extra = extra_pi_ff, .model = mo,                       \
+     .tail = "asin_acos_tail.c", .ladder_cost = 1}
+
+/* The lite rows (variant "lite": ladder only): the mid template without its
+   Fast2Sum, (khi + m t) + fmaf(m t z, q, klo): two additions less than mid
+   (cost 2), three operations more than lean, without pi/2's own error;
+   khi + m t rounds exactly by Sterbenz where the result is smallest
+   (t >= khi/2).  Order 17: 1.37 ULP over every float (atan), against the
+   mid template's 1.3 at two operations more. */
+#define ROW_ATAN_LITE(fn, tm, ar, red, mo)                                                        \
+    {.func = fn, .reduction = "recip", .variant = "lite", .tmpl = tm, .arity = ar,                \
+     .reduction_text = red, .target_text = "atan(t)", .g = g_atan, .a = 0, .b = 1,                \
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
+     .default_order = 17, .real = "fma", .extra = extra_pi_ff, .model = mo,                       \
+     .ladder_cost = 2}
+
 const pf_spec pf_specs_atrig[] = {
     ROW_ASIN_EXACT("asin", "asin_ff", ASIN_RED, pf_model_asin),
     ROW_ASIN_FAST("asin", "asin_fast", ASIN_RED, pf_model_asin_fast),
@@ -241,5 +285,10 @@ const pf_spec pf_specs_atrig[] = {
     ROW_ASIN_MID("acos", "acos_mid", ACOS_RED, pf_model_acos_mid),
     ROW_ATAN_MID("atan", "atan_mid", 1, ATAN_RED_FAST, pf_model_atan_mid),
     ROW_ATAN_MID("atan2", "atan2_mid", 2, ATAN2_RED_FAST, pf_model_atan2_mid),
+    ROW_ASIN_LITE("asin", "asin_lite", ASIN_RED, pf_model_asin_lite),
+    ROW_ATAN_LEAN("atan", "atan_lean", 1, ATAN_RED_FAST, pf_model_atan_lean),
+    ROW_ATAN_LITE("atan", "atan_lite", 1, ATAN_RED_FAST, pf_model_atan_lite),
+    ROW_ATAN_LEAN("atan2", "atan2_lean", 2, ATAN2_RED_FAST, pf_model_atan2_lean),
+    ROW_ATAN_LITE("atan2", "atan2_lite", 2, ATAN2_RED_FAST, pf_model_atan2_lite),
     {0},
 };

@@ -443,3 +443,181 @@ int pf_model_atan2_mid(const fit_poly *p, int order, pf_scheme *sc)
         }
     return finish_mid(&m, sc, MID_TEXT_QUOT);
 }
+
+/* ---- the lean schemes (gen/templates/{atan,atan2}_lean.c.in) ----
+ * r = fmaf(mt, P(z), k): P = 1 + c3 z + ... by fmaf Horner (c1 = 1 its
+ * constant term), mt = +-t, k the nearest float of K = 0, pi/2 or pi, one
+ * rounding for the fmaf.  The error at a point, over the ULP of the true
+ * result, beside that last half ULP: the fit's relative error times |t P|,
+ * |t| times P's running Horner bound (half an ULP of each partial sum, P
+ * near 1 included, plus |P'(z)| dz), t's rounding through atan' (as the
+ * mid schemes) and |k - K|, which the mid schemes carry as klo and this
+ * one does not (fl(pi/2) - pi/2 = 4.4e-8: 0.73 ULP of a result just above
+ * pi/4, the worst place for it). */
+static double p_horner_lean(const model *m, double z, double dz, double *err)
+{
+    double s = (double)m->p->c[m->order], e = 0, ds = 0;
+    for (int k = m->order - 2; k >= 1; k -= 2) {
+        double sn = s * z + (double)m->p->c[k];
+        ds = ds * z + s;
+        e = e * fabs(z) + half_ulp(sn);
+        s = sn;
+    }
+    *err = e + fabs(ds) * dz;
+    return s;
+}
+
+/* t in (0, 1] the reduced argument as computed, rnd = 0 when exact; K the
+   constant, kerr |fl(K) - K| */
+static void point_lean(model *m, double x, double truth, double t, int rnd, double kerr)
+{
+    double z = t * t, eP, P = p_horner_lean(m, z, half_ulp(z), &eP);
+    double red = rnd ? half_ulp(t) / (1 + z) : 0;
+    double e = m->eps * fabs(t * P) + fabs(t) * eP + red + kerr;
+    double b = 0.5 + e / ulp_of(truth);
+    if (b > m->worst) {
+        m->worst = b;
+        m->at = x;
+    }
+}
+
+#define LEAN_TEXT                                                                                  \
+    "P(z) = 1 + c3 z + ... by fmaf Horner in float; fmaf(m t, P, k), t = min/max (one division, " \
+    "rounded once), k = 0, pi/2, pi as the nearest float; one final rounding"
+
+int pf_model_atan_lean(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio2 = acos(-1.0) / 2, e2 = fabs((double)(float)pio2 - pio2);
+    for (int i = 1; i <= NGRID; i++) {
+        double t = (double)i / NGRID;               /* (0, 1] */
+        double tt = ldexp(1.0, -i * 40 / NGRID);    /* toward 0 */
+        point_lean(&m, t, atan(t), t, 0, 0);
+        point_lean(&m, tt, atan(tt), tt, 0, 0);
+        double tb = fmin(t, 1 - 0x1p-24);   /* fl(1/a) < 1 for a > 1 */
+        point_lean(&m, 1 / tb, atan(1 / tb), tb, 1, e2);
+        point_lean(&m, 1 / tt, atan(1 / tt), tt, 1, e2);
+    }
+    return finish_mid(&m, sc, LEAN_TEXT);
+}
+
+int pf_model_atan2_lean(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio2 = acos(-1.0) / 2;
+    double kerr[3] = {0, fabs((double)(float)pio2 - pio2), fabs((double)(float)(2 * pio2) - 2 * pio2)};
+    for (int swap = 0; swap <= 1; swap++)
+        for (int negx = 0; negx <= 1; negx++) {
+            int k = swap ? 1 : 2 * negx;   /* K = k pi/2 */
+            double sg = swap != negx ? -1 : 1, K = k * pio2;
+            for (int i = 1; i <= NGRID; i++) {
+                double t = (double)i / NGRID, tt = ldexp(1.0, -i * 40 / NGRID);
+                point_lean(&m, t, K + sg * atan(t), t, 1, kerr[k]);
+                point_lean(&m, tt, K + sg * atan(tt), tt, 1, kerr[k]);
+            }
+        }
+    return finish_mid(&m, sc, LEAN_TEXT);
+}
+
+/* ---- the lite schemes (gen/templates/{atan,atan2}_lite.c.in) ----
+ * (khi + sg t) + fmaf(sg t z, q, klo): the mid schemes' terms, and h =
+ * khi + sg t's own rounding, half an ULP of h, which the mid schemes carry
+ * as l.  h is exact when K = 0, and when sg = -1 and t >= khi/2 (Sterbenz:
+ * khi/2 <= t <= 1 < 2 khi): atan's |x| in (1, 1.27]. */
+static void point_lite(model *m, double x, double truth, double K, double klo, double sg,
+                       double t, int rnd)
+{
+    double z = t * t, eq, q = q_horner_mid(m, z, half_ulp(z), &eq);
+    double tz = t * z, c = fabs(tz * q) + fabs(klo);
+    double red = rnd ? half_ulp(t) / (1 + z) : 0;
+    double e = m->eps * fabs(t + tz * q) + red + 0x1p-48 * K + tz * eq + half_ulp(tz) * fabs(q) +
+               half_ulp(c) + (K != 0 && !(sg < 0 && t >= (double)(float)K / 2) ? half_ulp(K + sg * t) : 0);
+    double b = 0.5 + e / ulp_of(truth);
+    if (b > m->worst) {
+        m->worst = b;
+        m->at = x;
+    }
+}
+
+#define LITE_TEXT                                                                                  \
+    "q(z) by fmaf Horner in float; (khi + m t) + fmaf(m t z, q, klo), t = min/max (one division, " \
+    "rounded once), khi + m t rounded once, K = pi/2, pi as float hi + lo; one final rounding"
+
+int pf_model_atan_lite(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio2 = acos(-1.0) / 2, klo2 = pio2 - (double)(float)pio2;
+    for (int i = 1; i <= NGRID; i++) {
+        double t = (double)i / NGRID;               /* (0, 1] */
+        double tt = ldexp(1.0, -i * 40 / NGRID);    /* toward 0 */
+        point_lite(&m, t, atan(t), 0, 0, 1, t, 0);
+        point_lite(&m, tt, atan(tt), 0, 0, 1, tt, 0);
+        double tb = fmin(t, 1 - 0x1p-24);   /* fl(1/a) < 1 for a > 1 */
+        point_lite(&m, 1 / tb, atan(1 / tb), pio2, klo2, -1, tb, 1);
+        point_lite(&m, 1 / tt, atan(1 / tt), pio2, klo2, -1, tt, 1);
+    }
+    return finish_mid(&m, sc, LITE_TEXT);
+}
+
+int pf_model_atan2_lite(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio2 = acos(-1.0) / 2;
+    double klo[3] = {0, pio2 - (double)(float)pio2, 2 * pio2 - (double)(float)(2 * pio2)};
+    for (int swap = 0; swap <= 1; swap++)
+        for (int negx = 0; negx <= 1; negx++) {
+            int k = swap ? 1 : 2 * negx;   /* K = k pi/2 */
+            double sg = swap != negx ? -1 : 1, K = k * pio2;
+            for (int i = 1; i <= NGRID; i++) {
+                double t = (double)i / NGRID, tt = ldexp(1.0, -i * 40 / NGRID);
+                point_lite(&m, t, K + sg * atan(t), K, klo[k], sg, t, 1);
+                point_lite(&m, tt, K + sg * atan(tt), K, klo[k], sg, tt, 1);
+            }
+        }
+    return finish_mid(&m, sc, LITE_TEXT);
+}
+
+/* ---- asin's lite scheme (gen/templates/asin_lite.c.in) ----
+ * r = fl(khi + u) + fmaf(fl(u z), q(z), klo): u = a (z = fl(a^2), K = 0)
+ * or -2s (s = sqrtf(w), z = w exact, K = pi/2 as hi + lo).  Beside the
+ * last half ULP: the fit's relative error times |u + u z q|, |u z| times
+ * q's running Horner bound (half an ULP of each partial sum, plus
+ * |q'| dz), fl(u z)'s half ULP times |q|, c's half ULP, khi + u's half ULP
+ * (none when K = 0 or 2s >= khi/2, Sterbenz), s's rounding through the
+ * slope 2/sqrt(1 - s^2) of 2 asin(s), and K's representation (2^-48). */
+/* u as |u|, k = |K|, klo = |klo|, red s's rounding moved to the result */
+static void point_asin_lite(model *m, double x, double truth, double u, double k, double z,
+                            double dz, double red, double klo)
+{
+    double eq, q = q_horner_mid(m, z, dz, &eq);
+    double uz = fabs(u * z);
+    double h = k != 0 && fabs(u) < (double)(float)k / 2 ? half_ulp(k - fabs(u)) : 0;
+    double c = uz * fabs(q) + klo;   /* u z q and klo have one sign */
+    double e = m->eps * fabs(fabs(u) + uz * q) + uz * eq + half_ulp(uz) * fabs(q) + half_ulp(c) + h +
+               red + 0x1p-48 * k;
+    double b = 0.5 + e / ulp_of(truth);
+    if (b > m->worst) {
+        m->worst = b;
+        m->at = x;
+    }
+}
+
+int pf_model_asin_lite(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    double pio2 = acos(-1.0) / 2, klo2 = fabs(pio2 - (double)(float)pio2);
+    for (int i = 1; i <= NGRID; i++) {
+        double x = 0.5 * i / NGRID;               /* (0, 1/2] */
+        double xt = ldexp(0.5, -i * 40 / NGRID);  /* toward 0 */
+        double xb = 0.5 + 0.5 * i / NGRID;        /* (1/2, 1] */
+        xb = xb < 1 ? xb : 1 - 0x1p-24;
+        double w = (1 - xb) / 2, s = sqrt(w);
+        point_asin_lite(&m, x, asin(x), x, 0, x * x, half_ulp(x * x), 0, 0);
+        point_asin_lite(&m, xt, asin(xt), xt, 0, xt * xt, half_ulp(xt * xt), 0, 0);
+        point_asin_lite(&m, xb, asin(xb), 2 * s, pio2, w, 0, 2 * half_ulp(s) / sqrt(1 - w), klo2);
+    }
+    return finish_mid(&m, sc,
+                      "q(z) by fmaf Horner in float; fmaf(u z, q, k + u), u = |x| or -2 sqrtf(w) "
+                      "(z = x^2 or w = (1 - |x|)/2 exact), k = 0 or pi/2 as the nearest float, "
+                      "k + u rounded once; one final rounding");
+}

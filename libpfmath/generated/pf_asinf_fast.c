@@ -111,10 +111,10 @@ static const float pf_asinf_fast_C[3] = {
      |x| >  1/2:  asin|x| = pi/2 - S q(z),     S = sqrt(2 - 2a) = 2 sqrt(w),
                   a = |x|                      z = w = (1 - a)/2
    (asin a = pi/2 - 2 asin sqrt(w); z = w is (S/2)^2 without S's rounding).
-   With x's sign both are one fmaf t q + k: (t, k) = (x, +-0) or
-   (-+S, +-pi/2), the sign of x on t and k (k = x's zero keeps asin(-0) =
-   -0).  2 - 2a and w are exact for a in [1/2, 1] (Sterbenz; the fmaf
-   rounds once), S is correctly rounded, so what is left is the fit (2^-12.6
+   Both are one fmaf t q + k: (t, k) = (|x|, 0) or (-S, pi/2), and x's
+   sign is put on the result by copysignf (asin(-0) = -0).  w is exact for
+   a in [1/2, 1] (Sterbenz; the fmaf rounds once), S = 2 sqrtf(w) is
+   correctly rounded, so what is left is the fit (2^-12.6
    of p) and a few float roundings; above 1/2 the fit's error is scaled by
    at most S q / result <= (pi/3) / (pi/6) = 2 (at the fold).  At the fold
    a = 1/2, S = sqrt(1) = 1 exactly and both sides are q(1/4) terms: p's
@@ -125,10 +125,10 @@ static const float pf_asinf_fast_C[3] = {
    so, see mk/lib-atrig.mk; the flag cannot be set by a pragma); compiled
    with errno semantics the array loop runs one lane at a time and gives
    the same bits (sqrtf is correctly rounded either way).  |x| > 1 (inf
-   included) makes 2 - 2a < 0 and S, hence the result, NaN (the domain
-   error) in the big lanes.  A NaN x takes the small lanes, where t = x and
-   z = x x carry the same NaN: which operand the final fmaf passes on does
-   not matter, so every clone returns the same bits.  No select after the
+   included) makes w < 0 and S, hence the result, NaN (the domain error)
+   in the big lanes.  A NaN x takes the small lanes, where t = |x| and
+   z = |x| |x| carry the same NaN: which operand the final fmaf passes on
+   does not matter, so every clone returns the same bits (with x's sign).  No select after the
    polynomial, one evaluation of q. */
 /* Build flags: -fno-math-errno (for vsqrtps; tests/check-vectorize.sh reads this line) */
 /* c ? a : b: as ?: in the array loop (vec = 1), on the bits in the scalar
@@ -141,18 +141,22 @@ static inline float pf_asinf_fast_sel(int vec, int c, float a, float b)
 
 static inline float pf_asinf_fast_body(float x, int vec)
 {
-    uint32_t sx = pf_asuint(x) & 0x80000000u;
     float a = fabsf(x);
     /* every select on the one test !(a > 1/2), in the same sense: GCC then
        emits masked moves on two compares (a > 1/2 in some selects and
        a <= 1/2 in others, which differ for NaN, cost it a third one) */
     int small = !(a > 0.5f);
-    float z = pf_asinf_fast_sel(vec, small, x * x, fmaf(-0.5f, a, 0.5f));
-    float S = sqrtf(fmaf(-2.0f, a, 2.0f));
-    float t = pf_asinf_fast_sel(vec, small, x, pf_asfloat(pf_asuint(S) ^ sx ^ 0x80000000u));
-    float k = pf_asinf_fast_sel(vec, small, pf_asfloat(sx), pf_asfloat(pf_asuint(PF_PIO2_HI) ^ sx));
+    float z = pf_asinf_fast_sel(vec, small, a * a, fmaf(-0.5f, a, 0.5f));
+    /* S = 2 sqrtf(w) is sqrtf(2 - 2a) to the bit (2 - 2a = 4w exactly, and
+       scaling by 4 commutes with a correctly rounded square root): one
+       product by -2 on the square root of z itself, where 2 - 2a took an
+       fmaf and the sign a xor */
+    float t = pf_asinf_fast_sel(vec, small, a, -2.0f * sqrtf(z));
+    float k = pf_asinf_fast_sel(vec, small, 0.0f, PF_PIO2_HI);
     float q = pf_horner_fma(z, pf_asinf_fast_C, 3);   /* 1 + c3 z + ... */
-    return fmaf(t, q, k);
+    /* fmaf(t, q, k) = asin|x| >= +0 (or NaN): copysignf puts x's sign on
+       it (asin(-0) = -0), one vpternlogd in the AVX-512 loop */
+    return copysignf(fmaf(t, q, k), x);
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the

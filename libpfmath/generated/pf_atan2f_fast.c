@@ -131,16 +131,23 @@ static inline float pf_atan2f_fast_inline(float y, float x)
     uint32_t iy = pf_asuint(y), ix = pf_asuint(x);
     float ay = pf_asfloat(iy & 0x7fffffffu), ax = pf_asfloat(ix & 0x7fffffffu);
     uint32_t swap = 0u - (uint32_t)(ay > ax), negx = 0u - (ix >> 31);
-    uint32_t eq = 0u - (uint32_t)(ay == ax), nz = 0u - (uint32_t)(ax != 0);
     float n = ay > ax ? ax : ay, d = ay > ax ? ay : ax;
-    /* 0/0 and inf/inf are NaN: |y| = |x| takes t = 1, or 0 for two zeros */
-    float t = pf_atan2f_fast_pick(eq, pf_asfloat(pf_asuint(1.0f) & nz), n / d);
+    /* 0/0 and inf/inf would be NaN.  On the bits (unsigned integer max and
+       min, one operation each; d >= +0): two zeros divide by the least
+       subnormal instead (0), and t = min(n/d, 1) takes inf/inf's NaN, of
+       either sign, to 1; |y| = |x| finite gives 1 exactly.  NaN operands
+       also get t = 1, and the NaN rule below replaces their result.  Two
+       operations where a select on |y| = |x| took four. */
+    uint32_t db = pf_asuint(d), qb = pf_asuint(n / pf_asfloat(db > 1u ? db : 1u));
+    float t = pf_asfloat(qb < 0x3f800000u ? qb : 0x3f800000u);
     float K = pf_atan2f_fast_pick(swap, PF_PIO2_HI, pf_asfloat(pf_asuint(PF_PI_HI) & negx));
     float sg = pf_asfloat(pf_asuint(1.0f) | ((swap ^ negx) & 0x80000000u));
     float z = t * t;
     float p = fmaf(t * z, pf_horner_fma(z, pf_atan2f_fast_C + 1, 4 - 1), t);   /* c1 = 1 */
     float res = pf_asfloat(pf_asuint(fmaf(sg, p, K)) | (iy & 0x80000000u));
-    return ax != ax ? x + x : ay != ay ? y + y : res;
+    /* the NaN rule: one unordered compare and one select of the NaN */
+    float nn = isnan(ax) ? x : y;
+    return isunordered(ax, ay) ? nn + nn : res;
 }
 
 /* The scalar form is cloned too, so that fmaf is one instruction where the
