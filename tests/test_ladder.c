@@ -26,7 +26,8 @@ static tu_run_result R;
 
 static void expect_error_v(const char *const *args, const char *what)
 {
-    const char *out = "/tmp/pf-ladder-test-err.c";
+    char out[96];
+    snprintf(out, sizeof out, "/tmp/pf-ladder-test-err-%ld.c", (long)getpid());
     unlink(out);
     const char *v[40];
     int n = 0;
@@ -137,24 +138,28 @@ static void check_emitted(const char *path, const char *name, const char *f, dou
 static void test_emitted_meets_bound(void **st)
 {
     (void)st;
+    /* per-process paths: the normal and the ASan build run this at once */
+    char p2[96], p8192[96];
+    snprintf(p2, sizeof p2, "/tmp/pf-ladder-exp2-2-%ld.c", (long)getpid());
+    snprintf(p8192, sizeof p8192, "/tmp/pf-ladder-exp2-8192-%ld.c", (long)getpid());
     /* exp2: a cheap fit; two levels, the looser one no dearer */
-    char *a = gen("exp2", "2", "lad_exp2_2", "/tmp/pf-ladder-exp2-2.c");
-    char *b = gen("exp2", "2^13", "lad_exp2_8192", "/tmp/pf-ladder-exp2-8192.c");
+    char *a = gen("exp2", "2", "lad_exp2_2", p2);
+    char *b = gen("exp2", "2^13", "lad_exp2_8192", p8192);
     assert_non_null(strstr(a, "Regenerate:  pfmathgen --func exp2 --max-ulp 2 "));
     assert_non_null(strstr(a, " * Ladder:      --max-ulp 2: the cheapest of "));
     assert_non_null(strstr(a, " * Confirmed:   max "));
     assert_non_null(strstr(a, "sampled, not exhaustive (--confirm sample)"));
     assert_true(cost_in(b) <= cost_in(a));
-    check_emitted("/tmp/pf-ladder-exp2-2.c", "lad_exp2_2", "exp2", 2);
-    check_emitted("/tmp/pf-ladder-exp2-8192.c", "lad_exp2_8192", "exp2", 8192);
+    check_emitted(p2, "lad_exp2_2", "exp2", 2);
+    check_emitted(p8192, "lad_exp2_8192", "exp2", 8192);
     /* deterministic: the same command writes the same bytes */
-    char *a2 = gen("exp2", "2", "lad_exp2_2", "/tmp/pf-ladder-exp2-2.c");
+    char *a2 = gen("exp2", "2", "lad_exp2_2", p2);
     assert_string_equal(a, a2);
     free(a);
     free(a2);
     free(b);
-    unlink("/tmp/pf-ladder-exp2-2.c");
-    unlink("/tmp/pf-ladder-exp2-8192.c");
+    unlink(p2);
+    unlink(p8192);
 }
 
 static void test_impossible(void **st)

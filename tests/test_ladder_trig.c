@@ -54,7 +54,7 @@ static void check_level(const char *func, const char *u, double U)
 {
     char name[64], path[128];
     snprintf(name, sizeof name, "lad_%sf_mid", func);
-    snprintf(path, sizeof path, "/tmp/pf-ladder-trig-%s.c", func);
+    snprintf(path, sizeof path, "/tmp/pf-ladder-trig-%ld-%s.c", (long)getpid(), func);
     unlink(path);
     tu_runl(&R, "pfmathgen", "--func", func, "--max-ulp", u, "--name", name, "--confirm", "sample", "-o", path,
             NULL);
