@@ -5,34 +5,41 @@
  * Input:       int16_t x, value x 2^-12 in [-8, 7.99975586]
  * Output:      int16_t y, value y 2^-14 in [-2, 1.99993896]
  * Reduction:   on |x| (sin(-x) = -sin(x), cos(-x) = cos(x), exactly); u = |x| 2/pi in quarter 
- *              turns, 2^-14 units, modulo 4 in a uint16_t: w = |x| 3 + round(|x| -14861 2^-15) 
- *              + 1 2^14 (2^(30-12)/pi = 3 2^15 + -14861, MPFR; the product by 3 taken mod 2^16, 
- *              the other by the rounding multiply-high); fold to v in [-1, 1] (v = w - 1 or 3 - 
- *              w, 2^-14 units), +-1 held as +-(1 - 2^-14) (sin is flat there: it moves the 
- *              result by < 5e-9), doubled to 2^-15 units; error of v <= 3.215e-05
- * Domain:      sin(pi/2 t) on t in [0, 1] (odd polynomial t P(t^2))
- * Order:       5 (3 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       every step in 16-bit lanes
- * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
- *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
- * Constraints: none
- * Formats:     x unsigned fixed<15,15> in int16_t; p2 fixed<15,15>, p1 fixed<15,15>, p0 
- *              fixed<15,14> (x rounded to 2^-14); steps p = pf_fx_mulhrs(p, x) + c, the 
- *              rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
- *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
- *              Horner rounding error <= 6.542e-05
- * Polynomial:  max relative error 2.441e-04 (2^-12.00) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.441e-04 |f(x)| (polynomial 
- *              2.441e-04, arithmetic and reduction 0.000e+00, relative) + 2.0970 LSB 
- *              (arithmetic and reduction, absolute) = 6.5970 LSB at most (|f| <= 1)
- * Sweep:       max 4.3030 LSB at x = -32145 (-7.84790039), mean 0.7967 LSB; exhaustive: all 
+ *              turns, U = u 2^30 mod 2^32 = |x| K, K = round(2/pi 2^18) = 166886 = 2 2^16 + 
+ *              35814 (MPFR), as two 16-bit words: lo = |x| 35814 mod 2^16 (pmullw), hi = 
+ *              floor(|x| 35814 2^-16) + |x| 2 (pmulhuw, pmullw), exact; |error of u| <= 
+ *              1.636e-06; half turn h = bit 31 of U, segment j = bits 30..26 (u mod 2 in [j/16, 
+ *              (j+1)/16)), tau = bits 25..11 2^-15 in [0, 1) (the rest truncated, < 2^-19 
+ *              quarter turns)
+ * Domain:      sin(pi/2 (j + tau)/16) on tau in [0, 1) for each of 32 segments j of the half 
+ *              turn [0, 2) quarter turns (the other half by the sign)
+ * Order:       2 per segment (P_j(tau) = C0 + tau (C1 + tau C2)), three 32-entry tables of 
+ *              int16_t; int16_t words: 16-bit lanes
+ * Lanes:       every step in 16-bit lanes; the lookups (vpermw, three registers of 32 entries) 
+ *              in the AVX-512BW loop by intrinsics (x86-64-v4); other clones, scalar form: the 
+ *              same steps in plain C (32-bit table loads)
+ * Method:      per segment: the quadratic through the three Chebyshev nodes of [0, 1] (long 
+ *              double), rounded to 2^-16, then the integers within (+-4, +-4, +-3) of it with 
+ *              the smallest largest error of the emitted steps over the segment's inputs (every 
+ *              16-bit input, against sinl/cosl), no step leaving int16_t
+ * Constraints: none (the sign fold makes sin exactly odd and cos exactly even)
+ * Formats:     tau int16_t at 2^-15 in [0, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(tau, C2) 
+ *              int16_t at 2^-16; P = C0 + pmulhrsw(tau, q) int16_t at 2^-16 offset by 1/2 (sin 
+ *              = (P + 2^15) 2^-16); result pmulhrsw(P, 2^13) + 2^13 = round(sin 2^14), ties up, 
+ *              then negated when h (xor x < 0, for sin)
+ * Polynomial:  largest pre-rounding error of the emitted steps 0.4308 lsb (all 2^16 inputs, 
+ *              against sinl/cosl: segment fit, coefficient and multiply-high roundings, phase)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.4308 LSB (polynomial 0.0000, 
+ *              arithmetic and reduction 0.4308) = 0.9308 LSB; taken over every input from the 
+ *              emitted integer steps (the register-table kernel)
+ * Sweep:       max 0.8095 LSB at x = -6027 (-1.47143555), mean 0.2713 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
- *              per rounding); bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating point, no <math.h>); the phase exact but for K's 
+ *              rounding, tau truncated, the multiply-highs and the result rounded to nearest, 
+ *              ties up; bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -216,45 +223,103 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* sin in fixed point, in 16-bit lanes.  u = x 2/pi counts quarter turns;
-   the phase w = (u + 1) mod 4 is a uint16_t with 14 fraction bits, and
-   sin(x) = sin(pi/2 (w - 1)).  Fold: v = w - 1 on [0, 2), 3 - w on
-   [2, 4) (sin(pi/2 v) = sin(pi/2 (2 - v))), so v is in [-1, 1] and
-   sin(x) = sin(pi/2 v) = v P(v^2).  k[] holds the constants; bw (the AVX-512BW form, see
-   fx_tail16.c.in) changes nothing here. */
+/* sin in fixed point, in 16-bit lanes, from tables that fit registers.
+   u = |x| 2/pi counts quarter turns (for cos, u + 1: cos(x) = sin(pi/2
+   (u + 1))); U = u 2^30 mod 2^32 is held as two 16-bit words hi:lo.  The
+   half turn h = bit 31 (sin(pi/2 (u + 2)) = -sin(pi/2 u)), the segment j =
+   bits 30..26 (u mod 2 in [j/16, (j+1)/16)) and tau = bits 25..11 (2^-15,
+   the position in the segment) give sin(pi/2 u) = +-P_j(tau), a quadratic
+   per segment from three 32-entry tables (one register each for vpermw).
+   k[] holds the multipliers; bw changes nothing here. */
+/* C0[j]: P_j(0) - 1/2, 2^-16 units (fitted, see the provenance) */
+static const int32_t pf_sin_q12_q14_fast_c0[32] = {
+    -32768, -26345, -19983, -13744, -7689, -1875, 3642, 8807,
+    13573, 17892, 21723, 25030, 27779, 29946, 31509, 32453,
+    32767, 32453, 31509, 29946, 27779, 25030, 21723, 17892,
+    13573, 8808, 3642, -1875, -7688, -13744, -19983, -26344,
+};
+/* C1[j], 2^-16 units */
+static const int32_t pf_sin_q12_q14_fast_c1[32] = {
+    6440, 6410, 6318, 6163, 5952, 5682, 5354, 4981,
+    4554, 4087, 3579, 3036, 2466, 1869, 1255, 632,
+    3, -635, -1258, -1868, -2462, -3037, -3578, -4087,
+    -4554, -4981, -5355, -5678, -5952, -6162, -6314, -6411,
+};
+/* C2[j], 2^-16 units */
+static const int32_t pf_sin_q12_q14_fast_c2[32] = {
+    -16, -47, -79, -107, -137, -165, -188, -215,
+    -235, -256, -272, -287, -299, -306, -311, -318,
+    -318, -309, -305, -299, -288, -270, -253, -232,
+    -212, -185, -162, -136, -104, -77, -48, -13,
+};
 PF_FX_INLINE int16_t pf_sin_q12_q14_fast_inline(int16_t x, const int16_t *k, int bw)
 {
     (void)bw;
-    /* phase w = (u + 1) mod 4, 2^-14 units */
+    /* U = |x| K mod 2^32 (u 2^30, u = |x| 2/pi) as hi 2^16 + lo, exact */
     uint16_t ax = pf_fx_abs16(x); /* |x| */
-    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)k[0] + (uint16_t)pf_fx_mulhrs((int16_t)ax, k[1]) + 0x4000u);
-    w = (uint16_t)(ax == 32768u ? w + 2 * k[1] : w);
-    /* fold: v = w - 1 on [0, 2), 3 - w on [2, 4), in [-1, 1] (2^-14), then 2^-15 units */
-    uint16_t aw = pf_fx_abs16((int16_t)(w ^ 0x8000u)); /* |w - 2| in [0, 2] */
-    aw = (uint16_t)(aw < 1u ? 1u : aw > 32767u ? 32767u : aw); /* +-1 held below */
-    int16_t vc = (int16_t)(0x4000 - (int32_t)aw); /* 1 - |w - 2| = v */
-    int16_t v = (int16_t)(vc * k[2]); /* 2^-15 units */
-    int16_t s = pf_fx_mulhrs(v, v); /* v^2 in [0, 1), 2^-15 units */
-    /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner in 16-bit words, one rounding per step */
-    int16_t s1 = pf_fx_mulhrs(s, k[3]); /* s rounded to 2^-14 */
-    int16_t p = k[4]; /* c5 = 0.0733032226562 */
-    p = (int16_t)(pf_fx_mulhrs(p, s) + k[5]); /* c3 = -0.643737792969, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, s1) + k[6]); /* c1 = 1.57067871094, 2^-14 units */
-    int16_t r = pf_fx_mulhrs(v, p); /* v P, rounded once to the output's lsb */
-    int16_t sg = pf_fx_sgn16(x); /* sin(-x) = -sin(x), through a mask */
-    r = (int16_t)((r ^ sg) - sg);
-    return (int16_t)r;
+    uint32_t pl = (uint32_t)ax * (uint16_t)k[0];
+    uint16_t lo = (uint16_t)pl;
+    uint16_t hi = (uint16_t)((pl >> 16) + (uint32_t)ax * (uint16_t)k[1]);
+    /* segment j = bits 30..26, tau = bits 25..11 (2^-15) */
+    unsigned j = (unsigned)(hi >> 10) & 31u;
+    int16_t t = (int16_t)((((uint32_t)hi << 5) | ((uint32_t)lo >> 11)) & 0x7fffu);
+    /* P = C0 + tau (C1 + tau C2), 2^-16 units offset by 1/2 */
+    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)pf_sin_q12_q14_fast_c2[j]) + pf_sin_q12_q14_fast_c1[j]);
+    int16_t p = (int16_t)(pf_fx_mulhrs(t, q) + pf_sin_q12_q14_fast_c0[j]);
+    int16_t r = (int16_t)(pf_fx_mulhrs(p, k[2]) + 8192); /* round((P + 2^15) 2^-2) */
+    int16_t sg = pf_fx_sgn16((int16_t)(hi ^ (uint16_t)x)); /* the half turn, and x < 0 */
+    return (int16_t)((r ^ sg) - sg);
 }
 
+/* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn
+   the table lookups into vpermw: the array form runs this loop on a CPU
+   with x86-64-v4 (see its dispatch), the rest of the array and the other
+   clones use the scalar steps above.  The same values (pfmathgen sweeps the
+   array form on its machine against the scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#include <immintrin.h>
+extern int16_t pf_sin_q12_q14_fast(int16_t x); /* the scalar form, for the last n % 32 */
+/* 32 table entries as 16-bit words, for vpermw */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_sin_q12_q14_fast_w16(const int32_t *t)
+{
+    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
+                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
+}
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_sin_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    const __m512i c0 = pf_sin_q12_q14_fast_w16(pf_sin_q12_q14_fast_c0), c1 = pf_sin_q12_q14_fast_w16(pf_sin_q12_q14_fast_c1), c2 = pf_sin_q12_q14_fast_w16(pf_sin_q12_q14_fast_c2);
+    const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2), kr = _mm512_set1_epi16(8192);
+    const __m512i ho = _mm512_set1_epi16(0), m15 = _mm512_set1_epi16(0x7fff);
+    const __m512i half = _mm512_set1_epi16(8192), zero = _mm512_setzero_si512();
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        __m512i xv = _mm512_loadu_si512(x + i);
+        __m512i ax = _mm512_abs_epi16(xv);
+        __m512i lo = _mm512_mullo_epi16(ax, kl);
+        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
+        (void)ho;
+        __m512i j = _mm512_srli_epi16(hi, 10); /* vpermw reads the low 5 bits */
+        /* (hi << 5 | lo >> 11) & 0x7fff: one vpternlog */
+        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 5), _mm512_srli_epi16(lo, 11), m15, 0xa8);
+        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),
+                                     _mm512_permutexvar_epi16(j, c1));
+        __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
+        __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
+        __mmask32 neg = _mm512_movepi16_mask(_mm512_xor_si512(hi, xv));
+        r = _mm512_mask_sub_epi16(r, neg, zero, r);
+        _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_sin_q12_q14_fast(x[i]);
+}
+#endif
+
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_sin_q12_q14_fast_k[7] = {
-    3,      /* k[0]: A (as uint16_t): |x| 2^(15-Ei)/pi = |x| (A + B 2^-15) */
-    -14861, /* k[1]: B */
-    2,      /* k[2]: 2 (see the array form) */
-    16384,  /* k[3]: 2^14: s rounded to 14 fraction bits */
-    2402,   /* k[4]: c5 = 0.0733032226562 */
-    -21094, /* k[5]: c3 = -0.643737792969 */
-    25734,  /* k[6]: c1 = 1.57067871094 */
+static const int16_t pf_sin_q12_q14_fast_k[3] = {
+    -29722, /* k[0]: KL (as uint16_t): K = KH 2^16 + KL */
+    2,      /* k[1]: KH */
+    8192,   /* k[2]: 2^13: the result's rounding multiply-high */
 };
 
 int16_t pf_sin_q12_q14_fast(int16_t x)
@@ -279,6 +344,12 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_sin_q12_q14_fast_array(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+    if (__builtin_cpu_supports("x86-64-v4")) {
+        pf_sin_q12_q14_fast_array_bw(x, y, n);
+        return;
+    }
+#endif
     const int16_t *k = pf_sin_q12_q14_fast_k;
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
