@@ -5,41 +5,43 @@
  * Input:       int16_t x, value x 2^-12 in [-8, 7.99975586]
  * Output:      int16_t y, value y 2^-14 in [-2, 1.99993896]
  * Reduction:   on |x| (sin(-x) = -sin(x), cos(-x) = cos(x), exactly); u = |x| 2/pi in quarter 
- *              turns, U = u 2^30 mod 2^32 = |x| K + 2^30 (cos(x) = sin(pi/2 (u + 1))), K = 
- *              round(2/pi 2^18) = 166886 = 2 2^16 + 35814 (MPFR), as two 16-bit words: lo = |x| 
- *              35814 mod 2^16 (pmullw), hi = floor(|x| 35814 2^-16) + |x| 2 + 2^14 (pmulhuw, 
- *              pmullw), exact; |error of u| <= 1.636e-06; half turn h = bit 31 of U, segment j 
- *              = bits 30..26 (u mod 2 in [j/16, (j+1)/16)), tau = bits 25..11 2^-15 in [0, 1) 
- *              (the rest truncated, < 2^-19 quarter turns)
- * Domain:      sin(pi/2 (j + tau)/16) on tau in [0, 1) for each of 32 segments j of the half 
+ *              turns, hi = floor(u 2^14) mod 2^16 = floor(|x| 35814 2^-16) + |x| 2 + 2^14 
+ *              (cos(x) = sin(pi/2 (u + 1))) (pmulhuw, pmullw; K = round(2/pi 2^18) = 2 2^16 + 
+ *              35814, MPFR); |error of u| <= 6.267e-05 (K's rounding and the floor); half turn 
+ *              h = bit 15 of hi, segment j = bits 14..9 (u mod 2 in [j, j + 1) 2^-5), tau = the 
+ *              rest, 2^-15, in [0, 1)
+ * Domain:      sin(pi/2 (j + tau) 2^-5) on tau in [0, 1) for each of 64 segments j of the half 
  *              turn [0, 2) quarter turns (the other half by the sign)
- * Order:       2 per segment (P_j(tau) = C0 + tau (C1 + tau C2)), three 32-entry tables of 
- *              int16_t; int16_t words: 16-bit lanes
- * Lanes:       every step in 16-bit lanes; the lookups (vpermw, three registers of 32 entries) 
- *              in the AVX-512BW loop by intrinsics (x86-64-v4); other clones, scalar form: the 
- *              same steps in plain C (32-bit table loads)
- * Method:      per segment: the quadratic through the three Chebyshev nodes of [0, 1] (long 
- *              double), rounded to 2^-16, then the integers within (+-4, +-4, +-3) of it with 
- *              the smallest largest error of the emitted steps over the segment's inputs (every 
- *              16-bit input, against sinl/cosl), no step leaving int16_t
- * Constraints: none (the sign fold makes sin exactly odd and cos exactly even)
- * Formats:     tau int16_t at 2^-15 in [0, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(tau, C2) 
- *              int16_t at 2^-16; P = C0 + pmulhrsw(tau, q) int16_t at 2^-16 offset by 1/2 (sin 
- *              = (P + 2^15) 2^-16); result pmulhrsw(P, 2^13) + 2^13 = round(sin 2^14), ties up, 
- *              then negated when h (xor x < 0, for sin)
- * Polynomial:  largest pre-rounding error of the emitted steps 0.4766 lsb (all 2^16 inputs, 
- *              against sinl/cosl: segment fit, coefficient and multiply-high roundings, phase)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.4766 LSB (polynomial 0.0000, 
- *              arithmetic and reduction 0.4766) = 0.9766 LSB; taken over every input from the 
- *              emitted integer steps (the register-table kernel)
- * Sweep:       max 0.8090 LSB at x = -31688 (-7.73632812), mean 0.2729 LSB; exhaustive: all 
+ * Order:       1 per segment (r = C0 + tau C1), two 64-entry tables of int16_t; int16_t words: 
+ *              16-bit lanes
+ * Lanes:       every step in 16-bit lanes; the lookups (vpermi2w, two pairs of registers of 32 
+ *              entries) in the AVX-512BW loop by intrinsics (x86-64-v4); other clones, scalar 
+ *              form: the same steps in plain C (32-bit table loads)
+ * Method:      per segment: the line through the two Chebyshev nodes of [0, 1] (long double), 
+ *              rounded to the output's lsb, then the integers within +-6 of it with the 
+ *              smallest largest (pre-rounding error + 1/2 lsb) / max(2^-10 |f|, 4 lsb) over the 
+ *              segment's inputs (every 16-bit input, against sinl/cosl): 0.5171 of the bound at 
+ *              most
+ * Constraints: C0[0] = 0 and C0[32] = 2^14: exact at u = 0 and 1 (sin(0) = 0, sin(pi/2) = 
+ *              cos(0) = 1); the sign fold makes sin exactly odd and cos exactly even
+ * Formats:     tau int16_t at 2^-15 in [0, 2^15); C0, C1 int16_t at the output's lsb 2^-14; r = 
+ *              C0 + pmulhrsw(tau, C1) (the one rounding), then negated when h (xor x < 0, for 
+ *              sin)
+ * Polynomial:  pre-rounding error of the emitted steps <= 1.373e-04 |f| + 1.4949 lsb for every 
+ *              input (all 2^16, against sinl/cosl: segment fit, coefficient rounding, phase)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 1.373e-04 |f(x)| (polynomial 
+ *              0.000e+00, arithmetic and reduction 1.373e-04, relative) + 1.4949 LSB 
+ *              (arithmetic and reduction, absolute) = 4.2449 LSB at most (|f| <= 1); R and A 
+ *              taken over every input from the emitted integer steps (the register-table 
+ *              kernel)
+ * Sweep:       max 4.1325 LSB at x = -89 (-0.0217285156), mean 1.0793 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); the phase exact but for K's 
- *              rounding, tau truncated, the multiply-highs and the result rounded to nearest, 
- *              ties up; bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating point, no <math.h>); the phase floored to 2^-14 
+ *              quarter turns, the multiply-high rounded to nearest, ties up; bit-identical 
+ *              under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -223,63 +225,58 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* cos in fixed point, in 16-bit lanes, from tables that fit registers.
-   u = |x| 2/pi counts quarter turns (for cos, u + 1: cos(x) = sin(pi/2
-   (u + 1))); U = u 2^30 mod 2^32 is held as two 16-bit words hi:lo.  The
-   half turn h = bit 31 (sin(pi/2 (u + 2)) = -sin(pi/2 u)), the segment j =
-   bits 30..26 (u mod 2 in [j/16, (j+1)/16)) and tau = bits 25..11 (2^-15,
-   the position in the segment) give sin(pi/2 u) = +-P_j(tau), a quadratic
-   per segment from three 32-entry tables (one register each for vpermw).
-   k[] holds the multipliers; bw changes nothing here. */
-/* C0[j]: P_j(0) - 1/2, 2^-16 units (fitted, see the provenance) */
-static const int32_t pf_cos_q12_q14_fast_c0[32] = {
-    -32768, -26344, -19983, -13744, -7689, -1875, 3642, 8807,
-    13573, 17892, 21723, 25029, 27779, 29946, 31509, 32453,
-    32767, 32453, 31509, 29946, 27779, 25030, 21723, 17892,
-    13573, 8808, 3642, -1874, -7688, -13744, -19983, -26344,
+/* cos in fixed point, in 16-bit lanes, piecewise linear from tables
+   that fit registers.  u = |x| 2/pi counts quarter turns (for cos, u + 1:
+   cos(x) = sin(pi/2 (u + 1))); hi = floor(u 2^14) mod 2^16.  The half turn
+   h = bit 15 (sin(pi/2 (u + 2)) = -sin(pi/2 u)), the segment j = the next
+   bits and tau (2^-15, the position in the segment) the rest give
+   sin(pi/2 u) = +-(C0[j] + tau C1[j]), at the output's lsb.  k[] holds the
+   multipliers; bw changes nothing here. */
+/* C0[j], the output's lsb (fitted, see the provenance) */
+static const int32_t pf_cos_q12_q14_fast_c0[64] = {
+    0, 805, 1607, 2405, 3198, 3982, 4758, 5521,
+    6271, 7007, 7725, 8425, 9105, 9762, 10396, 11005,
+    11587, 12142, 12667, 13162, 13625, 14056, 14452, 14813,
+    15139, 15429, 15681, 15895, 16072, 16209, 16307, 16367,
+    16384, 16367, 16307, 16209, 16071, 15895, 15681, 15428,
+    15139, 14813, 14451, 14055, 13624, 13161, 12666, 12141,
+    11586, 11004, 10395, 9761, 9103, 8423, 7724, 7006,
+    6270, 5520, 4756, 3981, 3196, 2404, 1605, 803,
 };
-/* C1[j], 2^-16 units */
-static const int32_t pf_cos_q12_q14_fast_c1[32] = {
-    6440, 6407, 6319, 6163, 5951, 5681, 5354, 4980,
-    4554, 4087, 3579, 3038, 2466, 1869, 1255, 632,
-    3, -635, -1258, -1868, -2462, -3037, -3578, -4086,
-    -4553, -4980, -5354, -5680, -5952, -6163, -6314, -6408,
-};
-/* C2[j], 2^-16 units */
-static const int32_t pf_cos_q12_q14_fast_c2[32] = {
-    -16, -45, -80, -107, -136, -164, -188, -214,
-    -235, -256, -272, -287, -299, -306, -311, -318,
-    -318, -309, -305, -299, -288, -270, -253, -233,
-    -213, -186, -163, -135, -104, -76, -48, -17,
+/* C1[j], the output's lsb */
+static const int32_t pf_cos_q12_q14_fast_c1[64] = {
+    805, 802, 798, 793, 784, 776, 762, 751,
+    736, 718, 700, 679, 657, 634, 609, 583,
+    555, 526, 495, 463, 431, 396, 361, 327,
+    290, 252, 215, 177, 137, 99, 60, 19,
+    -17, -60, -98, -138, -176, -214, -253, -289,
+    -326, -362, -396, -431, -463, -495, -525, -555,
+    -582, -609, -634, -658, -679, -699, -719, -736,
+    -750, -764, -775, -785, -792, -799, -802, -804,
 };
 PF_FX_INLINE int16_t pf_cos_q12_q14_fast_inline(int16_t x, const int16_t *k, int bw)
 {
     (void)bw;
-    /* U = |x| K mod 2^32 (u 2^30, u = |x| 2/pi) as hi 2^16 + lo, exact */
+    /* hi = floor(u 2^14) mod 2^16, u = |x| 2/pi in quarter turns */
     uint16_t ax = pf_fx_abs16(x); /* |x| */
-    uint32_t pl = (uint32_t)ax * (uint16_t)k[0];
-    uint16_t lo = (uint16_t)pl;
-    uint16_t hi = (uint16_t)((pl >> 16) + (uint32_t)ax * (uint16_t)k[1] + 0x4000u);
-    /* segment j = bits 30..26, tau = bits 25..11 (2^-15) */
-    unsigned j = (unsigned)(hi >> 10) & 31u;
-    int16_t t = (int16_t)((((uint32_t)hi << 5) | ((uint32_t)lo >> 11)) & 0x7fffu);
-    /* P = C0 + tau (C1 + tau C2), 2^-16 units offset by 1/2 */
-    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)pf_cos_q12_q14_fast_c2[j]) + pf_cos_q12_q14_fast_c1[j]);
-    int16_t p = (int16_t)(pf_fx_mulhrs(t, q) + pf_cos_q12_q14_fast_c0[j]);
-    int16_t r = (int16_t)(pf_fx_mulhrs(p, k[2]) + 8192); /* round((P + 2^15) 2^-2) */
+    uint16_t hi = (uint16_t)(((uint32_t)ax * (uint16_t)k[0] >> 16) + (uint32_t)ax * (uint16_t)k[1] + 0x4000u);
+    /* segment j = bits 14..9, tau = the rest (2^-15) */
+    unsigned j = (unsigned)(hi >> 9) & 63u;
+    int16_t t = (int16_t)((uint16_t)((uint32_t)hi << 7) >> 1);
+    int16_t r = (int16_t)(pf_fx_mulhrs(t, (int16_t)pf_cos_q12_q14_fast_c1[j]) + pf_cos_q12_q14_fast_c0[j]); /* C0 + tau C1 */
     int16_t sg = pf_fx_sgn16((int16_t)hi); /* the half turn */
     return (int16_t)((r ^ sg) - sg);
 }
 
 /* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn
-   the table lookups into vpermw: the array form runs this loop on a CPU
+   the table lookups into vpermi2w: the array form runs this loop on a CPU
    with x86-64-v4 (see its dispatch), the rest of the array and the other
    clones use the scalar steps above.  The same values (pfmathgen sweeps the
    array form on its machine against the scalar one). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
 extern int16_t pf_cos_q12_q14_fast(int16_t x); /* the scalar form, for the last n % 32 */
-/* 32 table entries as 16-bit words, for vpermw */
+/* 32 table entries as 16-bit words */
 __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_cos_q12_q14_fast_w16(const int32_t *t)
 {
     return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
@@ -288,24 +285,20 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_cos_q12_q14_f
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_cos_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    const __m512i c0 = pf_cos_q12_q14_fast_w16(pf_cos_q12_q14_fast_c0), c1 = pf_cos_q12_q14_fast_w16(pf_cos_q12_q14_fast_c1), c2 = pf_cos_q12_q14_fast_w16(pf_cos_q12_q14_fast_c2);
-    const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2), kr = _mm512_set1_epi16(8192);
-    const __m512i ho = _mm512_set1_epi16(16384), m15 = _mm512_set1_epi16(0x7fff);
-    const __m512i half = _mm512_set1_epi16(8192), zero = _mm512_setzero_si512();
+    const __m512i c0a = pf_cos_q12_q14_fast_w16(pf_cos_q12_q14_fast_c0), c0b = pf_cos_q12_q14_fast_w16(pf_cos_q12_q14_fast_c0 + 32);
+    const __m512i c1a = pf_cos_q12_q14_fast_w16(pf_cos_q12_q14_fast_c1), c1b = pf_cos_q12_q14_fast_w16(pf_cos_q12_q14_fast_c1 + 32);
+    const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2);
+    const __m512i ho = _mm512_set1_epi16(16384), zero = _mm512_setzero_si512();
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
         __m512i xv = _mm512_loadu_si512(x + i);
         __m512i ax = _mm512_abs_epi16(xv);
-        __m512i lo = _mm512_mullo_epi16(ax, kl);
         __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
         hi = _mm512_add_epi16(hi, ho);
-        __m512i j = _mm512_srli_epi16(hi, 10); /* vpermw reads the low 5 bits */
-        /* (hi << 5 | lo >> 11) & 0x7fff: one vpternlog */
-        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 5), _mm512_srli_epi16(lo, 11), m15, 0xa8);
-        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),
-                                     _mm512_permutexvar_epi16(j, c1));
-        __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
-        __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
+        __m512i j = _mm512_srli_epi16(hi, 9); /* the lookup reads the low 6 bits */
+        __m512i t = _mm512_srli_epi16(_mm512_slli_epi16(hi, 7), 1);
+        __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutex2var_epi16(c1a, j, c1b)),
+                                     _mm512_permutex2var_epi16(c0a, j, c0b));
         __mmask32 neg = _mm512_movepi16_mask(hi);
         r = _mm512_mask_sub_epi16(r, neg, zero, r);
         _mm512_storeu_si512(y + i, r);
@@ -316,10 +309,9 @@ static void pf_cos_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *res
 #endif
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_cos_q12_q14_fast_k[3] = {
+static const int16_t pf_cos_q12_q14_fast_k[2] = {
     -29722, /* k[0]: KL (as uint16_t): K = KH 2^16 + KL */
     2,      /* k[1]: KH */
-    8192,   /* k[2]: 2^13: the result's rounding multiply-high */
 };
 
 int16_t pf_cos_q12_q14_fast(int16_t x)
