@@ -290,12 +290,12 @@ static void test_lanes16(void **st)
                 continue;
             }
             n16++;
-            /* a register-table kernel (sin/cos kind 4: vpermw lookups) runs
+            /* a register-table kernel (sin/cos kinds 4, 5: vpermw/vpermi2w) runs
                its AVX-512BW loop by intrinsics, which the library's baseline
                build dispatches to: that loop (-O3, no -march) must hold one
                zmm vpmulhrsw per pf_fx_mulhrs; its plain-C form (other
                clones, -march builds) loads the tables as 32-bit gathers */
-            int tab = strstr(c, "_mm512_permutexvar_epi16") != NULL;
+            int tab = strstr(c, "_mm512_permutex") != NULL; /* vpermw, vpermi2w */
             for (int v4 = tab; v4 <= 1; v4++) {
                 snprintf(as, sizeof as, "%s/f.s", dir);
                 tu_argv *av = calloc(1, sizeof *av);
