@@ -216,8 +216,9 @@ static int prepare3(fx_gen *G, double Xmax, int is_cos, double L)
 static int kind4_ok(const fx_gen *G)
 {
     int Ei = G->in.exp, Eo = G->out.exp;
-    /* the output must hold +-1 (the kernels do not saturate) */
-    return G->W == 16 && G->in.storage_bits == 16 && G->in.is_signed && G->out.storage_bits == 16 &&
+    /* the output must hold +-1 (the kernels do not saturate); --order asks
+       for one polynomial of that order: the Horner kernels */
+    return G->W == 16 && !G->order_req && G->in.storage_bits == 16 && G->in.is_signed && G->out.storage_bits == 16 &&
            G->out.is_signed && Eo >= 1 && Eo <= 14 && Ei >= 2 && Ei <= 14 &&
            pf_type_max_stored(&G->out) >= ((int64_t)1 << Eo) && pf_type_min_stored(&G->out) <= -((int64_t)1 << Eo);
 }
