@@ -5,6 +5,7 @@
  * One polynomial p(t) ~ log(1+t), t = m - 1, serves both; the templates
  * (gen/templates/log_fma.c.in, log2_fma.c.in) do the reconstruction. */
 #include "funcs.h"
+#include "funcs_logtab.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -377,12 +378,27 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
 #define LOG_CON_ZERO {FIT_CON_VALUE, 0, "p(0) = 0"}
 #define LOG_CON_SLOPE(s) {FIT_CON_DERIV, 0, s}
 #define BAL_TEXT "x = 2^k m, m in [0x1.6a09e6p-1, 0x1.6a09e6p+0) (balanced about 1), t = m - 1"
+/* the table-driven rows (gen/float/funcs_logtab.c, gen/templates/log_tab.c.in).
+   Their ladder cost is measured, not the double rule's 4 a term + 12: in one
+   run (pfbench, AVX-512, 21:39 UTC) the arrays at order 5 took 0.67 ns an
+   element against 0.57-0.60 for the mid-double rows at order 10-11 (cost
+   56-60): double lanes plus the conversions and vpermt2pd; so 2 a term + 53
+   (65 at order 5) keeps the ladder on the rows that are faster in the
+   arrays.  The scalar form is where they gain (latency 11.8 ns against
+   16.1-16.4 for the exact rows, the same run). */
+#define TAB_COST 53
+#define TAB_TEXT                                                                                   \
+    "x = 2^k z, z in [0x1.66p-1, 0x1.66p+0) by its bits from OFF, 16 subintervals by the next 4 bits, " \
+    "t = r = z INVC[i] - 1 (the table below)"
 #define FAST_CON                                                                                   \
     {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1"), {FIT_CON_VALUE, BAL_LO, "p(a) = log(1+a)"},         \
      {FIT_CON_DERIV, BAL_LO, "p'(a) = 1/(1+a)"}, {FIT_CON_VALUE, BAL_HI, "p(b) = log(1+b)"},      \
      {FIT_CON_DERIV, BAL_HI, "p'(b) = 1/(1+b)"}}
 
 const pf_spec pf_specs_log[] = {
+    {"log", "balanced", "tab", "log_tab", 1, TAB_TEXT, "log(1+t)", g_log1p, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 5, 0, "double",
+     NULL, 1.0, NULL, pf_extra_logtab, pf_model_logtab, NULL, "log_tab_tail.c", TAB_COST},
     {"log", "balanced", "exact", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
      NULL, 1.0, NULL, extra_log, model_log, NULL, "exp_log_twopath.c", 0},
@@ -402,6 +418,9 @@ const pf_spec pf_specs_log[] = {
      {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1"),
       {FIT_CON_VALUE, 1, "p(1) = log 2"}, {FIT_CON_DERIV, 1, "p'(1) = 1/2"}},
      0, 0x1p-10, "float", "0x1.62e42fefa39efp-1", 0, NULL, NULL, NULL, NULL, NULL, 0},
+    {"log2", "balanced", "tab", "log_tab", 1, TAB_TEXT, "log2(1+t) - t/ln2", g_log2rem, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 0")}, 5, 0, "double",
+     NULL, 1.0, NULL, pf_extra_log2tab, pf_model_log2tab, NULL, "log_tab_tail.c", TAB_COST},
     {"log2", "balanced", "exact", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
      NULL, 1.0, NULL, extra_log2, model_log2, "exp_log_poly.h", "exp_log_twopath.c", 0},
