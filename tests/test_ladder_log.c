@@ -1,7 +1,8 @@
 /* The ladder's log and log2 rows between exact and fast (gen/float/funcs_log.c):
  * "mid" (log2: r^2 q fits log2(1+r) - r/ln2, nothing compensated) and
  * "mid-double" (p(r) by Horner in double, one rounding to float) and
- * "tab" (a 16-entry table of 1/c and log c in double, a short polynomial).  Each is
+ * "tab" (a 16-entry table of 1/c and log c in double, a short polynomial)
+ * and "tabf" (the same subintervals in float lanes, nothing compensated).  Each is
  * generated at the order the ladder picks for a level (the L2, L0.6 and
  * L0.55 files of `make ladder`), compiled, and measured against MPFR (ref/)
  * on a sample that includes the hard inputs: the floats around the
@@ -48,7 +49,9 @@ static void around(pf_sweep_stats *st, pf_func f, pf_fn1 s1, float x, uint32_t d
 static void check(const char *func, const char *variant, int order, double U)
 {
     char err[512], name[64];
-    snprintf(name, sizeof name, "tll_%s_%s_%d", func, variant[3] ? "d" : "m", order);
+    snprintf(name, sizeof name, "tll_%s_%s_%d", func, variant, order);
+    for (char *c = name; *c; c++)
+        *c = *c == '-' ? '_' : *c;
     pf_gen_req rq = {.func = func, .variant = variant, .name = name, .method = "minimax", .order = order};
     pf_gen_result r;
     if (pf_generate(&rq, &r, err, sizeof err) != 0)
@@ -101,6 +104,10 @@ static void test_log_double(void **st) { (void)st; check("log", "mid-double", 11
 /* the table rows (double, gen/templates/log_tab.c.in) at their default order */
 static void test_log2_tab(void **st) { (void)st; check("log2", "tab", 5, 0.51); }
 static void test_log_tab(void **st) { (void)st; check("log", "tab", 5, 0.51); }
+/* the float table rows (gen/templates/log_tabf.c.in) at the order the ladder
+   picks for the L3 (log2) and L4 levels */
+static void test_log2_tabf(void **st) { (void)st; check("log2", "tabf", 4, 3); }
+static void test_log_tabf(void **st) { (void)st; check("log", "tabf", 4, 4); }
 
 int main(void)
 {
@@ -110,6 +117,8 @@ int main(void)
         cmocka_unit_test(test_log_double),
         cmocka_unit_test(test_log2_tab),
         cmocka_unit_test(test_log_tab),
+        cmocka_unit_test(test_log2_tabf),
+        cmocka_unit_test(test_log_tabf),
     };
     return cmocka_run_group_tests(t, NULL, NULL);
 }

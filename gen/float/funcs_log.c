@@ -19,6 +19,18 @@ static void g_log1p(mpfr_t y, const mpfr_t t, const void *c)
     mpfr_log1p(y, t, MPFR_RNDN);
 }
 
+/* log2(1+t): the float table rows' target (p(r) = r q(r), C[1] ~ 1/ln2) */
+static void g_log2_1p(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_t l;
+    mpfr_init2(l, mpfr_get_prec(y) + 64);
+    mpfr_log1p(y, t, MPFR_RNDN);
+    mpfr_const_log2(l, MPFR_RNDN);
+    mpfr_div(y, y, l, MPFR_RNDN);
+    mpfr_clear(l);
+}
+
 /* log2(1+t) - t/ln2: the remainder log2's split scheme fits (r^2 q(r)) */
 static void g_log2rem(mpfr_t y, const mpfr_t t, const void *c)
 {
@@ -387,6 +399,9 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
    arrays.  The scalar form is where they gain (latency 11.8 ns against
    16.1-16.4 for the exact rows, the same run). */
 #define TAB_COST 53
+/* the float-lane table rows (gen/float/funcs_logtabf.c, log_tabf.c.in):
+   nothing compensated, three vpermps; the default rule's 2 a term + 8 */
+#define TABF_COST 8
 #define TAB_TEXT                                                                                   \
     "x = 2^k z, z in [0x1.66p-1, 0x1.66p+0) by its bits from OFF, 16 subintervals by the next 4 bits, " \
     "t = r = z INVC[i] - 1 (the table below)"
@@ -405,6 +420,9 @@ const pf_spec pf_specs_log[] = {
     {"log", "balanced", "mid-double", "log_dbl", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "double",
      NULL, 1.0, NULL, extra_logd, model_logd, NULL, "exp_log_twopath.c", 0},
+    {"log", "balanced", "tabf", "log_tabf", 1, TAB_TEXT, "log(1+t)", g_log1p, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 4, 0, "fma",
+     NULL, 0, NULL, pf_extra_logtabf, pf_model_logtabf, NULL, "log_tabf_tail.c", TABF_COST},
     {"log", "balanced", "fast", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_twopath.c", 0},
     {"log", "seed", "exact", "log_seed", 1,
@@ -430,6 +448,9 @@ const pf_spec pf_specs_log[] = {
     {"log2", "balanced", "mid-double", "log_dbl", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "double",
      NULL, 1.0, NULL, extra_log2d, model_log2d, NULL, "exp_log_twopath.c", 0},
+    {"log2", "balanced", "tabf", "log_tabf", 1, TAB_TEXT, "log2(1+t)", g_log2_1p, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 1, {LOG_CON_ZERO}, 4, 0, "fma",
+     NULL, 0, NULL, pf_extra_log2tabf, pf_model_log2tabf, NULL, "log_tabf_tail.c", TABF_COST},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_twopath.c", 0},
     {0},

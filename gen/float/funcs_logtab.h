@@ -17,5 +17,10 @@ int pf_extra_logtab(char *buf, size_t n);
 int pf_extra_log2tab(char *buf, size_t n);
 int pf_model_logtab(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_log2tab(const fit_poly *p, int order, pf_scheme *sc);
+/* the float-lane rows (gen/float/funcs_logtabf.c) */
+int pf_extra_logtabf(char *buf, size_t n);
+int pf_extra_log2tabf(char *buf, size_t n);
+int pf_model_logtabf(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_log2tabf(const fit_poly *p, int order, pf_scheme *sc);
 
 #endif
