@@ -104,8 +104,9 @@ static void test_log_double(void **st) { (void)st; check("log", "mid-double", 11
 /* the table rows (double, gen/templates/log_tab.c.in) at their default order */
 static void test_log2_tab(void **st) { (void)st; check("log2", "tab", 5, 0.51); }
 static void test_log_tab(void **st) { (void)st; check("log", "tab", 5, 0.51); }
-/* the float table rows (gen/templates/log_tabf.c.in) at the order the ladder
-   picks for the L3 (log2) and L4 levels */
+/* the float table rows (gen/templates/log_tabf.c.in) at order 4, within
+   log2's L3 and log's L4 levels (the ladder keeps the fast rows there: their
+   cost, gen/float/funcs_log.c TABF_COST) */
 static void test_log2_tabf(void **st) { (void)st; check("log2", "tabf", 4, 3); }
 static void test_log_tabf(void **st) { (void)st; check("log", "tabf", 4, 4); }
 

@@ -400,8 +400,15 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
    16.1-16.4 for the exact rows, the same run). */
 #define TAB_COST 53
 /* the float-lane table rows (gen/float/funcs_logtabf.c, log_tabf.c.in):
-   nothing compensated, three vpermps; the default rule's 2 a term + 8 */
-#define TABF_COST 8
+   nothing compensated, three table lookups.  Measured (pfbench with a
+   sampled ladder, 22:07 UTC, one run) at order 4 against the fast rows the
+   ladder picks for log2's L3 and L4 (order 10 and 9): AVX-512 0.21 ns an
+   element against 0.23 and 0.22 (vpermps, one a table), but AVX2 0.40
+   against 0.30 and 0.28 (two vpermps and a blend a table), and log's L4
+   0.20 against 0.215 (AVX-512) but 0.40 against 0.275 (AVX2).  The ladder's
+   cost is one figure for every ISA, so 2 a term + 14 (24 at order 4) keeps
+   the fast rows there; the rows stay for --max-ulp between them. */
+#define TABF_COST 14
 #define TAB_TEXT                                                                                   \
     "x = 2^k z, z in [0x1.66p-1, 0x1.66p+0) by its bits from OFF, 16 subintervals by the next 4 bits, " \
     "t = r = z INVC[i] - 1 (the table below)"
