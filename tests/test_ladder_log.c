@@ -1,6 +1,8 @@
 /* The ladder's log and log2 rows between exact and fast (gen/float/funcs_log.c):
  * "mid" (log2: r^2 q fits log2(1+r) - r/ln2, nothing compensated) and
- * "mid-double" (p(r) by Horner in double, one rounding to float).  Each is
+ * "mid-double" (p(r) by Horner in double, one rounding to float) and
+ * "tab" (a 16-entry table of 1/c and log c in double, a short polynomial)
+ * and "tabf" (the same subintervals in float lanes, nothing compensated).  Each is
  * generated at the order the ladder picks for a level (the L2, L0.6 and
  * L0.55 files of `make ladder`), compiled, and measured against MPFR (ref/)
  * on a sample that includes the hard inputs: the floats around the
@@ -47,7 +49,9 @@ static void around(pf_sweep_stats *st, pf_func f, pf_fn1 s1, float x, uint32_t d
 static void check(const char *func, const char *variant, int order, double U)
 {
     char err[512], name[64];
-    snprintf(name, sizeof name, "tll_%s_%s_%d", func, variant[3] ? "d" : "m", order);
+    snprintf(name, sizeof name, "tll_%s_%s_%d", func, variant, order);
+    for (char *c = name; *c; c++)
+        *c = *c == '-' ? '_' : *c;
     pf_gen_req rq = {.func = func, .variant = variant, .name = name, .method = "minimax", .order = order};
     pf_gen_result r;
     if (pf_generate(&rq, &r, err, sizeof err) != 0)
@@ -70,6 +74,11 @@ static void check(const char *func, const char *variant, int order, double U)
     for (int k = -1; k <= 2; k++)
         around(&st, f, s1, ldexpf(0x1.6a09e6p-1f, k), 1u << 12);
     around(&st, f, s1, 1.0f, 1u << 14);
+    /* the table rows' subinterval edges (z's bits from OFF = 0x3f330000 by
+       2^19), at k = -1, 0, 1 */
+    for (int k = -1; k <= 1; k++)
+        for (uint32_t i = 0; i <= 16; i++)
+            around(&st, f, s1, ldexpf(asfloat(0x3f330000u + (i << 19)), k), 1u << 8);
     around(&st, f, s1, 0x1p-126f, 1u << 10);
     for (int k = -149; k <= 127; k++)
         pf_sweep_one(&st, f, s1, NULL, ldexpf(1.0f, k), 1.0f);
@@ -92,6 +101,14 @@ static void check(const char *func, const char *variant, int order, double U)
 static void test_log2_mid(void **st) { (void)st; check("log2", "mid", 10, 2); }
 static void test_log2_double(void **st) { (void)st; check("log2", "mid-double", 10, 0.6); }
 static void test_log_double(void **st) { (void)st; check("log", "mid-double", 11, 0.55); }
+/* the table rows (double, gen/templates/log_tab.c.in) at their default order */
+static void test_log2_tab(void **st) { (void)st; check("log2", "tab", 5, 0.51); }
+static void test_log_tab(void **st) { (void)st; check("log", "tab", 5, 0.51); }
+/* the float table rows (gen/templates/log_tabf.c.in) at order 4, within
+   log2's L3 and log's L4 levels (the ladder keeps the fast rows there: their
+   cost, gen/float/funcs_log.c TABF_COST) */
+static void test_log2_tabf(void **st) { (void)st; check("log2", "tabf", 4, 3); }
+static void test_log_tabf(void **st) { (void)st; check("log", "tabf", 4, 4); }
 
 int main(void)
 {
@@ -99,6 +116,10 @@ int main(void)
         cmocka_unit_test(test_log2_mid),
         cmocka_unit_test(test_log2_double),
         cmocka_unit_test(test_log_double),
+        cmocka_unit_test(test_log2_tab),
+        cmocka_unit_test(test_log_tab),
+        cmocka_unit_test(test_log2_tabf),
+        cmocka_unit_test(test_log_tabf),
     };
     return cmocka_run_group_tests(t, NULL, NULL);
 }

@@ -5,6 +5,7 @@
  * One polynomial p(t) ~ log(1+t), t = m - 1, serves both; the templates
  * (gen/templates/log_fma.c.in, log2_fma.c.in) do the reconstruction. */
 #include "funcs.h"
+#include "funcs_logtab.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -16,6 +17,18 @@ static void g_log1p(mpfr_t y, const mpfr_t t, const void *c)
 {
     (void)c;
     mpfr_log1p(y, t, MPFR_RNDN);
+}
+
+/* log2(1+t): the float table rows' target (p(r) = r q(r), C[1] ~ 1/ln2) */
+static void g_log2_1p(mpfr_t y, const mpfr_t t, const void *c)
+{
+    (void)c;
+    mpfr_t l;
+    mpfr_init2(l, mpfr_get_prec(y) + 64);
+    mpfr_log1p(y, t, MPFR_RNDN);
+    mpfr_const_log2(l, MPFR_RNDN);
+    mpfr_div(y, y, l, MPFR_RNDN);
+    mpfr_clear(l);
 }
 
 /* log2(1+t) - t/ln2: the remainder log2's split scheme fits (r^2 q(r)) */
@@ -377,18 +390,46 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
 #define LOG_CON_ZERO {FIT_CON_VALUE, 0, "p(0) = 0"}
 #define LOG_CON_SLOPE(s) {FIT_CON_DERIV, 0, s}
 #define BAL_TEXT "x = 2^k m, m in [0x1.6a09e6p-1, 0x1.6a09e6p+0) (balanced about 1), t = m - 1"
+/* the table-driven rows (gen/float/funcs_logtab.c, gen/templates/log_tab.c.in).
+   Their ladder cost is measured, not the double rule's 4 a term + 12: in one
+   run (pfbench, AVX-512, 21:39 UTC) the arrays at order 5 took 0.67 ns an
+   element against 0.57-0.60 for the mid-double rows at order 10-11 (cost
+   56-60): double lanes plus the conversions and vpermt2pd; so 2 a term + 53
+   (65 at order 5) keeps the ladder on the rows that are faster in the
+   arrays.  The scalar form is where they gain (latency 11.8 ns against
+   16.1-16.4 for the exact rows, the same run). */
+#define TAB_COST 53
+/* the float-lane table rows (gen/float/funcs_logtabf.c, log_tabf.c.in):
+   nothing compensated, three table lookups.  Measured (pfbench with a
+   sampled ladder, 22:07 UTC, one run) at order 4 against the fast rows the
+   ladder picks for log2's L3 and L4 (order 10 and 9): AVX-512 0.21 ns an
+   element against 0.23 and 0.22 (vpermps, one a table), but AVX2 0.40
+   against 0.30 and 0.28 (two vpermps and a blend a table), and log's L4
+   0.20 against 0.215 (AVX-512) but 0.40 against 0.275 (AVX2).  The ladder's
+   cost is one figure for every ISA, so 2 a term + 14 (24 at order 4) keeps
+   the fast rows there; the rows stay for --max-ulp between them. */
+#define TABF_COST 14
+#define TAB_TEXT                                                                                   \
+    "x = 2^k z, z in [0x1.66p-1, 0x1.66p+0) by its bits from OFF, 16 subintervals by the next 4 bits, " \
+    "t = r = z INVC[i] - 1 (the table below)"
 #define FAST_CON                                                                                   \
     {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1"), {FIT_CON_VALUE, BAL_LO, "p(a) = log(1+a)"},         \
      {FIT_CON_DERIV, BAL_LO, "p'(a) = 1/(1+a)"}, {FIT_CON_VALUE, BAL_HI, "p(b) = log(1+b)"},      \
      {FIT_CON_DERIV, BAL_HI, "p'(b) = 1/(1+b)"}}
 
 const pf_spec pf_specs_log[] = {
+    {"log", "balanced", "tab", "log_tab", 1, TAB_TEXT, "log(1+t)", g_log1p, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 5, 0, "double",
+     NULL, 1.0, NULL, pf_extra_logtab, pf_model_logtab, NULL, "log_tab_tail.c", TAB_COST},
     {"log", "balanced", "exact", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
      NULL, 1.0, NULL, extra_log, model_log, NULL, "exp_log_twopath.c", 0},
     {"log", "balanced", "mid-double", "log_dbl", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "double",
      NULL, 1.0, NULL, extra_logd, model_logd, NULL, "exp_log_twopath.c", 0},
+    {"log", "balanced", "tabf", "log_tabf", 1, TAB_TEXT, "log(1+t)", g_log1p, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 4, 0, "fma",
+     NULL, 0, NULL, pf_extra_logtabf, pf_model_logtabf, NULL, "log_tabf_tail.c", TABF_COST},
     {"log", "balanced", "fast", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_twopath.c", 0},
     {"log", "seed", "exact", "log_seed", 1,
@@ -402,6 +443,9 @@ const pf_spec pf_specs_log[] = {
      {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1"),
       {FIT_CON_VALUE, 1, "p(1) = log 2"}, {FIT_CON_DERIV, 1, "p'(1) = 1/2"}},
      0, 0x1p-10, "float", "0x1.62e42fefa39efp-1", 0, NULL, NULL, NULL, NULL, NULL, 0},
+    {"log2", "balanced", "tab", "log_tab", 1, TAB_TEXT, "log2(1+t) - t/ln2", g_log2rem, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 0")}, 5, 0, "double",
+     NULL, 1.0, NULL, pf_extra_log2tab, pf_model_log2tab, NULL, "log_tab_tail.c", TAB_COST},
     {"log2", "balanced", "exact", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "fma",
      NULL, 1.0, NULL, extra_log2, model_log2, "exp_log_poly.h", "exp_log_twopath.c", 0},
@@ -411,6 +455,9 @@ const pf_spec pf_specs_log[] = {
     {"log2", "balanced", "mid-double", "log_dbl", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 10, 0, "double",
      NULL, 1.0, NULL, extra_log2d, model_log2d, NULL, "exp_log_twopath.c", 0},
+    {"log2", "balanced", "tabf", "log_tabf", 1, TAB_TEXT, "log2(1+t)", g_log2_1p, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 1, {LOG_CON_ZERO}, 4, 0, "fma",
+     NULL, 0, NULL, pf_extra_log2tabf, pf_model_log2tabf, NULL, "log_tabf_tail.c", TABF_COST},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_twopath.c", 0},
     {0},

@@ -1,0 +1,231 @@
+/* The table-driven reduction of log and log2 in float lanes
+ * (gen/templates/log_tabf.c.in): the same subintervals as the double rows
+ * (gen/float/funcs_logtab.c: OFF, 16 subintervals), tables of floats that
+ * fit one AVX-512 register each, nothing compensated; a ladder row for the
+ * levels above 1 ULP.  The rows are in gen/float/funcs_log.c.
+ *
+ * r = fmaf(z, INVC[i], -1) (one rounding), y = T + fmaf(r, q(r), LL) with
+ * T = k KHI + LHI[i] exact (LHI on a grid of 2^-15 (log2) or 2^-16 (log),
+ * KHI = 1 or ln2 to 16 bits) and LL = k KLO + LLO[i] the small rest. */
+#include "funcs_logtab.h"
+
+#include <math.h>
+#include <mpfr.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define NT 16
+
+static float asf(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, 4);
+    return f;
+}
+
+/* INVC in float: 2/(zl + zh) rounded to float (MPFR), 1 on the subinterval
+   holding 1 (r = z - 1 exact there, and x = 1 gives 0) */
+static float invcf_of(uint32_t off, int i)
+{
+    double zl = asf(off + ((uint32_t)i << 19)), zh = asf(off + ((uint32_t)(i + 1) << 19) - 1);
+    if (zl <= 1 && 1 <= zh)
+        return 1.0f;
+    mpfr_t v;
+    mpfr_init2(v, 24);
+    mpfr_set_d(v, zl + zh, MPFR_RNDN); /* exact: two floats of nearby binades */
+    mpfr_ui_div(v, 2, v, MPFR_RNDN);
+    float c = mpfr_get_flt(v, MPFR_RNDN);
+    mpfr_clear(v);
+    return c;
+}
+
+static void rf_range(uint32_t off, int i, double *ra, double *rb)
+{
+    double c = invcf_of(off, i);
+    *ra = asf(off + ((uint32_t)i << 19)) * c - 1;
+    *rb = asf(off + ((uint32_t)(i + 1) << 19) - 1) * c - 1;
+}
+
+/* -log_b(c) (exact c) split into LHI on the grid 2^-g and LLO rounded to float */
+static void logc_split(float c, int is_log2, double *hi, float *lo, double *full)
+{
+    mpfr_t v, h;
+    mpfr_inits2(256, v, h, (mpfr_ptr)0);
+    mpfr_set_flt(v, c, MPFR_RNDN);
+    if (is_log2)
+        mpfr_log2(v, v, MPFR_RNDN);
+    else
+        mpfr_log(v, v, MPFR_RNDN);
+    mpfr_neg(v, v, MPFR_RNDN);
+    int g = is_log2 ? 15 : 16;
+    mpfr_mul_2si(h, v, g, MPFR_RNDN);
+    mpfr_rint(h, h, MPFR_RNDN);
+    mpfr_mul_2si(h, h, -g, MPFR_RNDN);
+    *hi = mpfr_get_d(h, MPFR_RNDN) + 0.0; /* exact: a multiple of 2^-g below 1/2; +0 at c = 1 */
+    *full = mpfr_get_d(v, MPFR_RNDN);
+    mpfr_sub(v, v, h, MPFR_RNDN);
+    *lo = mpfr_get_flt(v, MPFR_RNDN) + 0.0f;
+    mpfr_clears(v, h, (mpfr_ptr)0);
+}
+
+/* ln2 = KHI + KLO: KHI ln2 to 16 significant bits (k KHI exact for |k| < 2^8),
+   KLO the rest rounded to float; log2: KHI = 1, KLO = 0 */
+static void kconst(int is_log2, double *khi, float *klo)
+{
+    if (is_log2) {
+        *khi = 1, *klo = 0;
+        return;
+    }
+    mpfr_t l, h;
+    mpfr_inits2(256, l, h, (mpfr_ptr)0);
+    mpfr_const_log2(l, MPFR_RNDN);
+    mpfr_set(h, l, MPFR_RNDN);
+    mpfr_prec_round(h, 16, MPFR_RNDN);
+    *khi = mpfr_get_d(h, MPFR_RNDN);
+    mpfr_sub(l, l, h, MPFR_RNDN);
+    *klo = mpfr_get_flt(l, MPFR_RNDN);
+    mpfr_clears(l, h, (mpfr_ptr)0);
+}
+
+static void hexf(char *b, size_t n, double v) { snprintf(b, n, "%af,", v); }
+
+static int extra_common(char *buf, size_t n, int is_log2)
+{
+    uint32_t off = pf_logtab_off();
+    double R = 0;
+    for (int i = 0; i < NT; i++) {
+        double a, b;
+        rf_range(off, i, &a, &b);
+        R = fmax(R, fmax(fabs(a), fabs(b)));
+    }
+    if (!(R <= PF_LOGTAB_R))
+        return snprintf(buf, n, "#error \"pfmathgen: the table's max |r| %a exceeds the fit domain %a\"\n", R,
+                        PF_LOGTAB_R);
+    double khi;
+    float klo;
+    kconst(is_log2, &khi, &klo);
+    size_t len = 0;
+#define PUT(...) len += (size_t)snprintf(buf + (len < n ? len : n), len < n ? n - len : 0, __VA_ARGS__)
+    PUT("/* The reduction's table, computed by pfmathgen (gen/float/funcs_logtabf.c) with MPFR:\n"
+        "   OFF = 0x%08x as the double table's (gen/float/funcs_logtab.c: the multiple of 2^16\n"
+        "   with the smallest max |r|); subinterval i holds the z whose bits are in\n"
+        "   [OFF + i 2^19, OFF + (i+1) 2^19); max |r| = %a (the fit's domain is |r| <= %a).\n"
+        "   INVC[i] = 2/(zl + zh) rounded to float (zl, zh the subinterval's first and last\n"
+        "   float), but exactly 1 on the subinterval that holds 1;\n"
+        "   %s(INVC[i]) = LHI[i] + LLO[i]: LHI rounded to a multiple of 2^-%d (so that\n"
+        "   k KHI + LHI is exact in float), LLO the rest rounded to float;\n"
+        "   %s. */\n",
+        off, R, PF_LOGTAB_R, is_log2 ? "-log2" : "-log", is_log2 ? 15 : 16,
+        is_log2 ? "KHI = 1, KLO = 0 (log2: k is added as it is)"
+                : "ln2 = KHI + KLO, KHI ln2 to 16 significant bits (k KHI exact for |k| < 2^8), KLO the rest "
+                  "rounded to float");
+    PUT("#define PF_LOGTF_OFF 0x%08xu\n", off);
+    PUT("static const float PF_LOGTF_KHI PF_UNUSED = %af;\nstatic const float PF_LOGTF_KLO PF_UNUSED = %af;\n",
+        khi, (double)klo);
+    PUT("#if defined(__GNUC__)\n#define PF_LOGTF_ALIGN __attribute__((aligned(64)))\n#else\n#define PF_LOGTF_ALIGN\n#endif\n");
+    float c[NT], lo[NT];
+    double hi[NT], full[NT];
+    for (int i = 0; i < NT; i++) {
+        c[i] = invcf_of(off, i);
+        logc_split(c[i], is_log2, &hi[i], &lo[i], &full[i]);
+    }
+    char h[48];
+    PUT("static const float PF_LOGTF_INVC[16] PF_LOGTF_ALIGN = {\n");
+    for (int i = 0; i < NT; i++) {
+        double a, b;
+        rf_range(off, i, &a, &b);
+        hexf(h, sizeof h, c[i]);
+        PUT("    %-18s /* %2d: r in [%+.6f, %+.6f] */\n", h, i, a, b);
+    }
+    PUT("};\nstatic const float PF_LOGTF_LHI[16] PF_LOGTF_ALIGN = {\n");
+    for (int i = 0; i < NT; i++) {
+        hexf(h, sizeof h, hi[i]);
+        PUT("    %-18s /* %2d: %s(INVC) = %.17g */\n", h, i, is_log2 ? "-log2" : "-log", full[i]);
+    }
+    PUT("};\nstatic const float PF_LOGTF_LLO[16] PF_LOGTF_ALIGN = {\n");
+    for (int i = 0; i < NT; i++) {
+        hexf(h, sizeof h, lo[i]);
+        PUT("    %s\n", h);
+    }
+    PUT("};\n\n");
+#undef PUT
+    return (int)len;
+}
+
+int pf_extra_logtabf(char *buf, size_t n) { return extra_common(buf, n, 0); }
+int pf_extra_log2tabf(char *buf, size_t n) { return extra_common(buf, n, 1); }
+
+/* ---- the error model, in ULP of the float result ----
+ * f = k ln_b(2)... : f = k KS + L_i + log_b(1+r), L_i = -log_b(INVC[i]) exact,
+ * on a grid of r over each subinterval and k from -149 to 128:
+ *   r = fmaf(z, INVC, -1): half an ulp of r, times |d log_b(1+r)/dr| <= PS/(1-|r|);
+ *   q = C[1] + C[2] r + ... by fmaf Horner: half an ulp a step, carried through;
+ *   LL = fmaf(k, KLO, LLO): LLO's and KLO's roundings (|k| 2^-41 for log) and its own;
+ *   v = fmaf(r, q, LL): r times q's error and its own rounding;
+ *   the fit's relative error times |log_b(1+r)|;
+ *   T = k KHI + LHI exact; the last addition is the result's own rounding
+ *   (and at k = 0 on the subinterval with INVC = 1, T = 0 and r is exact: v's
+ *   rounding is then the result's). */
+static double ulp_f(double v)
+{
+    v = fabs(v);
+    return v < 0x1p-126 ? 0x1p-149 : ldexp(1.0, ilogb(v) - 23);
+}
+#define H(v) (0.5 * ulp_f(v))
+
+static int model_common(const fit_poly *p, int order, pf_scheme *sc, int is_log2)
+{
+    if (order < 2 || p->c[0] != 0) {
+        snprintf(sc->text, sizeof sc->text, "error model: needs p(0) = 0 and order >= 2");
+        return -1;
+    }
+    uint32_t off = pf_logtab_off();
+    const double KS = is_log2 ? 1 : M_LN2, PS = is_log2 ? 1 / M_LN2 : 1;
+    double worst = 0, worst_r = 0;
+    int worst_k = 0, worst_i = 0;
+    const int ng = 512;
+    for (int i = 0; i < NT; i++) {
+        double ra, rb, hi, full;
+        float lo, c = invcf_of(off, i);
+        rf_range(off, i, &ra, &rb);
+        logc_split(c, is_log2, &hi, &lo, &full);
+        for (int j = 0; j <= ng; j++) {
+            double r = ra + (rb - ra) * j / ng;
+            double q = (double)p->c[order], eq = 0;
+            for (int m = order - 1; m >= 1; m--) {
+                q = q * r + (double)p->c[m];
+                eq = eq * fabs(r) + H(fabs(q) + eq);
+            }
+            /* INVC = 1: r = z - 1 is exact (Sterbenz) */
+            double g = log1p(r) * PS, er = c == 1.0f ? 0 : H(r) * PS / (1 - fabs(r));
+            for (int k = -149; k <= 128; k++) {
+                double f = k * KS + full + g;
+                if (f == 0)
+                    continue; /* x = 1: r = 0, k = 0, LHI = LLO = 0, every term is exactly 0 */
+                double ll = k * (KS - (is_log2 ? 1 : 0x1.62e4p-1)) + lo; /* k KLO + LLO */
+                double ell = (lo != 0 ? H(lo) : 0) + (is_log2 ? 0 : abs(k) * 0x1p-41 + (k ? H(ll) : 0));
+                double v = r * q + ll;
+                /* at k = 0 on INVC = 1, T = 0 and the addition is exact: v's
+                   rounding is the result's own */
+                double ev = k == 0 && hi == 0 ? 0 : H(v);
+                double e = er + fabs(r) * eq + ell + ev + p->max_err * fabs(g);
+                double bnd = 0.5 + e / ulp_f(f);
+                if (bnd > worst)
+                    worst = bnd, worst_r = r, worst_k = k, worst_i = i;
+            }
+        }
+    }
+    sc->ncomp = 0;
+    sc->bound_ulp = worst;
+    snprintf(sc->text, sizeof sc->text,
+             "table of 16 (INVC, LHI, LLO) in float, r = fmaf(z, INVC, -1); q(r) = p(r)/r by Horner in float "
+             "with fmaf, y = (k KHI + LHI) + fmaf(r, q, k KLO + LLO), the first part exact, nothing "
+             "compensated (the model's worst point is k = %d, subinterval %d, r = %.4f)",
+             worst_k, worst_i, worst_r);
+    return 0;
+}
+
+int pf_model_logtabf(const fit_poly *p, int order, pf_scheme *sc) { return model_common(p, order, sc, 0); }
+int pf_model_log2tabf(const fit_poly *p, int order, pf_scheme *sc) { return model_common(p, order, sc, 1); }
