@@ -268,6 +268,30 @@ static int count_line(const char *a, const char *end, const char *insn, const ch
     return c;
 }
 
+/* the compiler's assembly of src (flags ending in "-S -o") as dir/f.s, read
+   back; as receives the path */
+static char *asm_of(const char *dir, const char *flags, const char *src, char *as, size_t asz)
+{
+    snprintf(as, asz, "%s/f.s", dir);
+    tu_argv *av = calloc(1, sizeof *av);
+    tu_run_result *r = malloc(sizeof *r);
+    assert_non_null(av);
+    assert_non_null(r);
+    tu_argv_cc(av);
+    tu_argv_words(av, flags);
+    tu_argv_add(av, as);
+    tu_argv_add(av, src);
+    tu_execvp_in(NULL, av->v, r);
+    if (r->status != 0)
+        print_message("%s -S %s: exit %d\n%s%s", av->v[0], src, r->status, r->out, r->err);
+    assert_int_equal(r->status, 0);
+    free(av);
+    free(r);
+    char *a = slurp(as);
+    assert_non_null(a);
+    return a;
+}
+
 static void test_lanes16(void **st)
 {
     (void)st;
@@ -292,21 +316,7 @@ static void test_lanes16(void **st)
                         count(c, c + strlen(c), "_mm512_permutex2var_epi16(");
             if (strstr(c, "16-bit lanes") && !calls && looks) {
                 n16++;
-                snprintf(as, sizeof as, "%s/f.s", dir);
-                tu_argv *av = calloc(1, sizeof *av);
-                tu_run_result *r = malloc(sizeof *r);
-                assert_non_null(av);
-                assert_non_null(r);
-                tu_argv_cc(av);
-                tu_argv_words(av, "-std=c17 -O3 -S -o");
-                tu_argv_add(av, as);
-                tu_argv_add(av, src);
-                tu_execvp_in(NULL, av->v, r);
-                assert_int_equal(r->status, 0);
-                free(av);
-                free(r);
-                char *a = slurp(as);
-                assert_non_null(a);
+                char *a = asm_of(dir, "-std=c17 -O3 -S -o", src, as, sizeof as);
                 snprintf(sym, sizeof sym, "pf_%s%s_array_bw:", fns[i].stem, fast ? "_fast" : "");
                 const char *f = strstr(a, sym), *e = f ? strstr(f, ".size") : NULL;
                 int got = f && e ? count_line(f, e, "vpermw", "%zmm") + count_line(f, e, "vpermi2w", "%zmm") +
@@ -327,23 +337,8 @@ static void test_lanes16(void **st)
             }
             n16++;
             for (int v4 = 0; v4 <= 1; v4++) {
-                snprintf(as, sizeof as, "%s/f.s", dir);
-                tu_argv *av = calloc(1, sizeof *av);
-                tu_run_result *r = malloc(sizeof *r);
-                assert_non_null(av);
-                assert_non_null(r);
-                tu_argv_cc(av);
-                tu_argv_words(av, v4 ? "-std=c17 -O3 -march=x86-64-v4 -S -o" : "-std=c17 -O3 -march=x86-64-v3 -S -o");
-                tu_argv_add(av, as);
-                tu_argv_add(av, src);
-                tu_execvp_in(NULL, av->v, r);
-                if (r->status != 0)
-                    print_message("%s -S %s: exit %d\n%s%s", av->v[0], src, r->status, r->out, r->err);
-                assert_int_equal(r->status, 0);
-                free(av);
-                free(r);
-                char *a = slurp(as);
-                assert_non_null(a);
+                char *a = asm_of(dir, v4 ? "-std=c17 -O3 -march=x86-64-v4 -S -o" : "-std=c17 -O3 -march=x86-64-v3 -S -o",
+                                 src, as, sizeof as);
                 snprintf(sym, sizeof sym, "pf_%s%s_array:", fns[i].stem, fast ? "_fast" : "");
                 const char *f = strstr(a, sym), *e = f ? strstr(f, ".size") : NULL;
                 int got = f && e ? (v4 ? count_line(f, e, "vpmulhrsw", "%zmm") : count(f, e, "vpmulhrsw")) : 0;
