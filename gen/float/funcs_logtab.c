@@ -22,8 +22,9 @@ static float asf(uint32_t u)
     return f;
 }
 
-/* subinterval i of offset off: z in [zl, zh], the floats it holds */
-static void sub_range(uint32_t off, int i, double *zl, double *zh)
+/* subinterval i of offset off: z in [zl, zh], the floats it holds (the
+   float rows, funcs_logtabf.c, share the subintervals) */
+void pf_logtab_sub_range(uint32_t off, int i, double *zl, double *zh)
 {
     *zl = asf(off + ((uint32_t)i << 19));
     *zh = asf(off + ((uint32_t)(i + 1) << 19) - 1);
@@ -36,7 +37,7 @@ static void sub_range(uint32_t off, int i, double *zl, double *zh)
 static double invc_of(uint32_t off, int i)
 {
     double zl, zh;
-    sub_range(off, i, &zl, &zh);
+    pf_logtab_sub_range(off, i, &zl, &zh);
     return zl <= 1 && 1 <= zh ? 1.0 : 2 / (zl + zh);
 }
 
@@ -46,7 +47,7 @@ static double invc_of(uint32_t off, int i)
 static void r_range(uint32_t off, int i, double *ra, double *rb)
 {
     double zl, zh, c = invc_of(off, i);
-    sub_range(off, i, &zl, &zh);
+    pf_logtab_sub_range(off, i, &zl, &zh);
     *ra = fma(zl, c, -1.0);
     *rb = fma(zh, c, -1.0);
 }
@@ -126,7 +127,7 @@ static int extra_common(char *buf, size_t n, int is_log2)
     PUT("static const double PF_LOGT_INVC[16] PF_LOGT_ALIGN = {\n");
     for (int i = 0; i < NT; i++) {
         double zl, zh, ra, rb;
-        sub_range(off, i, &zl, &zh);
+        pf_logtab_sub_range(off, i, &zl, &zh);
         r_range(off, i, &ra, &rb);
         c[i] = invc_of(off, i);
         char h[40];

@@ -13,6 +13,8 @@
 #define PF_LOGTAB_R 0x1.e6p-6
 
 uint32_t pf_logtab_off(void);
+/* subinterval i (of 16) of offset off: z in [zl, zh], the floats it holds */
+void pf_logtab_sub_range(uint32_t off, int i, double *zl, double *zh);
 int pf_extra_logtab(char *buf, size_t n);
 int pf_extra_log2tab(char *buf, size_t n);
 int pf_model_logtab(const fit_poly *p, int order, pf_scheme *sc);

@@ -18,18 +18,12 @@
 
 #define NT 16
 
-static float asf(uint32_t u)
-{
-    float f;
-    memcpy(&f, &u, 4);
-    return f;
-}
-
 /* INVC in float: 2/(zl + zh) rounded to float (MPFR), 1 on the subinterval
    holding 1 (r = z - 1 exact there, and x = 1 gives 0) */
 static float invcf_of(uint32_t off, int i)
 {
-    double zl = asf(off + ((uint32_t)i << 19)), zh = asf(off + ((uint32_t)(i + 1) << 19) - 1);
+    double zl, zh;
+    pf_logtab_sub_range(off, i, &zl, &zh);
     if (zl <= 1 && 1 <= zh)
         return 1.0f;
     mpfr_t v;
@@ -43,9 +37,10 @@ static float invcf_of(uint32_t off, int i)
 
 static void rf_range(uint32_t off, int i, double *ra, double *rb)
 {
-    double c = invcf_of(off, i);
-    *ra = asf(off + ((uint32_t)i << 19)) * c - 1;
-    *rb = asf(off + ((uint32_t)(i + 1) << 19) - 1) * c - 1;
+    double zl, zh, c = invcf_of(off, i);
+    pf_logtab_sub_range(off, i, &zl, &zh);
+    *ra = zl * c - 1;
+    *rb = zh * c - 1;
 }
 
 /* -log_b(c) (exact c) split into LHI on the grid 2^-g and LLO rounded to float */
