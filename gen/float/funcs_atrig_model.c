@@ -402,33 +402,31 @@ int pf_model_acos_mid(const fit_poly *p, int order, pf_scheme *sc)
     return model_asin_acos_mid(p, order, sc, 1);
 }
 
-/* t = fl(n/d) in (0, 1]: K + sg atan(t); rnd = 0 when t is exact (atan's
-   |x| <= 1, t = |x|) */
-static void mid_quot(model *m, double x, double truth, double K, double klo, double t, int rnd)
-{
-    double red = rnd ? half_ulp(t) / (1 + t * t) : 0;
-    point_mid(m, x, truth, K, klo, t, t * t, half_ulp(t * t), red, 0x1p-48 * K);
-}
+/* The atan and atan2 models visit the same points, whatever the scheme:
+   point(m, x, truth, K, klo, sg, t, rnd) with t the reduced argument,
+   K = 0, pi/2 or pi with klo = K - fl(K), sg the sign of t in K + sg atan(t),
+   rnd = 0 where t is exact. */
+typedef void (*atan_point_fn)(model *m, double x, double truth, double K, double klo, double sg, double t,
+                              int rnd);
 
-int pf_model_atan_mid(const fit_poly *p, int order, pf_scheme *sc)
+/* atan: t in (0, 1] and toward 0 (K = 0), and |x| > 1 through t = fl(1/|x|) */
+static void walk_atan(model *m, atan_point_fn point)
 {
-    model m = {p, order, p->max_err, 0, 0};
     double pio2 = acos(-1.0) / 2, klo2 = pio2 - (double)(float)pio2;
     for (int i = 1; i <= NGRID; i++) {
         double t = (double)i / NGRID;               /* (0, 1] */
         double tt = ldexp(1.0, -i * 40 / NGRID);    /* toward 0 */
-        mid_quot(&m, t, atan(t), 0, 0, t, 0);
-        mid_quot(&m, tt, atan(tt), 0, 0, tt, 0);
+        point(m, t, atan(t), 0, 0, 1, t, 0);
+        point(m, tt, atan(tt), 0, 0, 1, tt, 0);
         double tb = fmin(t, 1 - 0x1p-24);   /* fl(1/a) < 1 for a > 1 */
-        mid_quot(&m, 1 / tb, atan(1 / tb), pio2, klo2, tb, 1);
-        mid_quot(&m, 1 / tt, atan(1 / tt), pio2, klo2, tt, 1);
+        point(m, 1 / tb, atan(1 / tb), pio2, klo2, -1, tb, 1);
+        point(m, 1 / tt, atan(1 / tt), pio2, klo2, -1, tt, 1);
     }
-    return finish_mid(&m, sc, MID_TEXT_QUOT);
 }
 
-int pf_model_atan2_mid(const fit_poly *p, int order, pf_scheme *sc)
+/* atan2: t = min/max rounded once, in each of the four (swap, sign of x) cases */
+static void walk_atan2(model *m, atan_point_fn point)
 {
-    model m = {p, order, p->max_err, 0, 0};
     double pio2 = acos(-1.0) / 2;
     double klo[3] = {0, pio2 - (double)(float)pio2, 2 * pio2 - (double)(float)(2 * pio2)};
     for (int swap = 0; swap <= 1; swap++)
@@ -437,10 +435,32 @@ int pf_model_atan2_mid(const fit_poly *p, int order, pf_scheme *sc)
             double sg = swap != negx ? -1 : 1, K = k * pio2;
             for (int i = 1; i <= NGRID; i++) {
                 double t = (double)i / NGRID, tt = ldexp(1.0, -i * 40 / NGRID);
-                mid_quot(&m, t, K + sg * atan(t), K, klo[k], t, 1);
-                mid_quot(&m, tt, K + sg * atan(tt), K, klo[k], tt, 1);
+                point(m, t, K + sg * atan(t), K, klo[k], sg, t, 1);
+                point(m, tt, K + sg * atan(tt), K, klo[k], sg, tt, 1);
             }
         }
+}
+
+/* t = fl(n/d) in (0, 1]: K + sg atan(t); rnd = 0 when t is exact (atan's
+   |x| <= 1, t = |x|) */
+static void mid_quot(model *m, double x, double truth, double K, double klo, double sg, double t, int rnd)
+{
+    (void)sg;
+    double red = rnd ? half_ulp(t) / (1 + t * t) : 0;
+    point_mid(m, x, truth, K, klo, t, t * t, half_ulp(t * t), red, 0x1p-48 * K);
+}
+
+int pf_model_atan_mid(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    walk_atan(&m, mid_quot);
+    return finish_mid(&m, sc, MID_TEXT_QUOT);
+}
+
+int pf_model_atan2_mid(const fit_poly *p, int order, pf_scheme *sc)
+{
+    model m = {p, order, p->max_err, 0, 0};
+    walk_atan2(&m, mid_quot);
     return finish_mid(&m, sc, MID_TEXT_QUOT);
 }
 
@@ -481,6 +501,14 @@ static void point_lean(model *m, double x, double truth, double t, int rnd, doub
     }
 }
 
+/* the walkers' point: lean carries |fl(K) - K| = |klo| as an error */
+static void lean_quot(model *m, double x, double truth, double K, double klo, double sg, double t, int rnd)
+{
+    (void)K;
+    (void)sg;
+    point_lean(m, x, truth, t, rnd, fabs(klo));
+}
+
 #define LEAN_TEXT                                                                                  \
     "P(z) = 1 + c3 z + ... by fmaf Horner in float; fmaf(m t, P, k), t = min/max (one division, " \
     "rounded once), k = 0, pi/2, pi as the nearest float; one final rounding"
@@ -488,34 +516,14 @@ static void point_lean(model *m, double x, double truth, double t, int rnd, doub
 int pf_model_atan_lean(const fit_poly *p, int order, pf_scheme *sc)
 {
     model m = {p, order, p->max_err, 0, 0};
-    double pio2 = acos(-1.0) / 2, e2 = fabs((double)(float)pio2 - pio2);
-    for (int i = 1; i <= NGRID; i++) {
-        double t = (double)i / NGRID;               /* (0, 1] */
-        double tt = ldexp(1.0, -i * 40 / NGRID);    /* toward 0 */
-        point_lean(&m, t, atan(t), t, 0, 0);
-        point_lean(&m, tt, atan(tt), tt, 0, 0);
-        double tb = fmin(t, 1 - 0x1p-24);   /* fl(1/a) < 1 for a > 1 */
-        point_lean(&m, 1 / tb, atan(1 / tb), tb, 1, e2);
-        point_lean(&m, 1 / tt, atan(1 / tt), tt, 1, e2);
-    }
+    walk_atan(&m, lean_quot);
     return finish_mid(&m, sc, LEAN_TEXT);
 }
 
 int pf_model_atan2_lean(const fit_poly *p, int order, pf_scheme *sc)
 {
     model m = {p, order, p->max_err, 0, 0};
-    double pio2 = acos(-1.0) / 2;
-    double kerr[3] = {0, fabs((double)(float)pio2 - pio2), fabs((double)(float)(2 * pio2) - 2 * pio2)};
-    for (int swap = 0; swap <= 1; swap++)
-        for (int negx = 0; negx <= 1; negx++) {
-            int k = swap ? 1 : 2 * negx;   /* K = k pi/2 */
-            double sg = swap != negx ? -1 : 1, K = k * pio2;
-            for (int i = 1; i <= NGRID; i++) {
-                double t = (double)i / NGRID, tt = ldexp(1.0, -i * 40 / NGRID);
-                point_lean(&m, t, K + sg * atan(t), t, 1, kerr[k]);
-                point_lean(&m, tt, K + sg * atan(tt), tt, 1, kerr[k]);
-            }
-        }
+    walk_atan2(&m, lean_quot);
     return finish_mid(&m, sc, LEAN_TEXT);
 }
 
@@ -546,34 +554,14 @@ static void point_lite(model *m, double x, double truth, double K, double klo, d
 int pf_model_atan_lite(const fit_poly *p, int order, pf_scheme *sc)
 {
     model m = {p, order, p->max_err, 0, 0};
-    double pio2 = acos(-1.0) / 2, klo2 = pio2 - (double)(float)pio2;
-    for (int i = 1; i <= NGRID; i++) {
-        double t = (double)i / NGRID;               /* (0, 1] */
-        double tt = ldexp(1.0, -i * 40 / NGRID);    /* toward 0 */
-        point_lite(&m, t, atan(t), 0, 0, 1, t, 0);
-        point_lite(&m, tt, atan(tt), 0, 0, 1, tt, 0);
-        double tb = fmin(t, 1 - 0x1p-24);   /* fl(1/a) < 1 for a > 1 */
-        point_lite(&m, 1 / tb, atan(1 / tb), pio2, klo2, -1, tb, 1);
-        point_lite(&m, 1 / tt, atan(1 / tt), pio2, klo2, -1, tt, 1);
-    }
+    walk_atan(&m, point_lite);
     return finish_mid(&m, sc, LITE_TEXT);
 }
 
 int pf_model_atan2_lite(const fit_poly *p, int order, pf_scheme *sc)
 {
     model m = {p, order, p->max_err, 0, 0};
-    double pio2 = acos(-1.0) / 2;
-    double klo[3] = {0, pio2 - (double)(float)pio2, 2 * pio2 - (double)(float)(2 * pio2)};
-    for (int swap = 0; swap <= 1; swap++)
-        for (int negx = 0; negx <= 1; negx++) {
-            int k = swap ? 1 : 2 * negx;   /* K = k pi/2 */
-            double sg = swap != negx ? -1 : 1, K = k * pio2;
-            for (int i = 1; i <= NGRID; i++) {
-                double t = (double)i / NGRID, tt = ldexp(1.0, -i * 40 / NGRID);
-                point_lite(&m, t, K + sg * atan(t), K, klo[k], sg, t, 1);
-                point_lite(&m, tt, K + sg * atan(tt), K, klo[k], sg, tt, 1);
-            }
-        }
+    walk_atan2(&m, point_lite);
     return finish_mid(&m, sc, LITE_TEXT);
 }
 
