@@ -10,7 +10,11 @@
  * Not a test: timings depend on the machine and its load.
  * Times are the thread's CPU time (so other load on the machine does not
  * count).  Usage: bench_fixed [repetitions]  (default 100); each figure is the fastest
- * of 7 rounds of `repetitions` passes.  Prints a Markdown table. */
+ * of 7 rounds of `repetitions` passes.  Prints a Markdown table.
+ * Built twice (mk/fixedgen.mk): bench_fixed runs the library's own dispatch
+ * (the widest clone this CPU has), bench_fixed_avx2 the same sources as a
+ * CPU with x86-64-v3 but no AVX-512 runs them (PF_BENCH_AVX2), so both
+ * ISAs' ratios come from one machine. */
 #include "funcset.h"
 #include "pfmath.h"
 #include "pfmath_fixed.h"
@@ -159,7 +163,13 @@ int main(int argc, char **argv)
     int reps = argc > 1 ? atoi(argv[1]) : 100;
     if (reps < 1)
         reps = 1;
-    printf("ns per element, best of 7 rounds of %d passes over 2^16 inputs\n\n", reps);
+#if defined(PF_BENCH_AVX2)
+    const char *isa = "as on an AVX2 CPU (x86-64-v3 code: the generated files built for it, the 16-bit "
+                      "kernels' own AVX2 loops)";
+#else
+    const char *isa = "the library's dispatch on this CPU (its widest clone)";
+#endif
+    printf("ns per element, best of 7 rounds of %d passes over 2^16 inputs; %s\n\n", reps, isa);
     printf("| function | types | fixed exact scalar | fixed exact array | fixed fast scalar | fixed fast array "
            "| float exact scalar | float exact array | float fast scalar | float fast array "
            "| fast: float/fixed array | exact: float/fixed array |\n");
