@@ -409,6 +409,16 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
    cost is one figure for every ISA, so 2 a term + 14 (24 at order 4) keeps
    the fast rows there; the rows stay for --max-ulp between them. */
 #define TABF_COST 14
+/* the compensated float-lane table rows (variant "tabc", the same template
+   with @NCOMP@ = 1; the model's compensated step adds COMP_COST 8).
+   Measured (pfbench --ladder with sampled levels, one run, 2026-11-26) at
+   order 5 (log model 0.564, log2 0.548 ULP): log AVX-512 0.30 ns an element
+   against 0.273 for the exact row (cost 30) and 0.61 for mid-double at
+   order 11 (cost 60); AVX2 0.551 against 0.352 and 0.831.  2 a term + 20
+   (40 at order 5) sits between them, as the timings do: the exact row keeps
+   the 1-ULP level, tabc takes the levels below the exact row's 0.76 ULP
+   down to its own floor. */
+#define TABC_COST 20
 #define TAB_TEXT                                                                                   \
     "x = 2^k z, z in [0x1.66p-1, 0x1.66p+0) by its bits from OFF, 16 subintervals by the next 4 bits, " \
     "t = r = z INVC[i] - 1 (the table below)"
@@ -430,6 +440,9 @@ const pf_spec pf_specs_log[] = {
     {"log", "balanced", "tabf", "log_tabf", 1, TAB_TEXT, "log(1+t)", g_log1p, -PF_LOGTAB_R, PF_LOGTAB_R,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 4, 0, "fma",
      NULL, 0, NULL, pf_extra_logtabf, pf_model_logtabf, NULL, "log_tabf_tail.c", TABF_COST},
+    {"log", "balanced", "tabc", "log_tabf", 1, TAB_TEXT, "log(1+t)", g_log1p, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 5, 0, "fma",
+     NULL, 0, NULL, pf_extra_logtabf, pf_model_logtabc, NULL, "log_tabf_tail.c", TABC_COST},
     {"log", "balanced", "fast", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_twopath.c", 0},
     {"log", "seed", "exact", "log_seed", 1,
@@ -458,6 +471,9 @@ const pf_spec pf_specs_log[] = {
     {"log2", "balanced", "tabf", "log_tabf", 1, TAB_TEXT, "log2(1+t)", g_log2_1p, -PF_LOGTAB_R, PF_LOGTAB_R,
      FIT_PARITY_NONE, FIT_REL, 1, {LOG_CON_ZERO}, 4, 0, "fma",
      NULL, 0, NULL, pf_extra_log2tabf, pf_model_log2tabf, NULL, "log_tabf_tail.c", TABF_COST},
+    {"log2", "balanced", "tabc", "log_tabf", 1, TAB_TEXT, "log2(1+t) - t/ln2", g_log2rem, -PF_LOGTAB_R, PF_LOGTAB_R,
+     FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 0")}, 5, 0, "fma",
+     NULL, 0, NULL, pf_extra_log2tabf, pf_model_log2tabc, NULL, "log_tabf_tail.c", TABC_COST},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_twopath.c", 0},
     {0},

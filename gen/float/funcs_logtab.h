@@ -24,5 +24,8 @@ int pf_extra_logtabf(char *buf, size_t n);
 int pf_extra_log2tabf(char *buf, size_t n);
 int pf_model_logtabf(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_log2tabf(const fit_poly *p, int order, pf_scheme *sc);
+/* the same tables, compensated (variant "tabc", @NCOMP@ = 1) */
+int pf_model_logtabc(const fit_poly *p, int order, pf_scheme *sc);
+int pf_model_log2tabc(const fit_poly *p, int order, pf_scheme *sc);
 
 #endif

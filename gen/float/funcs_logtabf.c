@@ -84,6 +84,19 @@ static void kconst(int is_log2, double *khi, float *klo)
     mpfr_clears(l, h, (mpfr_ptr)0);
 }
 
+/* 1/ln2 = LH + LL: LH rounded to float, LL the rest rounded to float */
+static void inv_ln2_split(float *lh, float *ll)
+{
+    mpfr_t v;
+    mpfr_init2(v, 256);
+    mpfr_const_log2(v, MPFR_RNDN);
+    mpfr_ui_div(v, 1, v, MPFR_RNDN);
+    *lh = mpfr_get_flt(v, MPFR_RNDN);
+    mpfr_sub_d(v, v, (double)*lh, MPFR_RNDN);
+    *ll = mpfr_get_flt(v, MPFR_RNDN);
+    mpfr_clear(v);
+}
+
 static void hexf(char *b, size_t n, double v) { snprintf(b, n, "%af,", v); }
 
 static int extra_common(char *buf, size_t n, int is_log2)
@@ -119,6 +132,12 @@ static int extra_common(char *buf, size_t n, int is_log2)
     PUT("#define PF_LOGTF_OFF 0x%08xu\n", off);
     PUT("static const float PF_LOGTF_KHI PF_UNUSED = %af;\nstatic const float PF_LOGTF_KLO PF_UNUSED = %af;\n",
         khi, (double)klo);
+    float lh, ll;
+    inv_ln2_split(&lh, &ll);
+    PUT("/* 1/ln2 = LH + LL (LH rounded to float, LL the rest rounded to float; MPFR):\n"
+        "   the compensated log2 rows' r/ln2 */\n");
+    PUT("static const float PF_LOGTF_LH PF_UNUSED = %af;\nstatic const float PF_LOGTF_LL PF_UNUSED = %af;\n",
+        (double)lh, (double)ll);
     PUT("#if defined(__GNUC__)\n#define PF_LOGTF_ALIGN __attribute__((aligned(64)))\n#else\n#define PF_LOGTF_ALIGN\n#endif\n");
     float c[NT], lo[NT];
     double hi[NT], full[NT];
@@ -224,3 +243,96 @@ static int model_common(const fit_poly *p, int order, pf_scheme *sc, int is_log2
 
 int pf_model_logtabf(const fit_poly *p, int order, pf_scheme *sc) { return model_common(p, order, sc, 0); }
 int pf_model_log2tabf(const fit_poly *p, int order, pf_scheme *sc) { return model_common(p, order, sc, 1); }
+
+/* ---- the compensated rows' error model (@NCOMP@ = 1), in ULP of the float result ----
+ * z INVC = p + plo exactly and r = p - 1 exactly, so the reduced argument
+ * r + plo is exact; f = k KS + L_i + log_b(1 + r + plo).  On a grid of r
+ * over each subinterval and k from -149 to 128:
+ *   the fast two-sum T + a = hi + lo is exact: checked, |T| >= |a| on every
+ *   subinterval for k = 0 (T = LHI), or T = 0 (then hi = a, lo = 0);
+ *   plo (|plo| <= half an ulp of p; 0 where INVC = 1) enters as plo (1 - r)
+ *   PS: the rest of log_b(1 + r + plo) - log_b(1+r) is below plo^2 +
+ *   |plo| r^2 / (1 - |r|), times PS;
+ *   log2: r LH = a + alo exactly, r LL within 2^-24 of itself and LH + LL
+ *   within 2^-49 of 1/ln2;
+ *   LLO's and KLO's roundings (|k| 2^-41 for log);
+ *   the small sum s + lo (ll, pl, alo, r LL): half an ulp of each partial
+ *   sum, bounded by the sum of the magnitudes;
+ *   q(r) by fmaf Horner: half an ulp a step, carried through, times r^2;
+ *   r^2 rounded: half an ulp times |q|; v = fmaf(r^2, q, s + lo): half an
+ *   ulp of v; the fit's relative error times |target(r)|;
+ *   the last addition hi + v is the result's own rounding (half an ULP). */
+static int model_comp(const fit_poly *p, int order, pf_scheme *sc, int is_log2)
+{
+    if (order < 3 || p->c[0] != 0 || p->c[1] != (is_log2 ? 0 : 1)) {
+        snprintf(sc->text, sizeof sc->text, "error model: needs p(0) = 0, p'(0) = %d and order >= 3",
+                 is_log2 ? 0 : 1);
+        return -1;
+    }
+    uint32_t off = pf_logtab_off();
+    const double KS = is_log2 ? 1 : M_LN2, PS = is_log2 ? 1 / M_LN2 : 1;
+    double worst = 0, worst_r = 0;
+    int worst_k = 0, worst_i = 0;
+    const int ng = 512;
+    for (int i = 0; i < NT; i++) {
+        double ra, rb, hi, full;
+        float lo, c = invcf_of(off, i);
+        rf_range(off, i, &ra, &rb);
+        logc_split(c, is_log2, &hi, &lo, &full);
+        /* the fast two-sum at k = 0: |LHI| >= |a| (a = r, or r LH rounded) */
+        double amax = fmax(fabs(ra), fabs(rb)) * PS * (1 + 0x1p-23);
+        if (hi != 0 && fabs(hi) < amax) {
+            snprintf(sc->text, sizeof sc->text,
+                     "error model: subinterval %d has |LHI| = %a below max |r PS| = %a (the fast two-sum needs "
+                     "it above)",
+                     i, fabs(hi), amax);
+            return -1;
+        }
+        /* |plo| <= half an ulp of p = z INVC rounded (p within |r| of 1) */
+        double plo = c == 1.0f ? 0 : H(1 + fmax(fabs(ra), fabs(rb)));
+        for (int j = 0; j <= ng; j++) {
+            double r = ra + (rb - ra) * j / ng;
+            double q = (double)p->c[order], eq = 0;
+            for (int m = order - 1; m >= 2; m--) {
+                q = q * r + (double)p->c[m];
+                eq = eq * fabs(r) + H(fabs(q) + eq);
+            }
+            double r2 = r * r, g = log1p(r) * PS, tg = is_log2 ? g - r * PS : g;
+            double epl = (plo * plo + plo * r2 / (1 - fabs(r))) * PS + H(plo) * PS; /* pl: approximation, rounding */
+            double ea = is_log2 ? fabs(r) * 0x1p-49 + H(fabs(r) * 0x1p-26) : 0; /* 1/ln2's split, r LL */
+            double alo = is_log2 ? H(r * PS) : 0;
+            double eq2 = r2 * eq + fabs(q) * H(r2);
+            for (int k = -149; k <= 128; k++) {
+                double f = k * KS + full + g;
+                if (f == 0)
+                    continue; /* x = 1: r = 0, k = 0, LHI = LLO = 0, every term is exactly 0 */
+                double t = k * KS + hi;
+                double ll = k * (KS - (is_log2 ? 1 : 0x1.62e4p-1)) + lo; /* k KLO + LLO */
+                double ell = (lo != 0 ? H(lo) : 0) + (is_log2 ? 0 : abs(k) * 0x1p-41 + (k ? H(ll) : 0));
+                double lov = t == 0 ? 0 : H(t + r * PS); /* |lo| <= half an ulp of hi */
+                /* the partial sums of s + lo, each rounded: at most three of
+                   magnitude <= the sum of the magnitudes */
+                double smag = fabs(ll) + plo * PS + alo + fabs(r) * 0x1p-26 + lov;
+                double es = 3 * H(smag);
+                double v = r2 * fabs(q) + smag;
+                double e = epl + ea + ell + es + eq2 + H(v) + p->max_err * fabs(tg);
+                double bnd = 0.5 + e / ulp_f(f);
+                if (bnd > worst)
+                    worst = bnd, worst_r = r, worst_k = k, worst_i = i;
+            }
+        }
+    }
+    sc->ncomp = 1;
+    sc->bound_ulp = worst;
+    snprintf(sc->text, sizeof sc->text,
+             "table of 16 (INVC, LHI, LLO) in float; z INVC = p + plo and r = p - 1 exact, %s, "
+             "(k KHI + LHI) + %s = hi + lo exact (fast two-sum), q(r) by Horner in float with fmaf, "
+             "y = hi + fmaf(r^2, q, small rest): one rounding into the result (the model's worst point is "
+             "k = %d, subinterval %d, r = %.4f)",
+             is_log2 ? "r^2 q(r) fits log2(1+r) - r/ln2, r LH = a + alo exact" : "p(r) = r + r^2 q(r)",
+             is_log2 ? "a" : "r", worst_k, worst_i, worst_r);
+    return 0;
+}
+
+int pf_model_logtabc(const fit_poly *p, int order, pf_scheme *sc) { return model_comp(p, order, sc, 0); }
+int pf_model_log2tabc(const fit_poly *p, int order, pf_scheme *sc) { return model_comp(p, order, sc, 1); }

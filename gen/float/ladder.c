@@ -16,7 +16,9 @@
 int pfsweep_pairs(pf_sweep_stats *s, pf_func f, pf_fn2 fn, uint64_t seed, uint64_t n);
 
 #define LADDER_MAX_ORDER 21   /* above the library's highest exact order (13) with room */
-#define LADDER_MAX_CANDS 128
+/* every order of up to 16 rows of one function (log2 has 7); candidates()
+   stops the program rather than drop rows silently if a table outgrows it */
+#define LADDER_MAX_CANDS (16 * LADDER_MAX_ORDER)
 #define PAIRS_SEED 1          /* pfsweep --all's defaults */
 #define PAIRS_N (1ull << 28)
 
@@ -98,9 +100,14 @@ static int candidates(const char *func, const char *reduction, cand *c)
         const pf_spec *sp = pf_spec_at(i);
         if (strcmp(sp->func, func) || strcmp(sp->reduction, reduction))
             continue;
-        for (int o = min_order(sp); o <= LADDER_MAX_ORDER && n < LADDER_MAX_CANDS; o++) {
+        for (int o = min_order(sp); o <= LADDER_MAX_ORDER; o++) {
             if ((sp->parity == FIT_PARITY_ODD && o % 2 == 0) || (sp->parity == FIT_PARITY_EVEN && o % 2))
                 continue;
+            if (n == LADDER_MAX_CANDS) {
+                fprintf(stderr, "pfmathgen: internal error: %s has more than %d ladder candidates "
+                                "(gen/float/ladder.c: LADDER_MAX_CANDS)\n", func, LADDER_MAX_CANDS);
+                abort();
+            }
             c[n++] = (cand){sp, o, cost_of(sp, fast, o), 0};
         }
     }
