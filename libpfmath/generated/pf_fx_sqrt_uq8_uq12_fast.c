@@ -324,8 +324,10 @@ uint16_t pf_sqrt_uq8_uq12_fast(uint16_t x)
 }
 
 /* Array form in 32-bit lanes, 16-bit loads and stores:
-   the float square root (vsqrtps) and its exact
-   integer correction need 32 bits.  The constants come through a
+   on x86-64-v4 and v3 it runs the loops above
+   (see the dispatch below); otherwise the float square root (vsqrtps)
+   and its exact integer correction in 32 bits, for the other levels
+   and compilers.  The constants come through a
    pointer that an empty asm hides from GCC, as in the 16-bit kernels.
    Built for a baseline without AVX2, it gets one clone per x86-64 level
    and the widest the CPU has is picked at load time (x86-64-v4: 16
