@@ -259,8 +259,9 @@ static void emit16(fx_gen *G, pf_buf *b)
    Z = x 2^(G-2) = N/4, y = rsqrt(Z) (1 + d), |d| <= 1.5 2^-12, t = fl(Z y),
    s = fl(t fl(3 - t y)) (fused) = 2 sqrt(Z) (1 - 3/2 d^2 - d^3/2 + e), |e| <=
    3 2^-24 for the three roundings: |s - sqrt(N)| <= (3/2 d^2 + d^3 + 3 2^-24)
-   sqrt(N) < 2^-5 for N < 2^32; x = 0 gives NaN (0 inf), whose conversion is
-   0x80000000, which vpackusdw saturates to 0.  R0 = trunc(s) (vcvttps2dq,
+   sqrt(N) < 2^-5 for N < 2^32; y is capped at 1 (it is below 2^-7 for
+   x > 0), so that x = 0 gives s = 0 rather than 0 inf (a NaN and an invalid
+   flag).  R0 = trunc(s) (vcvttps2dq,
    vpackusdw: back in word order) is then round(sqrt(N)) or one below, as in
    the scalar form, and R = R0 + 1 iff N > R0 (R0 + 1), i.e. (N = x 2^G, x an
    integer) x > floor(R0 (R0 + 1) / 2^G): the high half of a 16x16-bit
@@ -290,9 +291,10 @@ static void emit_f16_vec(fx_gen *G, pf_buf *b)
               "   |e| <= 3 2^-24 (three roundings), so |s - sqrt(N)| <= %.3g < 1/2 and\n"
               "   R0 = trunc(s) is the result or one below it, as in the scalar form.\n"
               "   Each float is made by unpacking x with a constant high word: the\n"
-              "   lane's bits are 2^B (1 + x 2^-23), minus 2^B exactly x 2^(B-23).  x = 0\n"
-              "   gives NaN (0 inf) on words 0-3, converted to 0x80000000, which\n"
-              "   vpackusdw saturates to 0.  vpackusdw puts R0 back in word order; then\n"
+              "   lane's bits are 2^B (1 + x 2^-23), minus 2^B exactly x 2^(B-23).  y is\n"
+              "   capped at 1 (Z >= 2^14 otherwise): for x = 0, rsqrt's inf would make\n"
+              "   0 inf, a NaN and an invalid-operation flag; the cap gives s = 0.\n"
+              "   vpackusdw puts R0 back in word order; then\n"
               "   R = R0 + 1 iff N > R0 (R0 + 1), i.e. x > floor(R0 (R0 + 1) / 2^%d), the\n"
               "   high half of a 16x16-bit product (vpmulhuw)%s, in 16-bit lanes.  R0 + 1\n"
               "   saturates at 65535: R0 = 65535 only when the result is 65535 (N < 2^32\n"
@@ -308,9 +310,10 @@ static void emit_f16_vec(fx_gen *G, pf_buf *b)
                   "__attribute__((target(\"arch=x86-64-v%d\"), noinline))\n"
                   "static void %s_array_%s(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
                   "    const %si er = %s_set1_epi16(0x%x), es = %s_set1_epi16(0x%x), one = %s_set1_epi16(1);\n"
-                  "    const %s br = %s_set1_ps(0x1p%df), bs = %s_set1_ps(0x1p%df), three = %s_set1_ps(3.0f);\n",
+                  "    const %s br = %s_set1_ps(0x1p%df), bs = %s_set1_ps(0x1p%df), three = %s_set1_ps(3.0f);\n"
+                  "    const %s one_f = %s_set1_ps(1.0f);\n",
                   v4 ? 4 : 3, N, v4 ? "bw" : "avx2", G->it, G->ot, V, P, (148 + g) << 7, P, (150 + g) << 7, P, V, P,
-                  g + 21, P, g + 23, P);
+                  g + 21, P, g + 23, P, V, P);
         if (clamp)
             pf_printf(b, "    const %si omax = %s_set1_epi16(%lld);\n", V, P, (long long)omax);
         pf_printf(b, "    size_t i = 0;\n    for (; i + %d <= n; i += %d) {\n", L, L);
@@ -323,14 +326,14 @@ static void emit_f16_vec(fx_gen *G, pf_buf *b)
         pf_printf(b,
                   "        /* words 0-3: Z = x 2^%d, s = t (3 - t y), y = rsqrt(Z), t = Z y */\n"
                   "        %s z = %s_sub_ps(%s_castsi%d_ps(%s_unpacklo_epi16(xv, er)), br);\n"
-                  "        %s r = %s_rsqrt%s_ps(z);\n"
+                  "        %s r = %s_min_ps(%s_rsqrt%s_ps(z), one_f); /* x = 0: 1, not inf (no 0 inf) */\n"
                   "        %s t = %s_mul_ps(z, r);\n"
                   "        %s s0 = %s_mul_ps(t, %s_fnmadd_ps(t, r, three));\n"
                   "        /* words 4-7: s = sqrtf(x 2^%d) */\n"
                   "        %s s1 = %s_sqrt_ps(%s_sub_ps(%s_castsi%d_ps(%s_unpackhi_epi16(xv, es)), bs));\n"
                   "        %si r0 = %s_packus_epi32(%s_cvttps_epi32(s0), %s_cvttps_epi32(s1)); /* R0, in word order */\n"
                   "        %si r1 = %s_adds_epu16(r0, one);\n",
-                  g - 2, V, P, P, v4 ? 512 : 256, P, V, P, v4 ? "14" : "", V, P, V, P, P, g, V, P, P, P,
+                  g - 2, V, P, P, v4 ? 512 : 256, P, V, P, P, v4 ? "14" : "", V, P, V, P, P, g, V, P, P, P,
                   v4 ? 512 : 256, P, V, P, P, P, V, P);
         if (g > 16)
             pf_printf(b, "        %si ph = %s_srli_epi16(%s_mulhi_epu16(r0, r1), %d); /* floor(R0 (R0 + 1) / 2^%d) */\n",

@@ -252,9 +252,10 @@ PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_fast_inline(uint16_t x, const int16_t *k,
    |e| <= 3 2^-24 (three roundings), so |s - sqrt(N)| <= 0.0249 < 1/2 and
    R0 = trunc(s) is the result or one below it, as in the scalar form.
    Each float is made by unpacking x with a constant high word: the
-   lane's bits are 2^B (1 + x 2^-23), minus 2^B exactly x 2^(B-23).  x = 0
-   gives NaN (0 inf) on words 0-3, converted to 0x80000000, which
-   vpackusdw saturates to 0.  vpackusdw puts R0 back in word order; then
+   lane's bits are 2^B (1 + x 2^-23), minus 2^B exactly x 2^(B-23).  y is
+   capped at 1 (Z >= 2^14 otherwise): for x = 0, rsqrt's inf would make
+   0 inf, a NaN and an invalid-operation flag; the cap gives s = 0.
+   vpackusdw puts R0 back in word order; then
    R = R0 + 1 iff N > R0 (R0 + 1), i.e. x > floor(R0 (R0 + 1) / 2^16), the
    high half of a 16x16-bit product (vpmulhuw), in 16-bit lanes.  R0 + 1
    saturates at 65535: R0 = 65535 only when the result is 65535 (N < 2^32
@@ -268,12 +269,13 @@ static void pf_sqrt_uq8_uq12_fast_array_bw(const uint16_t *restrict x, uint16_t 
 {
     const __m512i er = _mm512_set1_epi16(0x5200), es = _mm512_set1_epi16(0x5300), one = _mm512_set1_epi16(1);
     const __m512 br = _mm512_set1_ps(0x1p37f), bs = _mm512_set1_ps(0x1p39f), three = _mm512_set1_ps(3.0f);
+    const __m512 one_f = _mm512_set1_ps(1.0f);
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
         __m512i xv = _mm512_loadu_si512(x + i);
         /* words 0-3: Z = x 2^14, s = t (3 - t y), y = rsqrt(Z), t = Z y */
         __m512 z = _mm512_sub_ps(_mm512_castsi512_ps(_mm512_unpacklo_epi16(xv, er)), br);
-        __m512 r = _mm512_rsqrt14_ps(z);
+        __m512 r = _mm512_min_ps(_mm512_rsqrt14_ps(z), one_f); /* x = 0: 1, not inf (no 0 inf) */
         __m512 t = _mm512_mul_ps(z, r);
         __m512 s0 = _mm512_mul_ps(t, _mm512_fnmadd_ps(t, r, three));
         /* words 4-7: s = sqrtf(x 2^16) */
@@ -292,12 +294,13 @@ static void pf_sqrt_uq8_uq12_fast_array_avx2(const uint16_t *restrict x, uint16_
 {
     const __m256i er = _mm256_set1_epi16(0x5200), es = _mm256_set1_epi16(0x5300), one = _mm256_set1_epi16(1);
     const __m256 br = _mm256_set1_ps(0x1p37f), bs = _mm256_set1_ps(0x1p39f), three = _mm256_set1_ps(3.0f);
+    const __m256 one_f = _mm256_set1_ps(1.0f);
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
         __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
         /* words 0-3: Z = x 2^14, s = t (3 - t y), y = rsqrt(Z), t = Z y */
         __m256 z = _mm256_sub_ps(_mm256_castsi256_ps(_mm256_unpacklo_epi16(xv, er)), br);
-        __m256 r = _mm256_rsqrt_ps(z);
+        __m256 r = _mm256_min_ps(_mm256_rsqrt_ps(z), one_f); /* x = 0: 1, not inf (no 0 inf) */
         __m256 t = _mm256_mul_ps(z, r);
         __m256 s0 = _mm256_mul_ps(t, _mm256_fnmadd_ps(t, r, three));
         /* words 4-7: s = sqrtf(x 2^16) */
