@@ -17,6 +17,7 @@
 #include "pffixed.h"
 
 #include <dlfcn.h>
+#include <fenv.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -59,6 +60,8 @@ static const fx_case cases[] = {
     {"sqrt", "ufixed<16,16>", "ufixed<16,16>", 1, 0},
     {"sqrt", "ufixed<8,3>", "ufixed<8,6>", 1, 0},
     {"sqrt", "ufixed<16,2>", "ufixed<16,0>", 1, 0},  /* exact ties: sqrt(odd^2 / 4) */
+    {"sqrt", "fixed<15,7>", "ufixed<16,12>", 1, 0},  /* own v4/v3 loops, N = x 2^17 */
+    {"sqrt", "ufixed<16,8>", "fixed<15,12>", 1, 0},  /* own v4/v3 loops, saturating output */
     /* 16-bit lanes (issue 14): fast variants of odd pairs, and exact ones
        whose proof allows 16-bit words */
     {"cos", "fixed<7,4>", "fixed<7,6>", 0, 16},         /* 8-bit */
@@ -78,6 +81,68 @@ static const fx_case cases[] = {
     {"exp2", "fixed<15,6>", "ufixed<16,2>", 1, 16},     /* exact table kernel: j is x's low bits */
 };
 #define NCASES ((int)(sizeof cases / sizeof cases[0]))
+
+/* The array form over every input, into y: 1 if it raised the
+   invalid-operation flag (the kernels are integer code, and sqrt's float
+   estimates must not compute 0 inf or convert a NaN) */
+static int array_raises_invalid(const pf_fx_fn *f, const int64_t *x, int64_t *y, size_t n)
+{
+    feclearexcept(FE_ALL_EXCEPT);
+    pf_fx_call_array(f, x, y, n);
+    return fetestexcept(FE_INVALID) != 0;
+}
+
+/* A kernel with an AVX2 loop of its own (<name>_array_avx2, taken on
+   x86-64-v3; this machine's dispatch takes the v4 one): compiled again with
+   PF_FX_TEST_AVX2, which makes the array form take it on any CPU with
+   AVX2; the number of inputs where that array differs from the scalar form
+   (0 without AVX2 or without such a loop), plus one for each of the two
+   array forms that raised the invalid-operation flag */
+static uint64_t avx2_loop_mismatches(const char *src, size_t len, const fx_gen *G, const pf_fx_fn *f)
+{
+    int64_t lo = pf_type_min_stored(&G->in), hi = pf_type_max_stored(&G->in);
+    size_t n = (size_t)(hi - lo + 1);
+    int64_t *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
+    assert_non_null(x);
+    assert_non_null(y);
+    for (size_t i = 0; i < n; i++)
+        x[i] = lo + (int64_t)i;
+    uint64_t diff = 0;
+    if (array_raises_invalid(f, x, y, n)) { /* this CPU's dispatch */
+        print_message("  the array form raised the invalid-operation flag\n");
+        diff++;
+    }
+    if (!strstr(src, "_array_avx2(") || !__builtin_cpu_supports("avx2")) {
+        free(x);
+        free(y);
+        return diff;
+    }
+    static const char def[] = "#define PF_FX_TEST_AVX2 1\n";
+    char *s2 = malloc(sizeof def + len), err[800];
+    assert_non_null(s2);
+    memcpy(s2, def, sizeof def - 1);
+    memcpy(s2 + sizeof def - 1, src, len);
+    void *h = pf_compile_load(s2, sizeof def - 1 + len, err, sizeof err);
+    if (!h)
+        print_message("%s\n", err);
+    assert_non_null(h);
+    char an[160];
+    snprintf(an, sizeof an, "%s_array", G->name);
+    pf_fx_fn fa = {dlsym(h, G->name), dlsym(h, an), f->in, f->out};
+    assert_non_null(fa.array);
+    if (array_raises_invalid(&fa, x, y, n)) {
+        print_message("  the AVX2 loop raised the invalid-operation flag\n");
+        diff++;
+    }
+    for (size_t i = 0; i < n; i++)
+        diff += y[i] != pf_fx_call_scalar(f, x[i]);
+    print_message("  AVX2 loop (PF_FX_TEST_AVX2): %llu inputs differ from the scalar form\n", (unsigned long long)diff);
+    free(x);
+    free(y);
+    dlclose(h);
+    free(s2);
+    return diff;
+}
 
 static int run_case(const fx_case *c, double *max_err)
 {
@@ -137,6 +202,7 @@ static int run_case(const fx_case *c, double *max_err)
         print_message("  sqrt: %llu inputs differ from pf_fx_sqrt\n", (unsigned long long)diff);
         ok = ok && diff == 0;
     }
+    ok = ok && avx2_loop_mismatches(src, len, G, &fn) == 0;
     *max_err = s.max_err;
     dlclose(h);
     free(src);

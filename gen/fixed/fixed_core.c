@@ -501,7 +501,12 @@ char *fx_emit(const fx_gen *G, size_t *len)
                    "   and the widest the CPU has is picked at load time (x86-64-v4: 16\n"
                    "   lanes, v3: 8, the default: 4); every clone computes the same bits.";
         char note[2048];
-        if (G->nopoly)
+        if (G->nopoly && G->bw16)
+            snprintf(note, sizeof note, note32, "on x86-64-v4 and v3 it runs the loops above\n"
+                     "   (see the dispatch below); otherwise the float square root (vsqrtps)\n"
+                     "   and its exact integer correction in 32 bits, for the other levels\n"
+                     "   and compilers");
+        else if (G->nopoly)
             snprintf(note, sizeof note, note32, "the float square root (vsqrtps) and its exact\n   integer correction need 32 bits");
         else if (strcmp(G->wt, "int16_t") != 0)
             snprintf(note, sizeof note, note32, "every step in int32_t words with 32x32 -> 32-bit\n   products (vpmulld)");

@@ -28,6 +28,25 @@ static void g_sqrt1p(mpfr_t y, const mpfr_t t, const void *ctx)
 }
 
 
+/* The own AVX-512 and AVX2 loops of the 16-bit sqrt (emit_f16_vec): for
+   16-bit storage in and out and G >= 16, where the exact correction runs in
+   16-bit lanes (N > R0 (R0 + 1) iff x > floor(R0 (R0 + 1) / 2^G), a
+   vpmulhuw and a shift) */
+static int f16_vec(const fx_gen *G)
+{
+    return G->sqrt.gsh >= 16 && G->in.storage_bits == 16 && G->out.storage_bits == 16;
+}
+
+/* |S - sqrt(N)| for the loops' estimate from a reciprocal square root
+   (relative error <= 1.5 2^-12, vrsqrtps; vrsqrt14ps: 2^-14) and one Newton
+   step in float, N < 2^32 (see emit_f16_vec) */
+static double f16_vec_err(const fx_gen *G)
+{
+    double d = 1.5 * 0x1p-12, u = 0x1p-24;
+    double nmax = ldexp((double)pf_type_max_stored(&G->in), (int)G->sqrt.gsh);
+    return (1.5 * d * d + d * d * d + 3 * u) * sqrt(nmax);
+}
+
 /* 16-bit storage, N = x 2^G below 2^32 (G = 2 Eo - Ei >= 0): no polynomial
    but sqrtf and an exact correction (gen/templates/fx_sqrtf16.c.in), for the
    exact and the fast variant alike (the correction also keeps the fast one
@@ -51,12 +70,24 @@ static int prepare_f16(fx_gen *G, int nb, int64_t omax)
              g);
     snprintf(G->alt_order, sizeof G->alt_order,
              "none (no polynomial): one IEEE single-precision square root and an exact integer correction");
-    snprintf(G->wide_text, sizeof G->wide_text,
-             "32-bit lanes (float sqrt, vsqrtps; N and R0^2 need 32 bits); 16-bit loads and stores");
-    snprintf(G->alt_bound, sizeof G->alt_bound,
-             "correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 (half a float ulp, s < 2^16; "
-             "2^-7 for a 2-ulp approximate sqrtf) <= 1/2, so R0 = trunc(s) is round(sqrt(N)) or one below, and one "
-             "exact step reaches it (R0 + 1 when sqrt(N) >= R0 + 1/2, i.e. N > R0^2 + R0 in integers; no ties)");
+    if (f16_vec(G)) {
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 "x86-64-v4 and v3: loops of their own (intrinsics), the estimate s in 32-bit float lanes (half "
+                 "the lanes vsqrtps, half vrsqrt14ps/vrsqrtps and one Newton step), the correction in 16-bit "
+                 "lanes (vpmulhuw); other levels: 32-bit lanes (vsqrtps, 32-bit correction); 16-bit loads and stores");
+        snprintf(G->alt_bound, sizeof G->alt_bound,
+                 "correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 from sqrtf (half an ulp; "
+                 "2^-7 for a 2-ulp one), <= %.3g from rsqrt and Newton (v4/v3 loops), < 1/2, so R0 = trunc(s) is "
+                 "round(sqrt(N)) or one below, and one exact step reaches it (R0 + 1 when N > R0^2 + R0; no ties)",
+                 f16_vec_err(G));
+    } else {
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 "32-bit lanes (float sqrt, vsqrtps; N and R0^2 need 32 bits); 16-bit loads and stores");
+        snprintf(G->alt_bound, sizeof G->alt_bound,
+                 "correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 (half a float ulp, s < 2^16; "
+                 "2^-7 for a 2-ulp approximate sqrtf) <= 1/2, so R0 = trunc(s) is round(sqrt(N)) or one below, and one "
+                 "exact step reaches it (R0 + 1 when sqrt(N) >= R0 + 1/2, i.e. N > R0^2 + R0 in integers; no ties)");
+    }
     snprintf(G->alt_arith, sizeof G->alt_arith,
              "an int-to-float conversion and a multiply by 2^%d (both exact), IEEE sqrtf (correctly rounded), "
              "then 32-bit integers; the result does not depend on sqrtf's last bits, so it is bit-identical "
@@ -218,6 +249,112 @@ static void emit16(fx_gen *G, pf_buf *b)
     free(horner.s);
 }
 
+/* The loops of their own for x86-64-v4 and v3 (G >= 16, 16-bit storage:
+   f16_vec).  Per vector of 16-bit x: the even 128-bit halves' words 0-3 and
+   4-7 widened to 32-bit lanes by unpacking with a constant high word, which
+   makes each lane the float 2^(G+E) (1 + x 2^-23), E = 21 or 23, minus 2^(G+E)
+   exactly x 2^(G-2) or x 2^G (no int-to-float conversion, no shift).  Words
+   4-7: s = sqrtf(x 2^G) (vsqrtps, as the scalar form).  Words 0-3 (vsqrtps
+   is the peer's throughput limit, the reciprocal square root is not): with
+   Z = x 2^(G-2) = N/4, y = rsqrt(Z) (1 + d), |d| <= 1.5 2^-12, t = fl(Z y),
+   s = fl(t fl(3 - t y)) (fused) = 2 sqrt(Z) (1 - 3/2 d^2 - d^3/2 + e), |e| <=
+   3 2^-24 for the three roundings: |s - sqrt(N)| <= (3/2 d^2 + d^3 + 3 2^-24)
+   sqrt(N) < 2^-5 for N < 2^32; y is capped at 1 (it is below 2^-7 for
+   x > 0), so that x = 0 gives s = 0 rather than 0 inf (a NaN and an invalid
+   flag).  R0 = trunc(s) (vcvttps2dq,
+   vpackusdw: back in word order) is then round(sqrt(N)) or one below, as in
+   the scalar form, and R = R0 + 1 iff N > R0 (R0 + 1), i.e. (N = x 2^G, x an
+   integer) x > floor(R0 (R0 + 1) / 2^G): the high half of a 16x16-bit
+   product (vpmulhuw), shifted by G - 16, compared in 16-bit lanes.  R0 + 1
+   saturates at 65535: R0 = 65535 only when R = 65535 (N < 2^32 <
+   65535.5^2), and both choices then give it. */
+static void emit_f16_vec(fx_gen *G, pf_buf *b)
+{
+    const char *N = G->name;
+    int g = (int)G->sqrt.gsh, sx = !strcmp(G->it, "int16_t");
+    int64_t omax = pf_type_max_stored(&G->out);
+    double rmax = floor(sqrt(ldexp((double)pf_type_max_stored(&G->in), g)) + 0.5);
+    int clamp = rmax > (double)omax;
+    double err = f16_vec_err(G);
+    if (!(err < 0.5))
+        return;
+    G->bw16 = 3;
+    const char *cond = "#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)\n";
+    pf_printf(b,
+              "\n/* x86-64-v4 and v3: loops of their own, with intrinsics (the array form\n"
+              "   dispatches to them at run time; the other levels run the scalar steps\n"
+              "   above).  Per 16-bit x, N = x 2^%d: words 4-7 of each 128-bit lane get\n"
+              "   s = sqrtf(N) (vsqrtps), words 0-3, as vsqrtps is the throughput limit,\n"
+              "   s from a reciprocal square root (vrsqrt14ps, vrsqrtps: relative error\n"
+              "   d <= 1.5 2^-12) and one Newton step in float: with Z = N/4, y = rsqrt(Z),\n"
+              "   t = fl(Z y), s = fl(t fl(3 - t y)) = sqrt(N) (1 - 3/2 d^2 - d^3/2 + e),\n"
+              "   |e| <= 3 2^-24 (three roundings), so |s - sqrt(N)| <= %.3g < 1/2 and\n"
+              "   R0 = trunc(s) is the result or one below it, as in the scalar form.\n"
+              "   Each float is made by unpacking x with a constant high word: the\n"
+              "   lane's bits are 2^B (1 + x 2^-23), minus 2^B exactly x 2^(B-23).  y is\n"
+              "   capped at 1 (Z >= 2^14 otherwise): for x = 0, rsqrt's inf would make\n"
+              "   0 inf, a NaN and an invalid-operation flag; the cap gives s = 0.\n"
+              "   vpackusdw puts R0 back in word order; then\n"
+              "   R = R0 + 1 iff N > R0 (R0 + 1), i.e. x > floor(R0 (R0 + 1) / 2^%d), the\n"
+              "   high half of a 16x16-bit product (vpmulhuw)%s, in 16-bit lanes.  R0 + 1\n"
+              "   saturates at 65535: R0 = 65535 only when the result is 65535 (N < 2^32\n"
+              "   < 65535.5^2), which both choices give.  The same values as the scalar\n"
+              "   form for every x (the correction makes both correctly rounded). */\n"
+              "%s#include <immintrin.h>\n"
+              "extern %s %s(%s x); /* the scalar form, for the last n %% 32 */\n",
+              g, err, g, g > 16 ? " shifted right" : "", cond, G->ot, N, G->it);
+    for (int v4 = 1; v4 >= 0; v4--) {
+        const char *V = v4 ? "__m512" : "__m256", *P = v4 ? "_mm512" : "_mm256";
+        int L = v4 ? 32 : 16;
+        pf_printf(b,
+                  "__attribute__((target(\"arch=x86-64-v%d\"), noinline))\n"
+                  "static void %s_array_%s(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+                  "    const %si er = %s_set1_epi16(0x%x), es = %s_set1_epi16(0x%x), one = %s_set1_epi16(1);\n"
+                  "    const %s br = %s_set1_ps(0x1p%df), bs = %s_set1_ps(0x1p%df), three = %s_set1_ps(3.0f);\n"
+                  "    const %s one_f = %s_set1_ps(1.0f);\n",
+                  v4 ? 4 : 3, N, v4 ? "bw" : "avx2", G->it, G->ot, V, P, (148 + g) << 7, P, (150 + g) << 7, P, V, P,
+                  g + 21, P, g + 23, P, V, P);
+        if (clamp)
+            pf_printf(b, "    const %si omax = %s_set1_epi16(%lld);\n", V, P, (long long)omax);
+        pf_printf(b, "    size_t i = 0;\n    for (; i + %d <= n; i += %d) {\n", L, L);
+        if (v4)
+            pf_put(b, "        __m512i xv = _mm512_loadu_si512(x + i);\n");
+        else
+            pf_put(b, "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n");
+        if (sx)
+            pf_printf(b, "        xv = %s_max_epi16(xv, %s_setzero_si%d()); /* x <= 0 gives 0 */\n", P, P, v4 ? 512 : 256);
+        pf_printf(b,
+                  "        /* words 0-3: Z = x 2^%d, s = t (3 - t y), y = rsqrt(Z), t = Z y */\n"
+                  "        %s z = %s_sub_ps(%s_castsi%d_ps(%s_unpacklo_epi16(xv, er)), br);\n"
+                  "        %s r = %s_min_ps(%s_rsqrt%s_ps(z), one_f); /* x = 0: 1, not inf (no 0 inf) */\n"
+                  "        %s t = %s_mul_ps(z, r);\n"
+                  "        %s s0 = %s_mul_ps(t, %s_fnmadd_ps(t, r, three));\n"
+                  "        /* words 4-7: s = sqrtf(x 2^%d) */\n"
+                  "        %s s1 = %s_sqrt_ps(%s_sub_ps(%s_castsi%d_ps(%s_unpackhi_epi16(xv, es)), bs));\n"
+                  "        %si r0 = %s_packus_epi32(%s_cvttps_epi32(s0), %s_cvttps_epi32(s1)); /* R0, in word order */\n"
+                  "        %si r1 = %s_adds_epu16(r0, one);\n",
+                  g - 2, V, P, P, v4 ? 512 : 256, P, V, P, P, v4 ? "14" : "", V, P, V, P, P, g, V, P, P, P,
+                  v4 ? 512 : 256, P, V, P, P, P, V, P);
+        if (g > 16)
+            pf_printf(b, "        %si ph = %s_srli_epi16(%s_mulhi_epu16(r0, r1), %d); /* floor(R0 (R0 + 1) / 2^%d) */\n",
+                      V, P, P, g - 16, g);
+        else
+            pf_printf(b, "        %si ph = %s_mulhi_epu16(r0, r1); /* floor(R0 (R0 + 1) / 2^16) */\n", V, P);
+        if (v4)
+            pf_put(b, "        __m512i rr = _mm512_mask_mov_epi16(r0, _mm512_cmpgt_epu16_mask(xv, ph), r1);\n");
+        else
+            pf_put(b, "        __m256i rr = _mm256_adds_epu16(r0, _mm256_min_epu16(_mm256_subs_epu16(xv, ph), one)); /* + (x > ph) */\n");
+        if (clamp)
+            pf_printf(b, "        rr = %s_min_epu16(rr, omax);\n", P);
+        if (v4)
+            pf_put(b, "        _mm512_storeu_si512(y + i, rr);\n");
+        else
+            pf_put(b, "        _mm256_storeu_si256((__m256i *)(y + i), rr);\n");
+        pf_printf(b, "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n", N);
+    }
+    pf_put(b, "#endif\n");
+}
+
 static void emit_f16(fx_gen *G, pf_buf *b)
 {
     pf_buf body = {0};
@@ -242,6 +379,8 @@ static void emit_f16(fx_gen *G, pf_buf *b)
     const char *kv[] = {"NAME", G->name, "IT", G->it, "OT", G->ot, "BODY", body.s, NULL};
     pf_subst(b, pf_template("fx_sqrtf16.c"), kv);
     free(body.s);
+    if (f16_vec(G))
+        emit_f16_vec(G, b);
 }
 
 static void emit(fx_gen *G, pf_buf *b)

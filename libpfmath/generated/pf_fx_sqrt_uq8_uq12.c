@@ -10,12 +10,14 @@
  *              else R0; x <= 0 -> 0
  * Order:       none (no polynomial): one IEEE single-precision square root and an exact integer 
  *              correction
- * Lanes:       32-bit lanes (float sqrt, vsqrtps; N and R0^2 need 32 bits); 16-bit loads and 
- *              stores
- * Error bound: correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 (half a 
- *              float ulp, s < 2^16; 2^-7 for a 2-ulp approximate sqrtf) <= 1/2, so R0 = 
- *              trunc(s) is round(sqrt(N)) or one below, and one exact step reaches it (R0 + 1 
- *              when sqrt(N) >= R0 + 1/2, i.e. N > R0^2 + R0 in integers; no ties)
+ * Lanes:       x86-64-v4 and v3: loops of their own (intrinsics), the estimate s in 32-bit 
+ *              float lanes (half the lanes vsqrtps, half vrsqrt14ps/vrsqrtps and one Newton 
+ *              step), the correction in 16-bit lanes (vpmulhuw); other levels: 32-bit lanes 
+ *              (vsqrtps, 32-bit correction); 16-bit loads and stores
+ * Error bound: correctly rounded, |result - f(x)| <= 0.5 LSB: |s - sqrt(N)| <= 2^-9 from sqrtf 
+ *              (half an ulp; 2^-7 for a 2-ulp one), <= 0.0249 from rsqrt and Newton (v4/v3 
+ *              loops), < 1/2, so R0 = trunc(s) is round(sqrt(N)) or one below, and one exact 
+ *              step reaches it (R0 + 1 when N > R0^2 + R0; no ties)
  * Sweep:       max 0.5000 LSB at x = 65533 (255.988281), mean 0.2492 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  sqrt(x) for x < 0 (undefined) gives 0; results beyond the output range give its 
@@ -240,6 +242,80 @@ PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_inline(uint16_t x, const int16_t *k, int 
     return (uint16_t)r;
 }
 
+/* x86-64-v4 and v3: loops of their own, with intrinsics (the array form
+   dispatches to them at run time; the other levels run the scalar steps
+   above).  Per 16-bit x, N = x 2^16: words 4-7 of each 128-bit lane get
+   s = sqrtf(N) (vsqrtps), words 0-3, as vsqrtps is the throughput limit,
+   s from a reciprocal square root (vrsqrt14ps, vrsqrtps: relative error
+   d <= 1.5 2^-12) and one Newton step in float: with Z = N/4, y = rsqrt(Z),
+   t = fl(Z y), s = fl(t fl(3 - t y)) = sqrt(N) (1 - 3/2 d^2 - d^3/2 + e),
+   |e| <= 3 2^-24 (three roundings), so |s - sqrt(N)| <= 0.0249 < 1/2 and
+   R0 = trunc(s) is the result or one below it, as in the scalar form.
+   Each float is made by unpacking x with a constant high word: the
+   lane's bits are 2^B (1 + x 2^-23), minus 2^B exactly x 2^(B-23).  y is
+   capped at 1 (Z >= 2^14 otherwise): for x = 0, rsqrt's inf would make
+   0 inf, a NaN and an invalid-operation flag; the cap gives s = 0.
+   vpackusdw puts R0 back in word order; then
+   R = R0 + 1 iff N > R0 (R0 + 1), i.e. x > floor(R0 (R0 + 1) / 2^16), the
+   high half of a 16x16-bit product (vpmulhuw), in 16-bit lanes.  R0 + 1
+   saturates at 65535: R0 = 65535 only when the result is 65535 (N < 2^32
+   < 65535.5^2), which both choices give.  The same values as the scalar
+   form for every x (the correction makes both correctly rounded). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#include <immintrin.h>
+extern uint16_t pf_sqrt_uq8_uq12(uint16_t x); /* the scalar form, for the last n % 32 */
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_sqrt_uq8_uq12_array_bw(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    const __m512i er = _mm512_set1_epi16(0x5200), es = _mm512_set1_epi16(0x5300), one = _mm512_set1_epi16(1);
+    const __m512 br = _mm512_set1_ps(0x1p37f), bs = _mm512_set1_ps(0x1p39f), three = _mm512_set1_ps(3.0f);
+    const __m512 one_f = _mm512_set1_ps(1.0f);
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        __m512i xv = _mm512_loadu_si512(x + i);
+        /* words 0-3: Z = x 2^14, s = t (3 - t y), y = rsqrt(Z), t = Z y */
+        __m512 z = _mm512_sub_ps(_mm512_castsi512_ps(_mm512_unpacklo_epi16(xv, er)), br);
+        __m512 r = _mm512_min_ps(_mm512_rsqrt14_ps(z), one_f); /* x = 0: 1, not inf (no 0 inf) */
+        __m512 t = _mm512_mul_ps(z, r);
+        __m512 s0 = _mm512_mul_ps(t, _mm512_fnmadd_ps(t, r, three));
+        /* words 4-7: s = sqrtf(x 2^16) */
+        __m512 s1 = _mm512_sqrt_ps(_mm512_sub_ps(_mm512_castsi512_ps(_mm512_unpackhi_epi16(xv, es)), bs));
+        __m512i r0 = _mm512_packus_epi32(_mm512_cvttps_epi32(s0), _mm512_cvttps_epi32(s1)); /* R0, in word order */
+        __m512i r1 = _mm512_adds_epu16(r0, one);
+        __m512i ph = _mm512_mulhi_epu16(r0, r1); /* floor(R0 (R0 + 1) / 2^16) */
+        __m512i rr = _mm512_mask_mov_epi16(r0, _mm512_cmpgt_epu16_mask(xv, ph), r1);
+        _mm512_storeu_si512(y + i, rr);
+    }
+    for (; i < n; i++)
+        y[i] = pf_sqrt_uq8_uq12(x[i]);
+}
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_sqrt_uq8_uq12_array_avx2(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    const __m256i er = _mm256_set1_epi16(0x5200), es = _mm256_set1_epi16(0x5300), one = _mm256_set1_epi16(1);
+    const __m256 br = _mm256_set1_ps(0x1p37f), bs = _mm256_set1_ps(0x1p39f), three = _mm256_set1_ps(3.0f);
+    const __m256 one_f = _mm256_set1_ps(1.0f);
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+        /* words 0-3: Z = x 2^14, s = t (3 - t y), y = rsqrt(Z), t = Z y */
+        __m256 z = _mm256_sub_ps(_mm256_castsi256_ps(_mm256_unpacklo_epi16(xv, er)), br);
+        __m256 r = _mm256_min_ps(_mm256_rsqrt_ps(z), one_f); /* x = 0: 1, not inf (no 0 inf) */
+        __m256 t = _mm256_mul_ps(z, r);
+        __m256 s0 = _mm256_mul_ps(t, _mm256_fnmadd_ps(t, r, three));
+        /* words 4-7: s = sqrtf(x 2^16) */
+        __m256 s1 = _mm256_sqrt_ps(_mm256_sub_ps(_mm256_castsi256_ps(_mm256_unpackhi_epi16(xv, es)), bs));
+        __m256i r0 = _mm256_packus_epi32(_mm256_cvttps_epi32(s0), _mm256_cvttps_epi32(s1)); /* R0, in word order */
+        __m256i r1 = _mm256_adds_epu16(r0, one);
+        __m256i ph = _mm256_mulhi_epu16(r0, r1); /* floor(R0 (R0 + 1) / 2^16) */
+        __m256i rr = _mm256_adds_epu16(r0, _mm256_min_epu16(_mm256_subs_epu16(xv, ph), one)); /* + (x > ph) */
+        _mm256_storeu_si256((__m256i *)(y + i), rr);
+    }
+    for (; i < n; i++)
+        y[i] = pf_sqrt_uq8_uq12(x[i]);
+}
+#endif
+
 /* The constants the body reads (Horner coefficients and multipliers) */
 static const int16_t pf_sqrt_uq8_uq12_k[1] = {
     16,     /* k[0]: G = 2 Eo - Ei: N = x 2^16 */
@@ -251,8 +327,10 @@ uint16_t pf_sqrt_uq8_uq12(uint16_t x)
 }
 
 /* Array form in 32-bit lanes, 16-bit loads and stores:
-   the float square root (vsqrtps) and its exact
-   integer correction need 32 bits.  The constants come through a
+   on x86-64-v4 and v3 it runs the loops above
+   (see the dispatch below); otherwise the float square root (vsqrtps)
+   and its exact integer correction in 32 bits, for the other levels
+   and compilers.  The constants come through a
    pointer that an empty asm hides from GCC, as in the 16-bit kernels.
    Built for a baseline without AVX2, it gets one clone per x86-64 level
    and the widest the CPU has is picked at load time (x86-64-v4: 16
@@ -262,6 +340,22 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_sqrt_uq8_uq12_array(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_sqrt_uq8_uq12_array_avx2(x, y, n);
+        return;
+    }
+#endif
+    if (__builtin_cpu_supports("x86-64-v4")) {
+        pf_sqrt_uq8_uq12_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_sqrt_uq8_uq12_array_avx2(x, y, n);
+        return;
+    }
+#endif
     const int16_t *k = pf_sqrt_uq8_uq12_k;
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
