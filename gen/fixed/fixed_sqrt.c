@@ -28,15 +28,11 @@ static void g_sqrt1p(mpfr_t y, const mpfr_t t, const void *ctx)
 }
 
 
-/* The own AVX-512 and AVX2 loops of the 16-bit sqrt (emit_f16_vec): for
-   16-bit storage in and out and G >= 16, where the exact correction runs in
-   16-bit lanes (N > R0 (R0 + 1) iff x > floor(R0 (R0 + 1) / 2^G), a
-   vpmulhuw and a shift) */
-static int f16_vec(const fx_gen *G)
-{
-    return G->sqrt.gsh >= 16 && G->in.storage_bits == 16 && G->out.storage_bits == 16;
-}
-
+/* The own AVX-512 and AVX2 loops of the 16-bit sqrt (emit_f16_vec, f16_vec):
+   for 16-bit storage in and out and G >= 16, where the exact correction runs
+   in 16-bit lanes (N > R0 (R0 + 1) iff x > floor(R0 (R0 + 1) / 2^G), a
+   vpmulhuw and a shift), and where the estimate's error bound is below 1/2
+   (always, as N < 2^32) */
 /* |S - sqrt(N)| for the loops' estimate from a reciprocal square root
    (relative error <= 1.5 2^-12, vrsqrtps; vrsqrt14ps: 2^-14) and one Newton
    step in float, N < 2^32 (see emit_f16_vec) */
@@ -45,6 +41,11 @@ static double f16_vec_err(const fx_gen *G)
     double d = 1.5 * 0x1p-12, u = 0x1p-24;
     double nmax = ldexp((double)pf_type_max_stored(&G->in), (int)G->sqrt.gsh);
     return (1.5 * d * d + d * d * d + 3 * u) * sqrt(nmax);
+}
+
+static int f16_vec(const fx_gen *G)
+{
+    return G->sqrt.gsh >= 16 && G->in.storage_bits == 16 && G->out.storage_bits == 16 && f16_vec_err(G) < 0.5;
 }
 
 /* 16-bit storage, N = x 2^G below 2^32 (G = 2 Eo - Ei >= 0): no polynomial
@@ -250,8 +251,8 @@ static void emit16(fx_gen *G, pf_buf *b)
 }
 
 /* The loops of their own for x86-64-v4 and v3 (G >= 16, 16-bit storage:
-   f16_vec).  Per vector of 16-bit x: the even 128-bit halves' words 0-3 and
-   4-7 widened to 32-bit lanes by unpacking with a constant high word, which
+   f16_vec).  Per vector of 16-bit x: words 0-3 and 4-7 of each 128-bit lane
+   widened to 32-bit lanes by unpacking with a constant high word, which
    makes each lane the float 2^(G+E) (1 + x 2^-23), E = 21 or 23, minus 2^(G+E)
    exactly x 2^(G-2) or x 2^G (no int-to-float conversion, no shift).  Words
    4-7: s = sqrtf(x 2^G) (vsqrtps, as the scalar form).  Words 0-3 (vsqrtps
@@ -261,10 +262,10 @@ static void emit16(fx_gen *G, pf_buf *b)
    3 2^-24 for the three roundings: |s - sqrt(N)| <= (3/2 d^2 + d^3 + 3 2^-24)
    sqrt(N) < 2^-5 for N < 2^32; y is capped at 1 (it is below 2^-7 for
    x > 0), so that x = 0 gives s = 0 rather than 0 inf (a NaN and an invalid
-   flag).  R0 = trunc(s) (vcvttps2dq,
-   vpackusdw: back in word order) is then round(sqrt(N)) or one below, as in
-   the scalar form, and R = R0 + 1 iff N > R0 (R0 + 1), i.e. (N = x 2^G, x an
-   integer) x > floor(R0 (R0 + 1) / 2^G): the high half of a 16x16-bit
+   flag).  R0 = trunc(s) (vcvttps2dq, vpackusdw: back in word order) is
+   then round(sqrt(N)) or one below, as in the scalar form, and R = R0 + 1
+   iff N > R0 (R0 + 1), i.e. (N = x 2^G, x an integer) x > floor(R0 (R0 + 1)
+   / 2^G): the high half of a 16x16-bit
    product (vpmulhuw), shifted by G - 16, compared in 16-bit lanes.  R0 + 1
    saturates at 65535: R0 = 65535 only when R = 65535 (N < 2^32 <
    65535.5^2), and both choices then give it. */
@@ -276,8 +277,6 @@ static void emit_f16_vec(fx_gen *G, pf_buf *b)
     double rmax = floor(sqrt(ldexp((double)pf_type_max_stored(&G->in), g)) + 0.5);
     int clamp = rmax > (double)omax;
     double err = f16_vec_err(G);
-    if (!(err < 0.5))
-        return;
     G->bw16 = 3;
     const char *cond = "#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)\n";
     pf_printf(b,
