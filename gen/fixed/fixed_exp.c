@@ -583,28 +583,35 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "        b[3][k] = (uint8_t)(32768u >> k);\n"
               "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
               "    }\n"
-              "    const __m256i al = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));\n"
-              "    const __m256i ah = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));\n"
-              "    const __m256i dt = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));\n"
-              "    const __m256i ql = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));\n"
-              "    const __m256i qh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[4]));\n"
-              "    const __m256i hib = _mm256_set1_epi16(-256), lo8 = _mm256_set1_epi16(255), m15 = _mm256_set1_epi16(15);\n"
-              "    const __m256i dup = _mm256_set1_epi16(0x101), q70 = _mm256_set1_epi8(0x70), h15 = _mm256_set1_epi16(-32768);\n"
-              "    const __m256i c1 = _mm256_set1_epi16(%lld), c2 = _mm256_set1_epi16(%lld);\n"
-              "    const __m256i cq = _mm256_set1_epi16(%lld), k1 = _mm256_set1_epi16(%lld);\n",
-              cond, N, G->it, G->ot, N, N, N, s16(X->tc1), s16(X->tc2), s16(X->tcc - 1), s16(X->tcc));
-    if (X->sat)
-        pf_printf(kern, "    const __m256i k0 = _mm256_set1_epi16(%lld);\n", s16(X->tcc + 1));
-    if (base2)
-        pf_printf(kern, "    const __m256i bias = _mm256_set1_epi16(%lld);\n", s16(X->tk0 << Ei));
-    else
-        pf_printf(kern, "    const __m256i off = _mm256_set1_epi16(%lld), l1 = _mm256_set1_epi16(%lld), l2 = _mm256_set1_epi16(%lld),\n"
-                        "                  cl = _mm256_set1_epi16(%lld);\n",
-                  s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl));
-    if (X->loclamp)
-        pf_printf(kern, "    const __m256i xlo = _mm256_set1_epi16(%lld);\n", (long long)X->xlo);
-    if (X->sat)
-        pf_printf(kern, "    const __m256i xhi = _mm256_set1_epi16(%lld);\n", (long long)X->xsat);
+              "    /* the constants in memory GCC cannot see through: with 16 ymm registers it\n"
+              "       would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside\n"
+              "       the loop, where a memory operand costs nothing */\n"
+              "    __m256i kc[19];\n"
+              "    for (int k = 0; k < 5; k++)\n"
+              "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));\n"
+              "    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */\n"
+              "    kc[6] = _mm256_set1_epi16(0x101);\n"
+              "    kc[7] = _mm256_set1_epi16(-32768);\n"
+              "    kc[8] = _mm256_set1_epi16(%lld); /* c1 */\n"
+              "    kc[9] = _mm256_set1_epi16(%lld); /* c2 */\n"
+              "    kc[10] = _mm256_set1_epi16(%lld); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */\n"
+              "    kc[11] = _mm256_set1_epi16(%lld); /* kb at s = 1 */\n"
+              "    kc[12] = _mm256_set1_epi16(%lld); /* off, or the bias (exp2) */\n"
+              "    kc[13] = _mm256_set1_epi16(%lld); /* L1 */\n"
+              "    kc[14] = _mm256_set1_epi16(%lld); /* L2 */\n"
+              "    kc[15] = _mm256_set1_epi16(%lld); /* Cl */\n"
+              "    kc[16] = _mm256_set1_epi16(%lld); /* the low clamp */\n"
+              "    kc[17] = _mm256_set1_epi16(%lld); /* the high clamp */\n"
+              "    kc[18] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */\n"
+              "    __asm__(\"\" : : \"r\"(kc) : \"memory\");\n"
+              "    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];\n"
+              "    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];\n"
+              "    const __m256i %s = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];\n"
+              "    const __m256i j16 = kc[18];\n"
+              "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
+              cond, N, G->it, G->ot, N, N, N, s16(X->tc1), s16(X->tc2), s16(X->tcc - 1 + 0x70), s16(X->tcc),
+              base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl), (long long)X->xlo,
+              (long long)X->xsat, base2 ? "bias" : "off");
     pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
                  "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
     if (X->loclamp)
@@ -628,20 +635,20 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(kern, "        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);\n");
     }
     pf_put(kern, "        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));\n"
-                 "        __m256i jd = _mm256_mullo_epi16(_mm256_and_si256(hi, m15), dup); /* j in both bytes */\n"
+                 "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 12), j16); /* j in both bytes */\n"
                  "        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);\n"
                  "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
-                 "        v = _mm256_add_epi16(v, _mm256_and_si256(_mm256_shuffle_epi8(dt, jd), lo8));\n"
+                 "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));\n"
                  "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));\n"
                  "        __m256i kb = _mm256_srli_epi16(hi, 4);\n"
-                 "        /* s - 2 in both bytes, + 0x70 saturating: from s = 18 (and at s <= 1) bit 7 is set */\n"
-                 "        __m256i qi = _mm256_adds_epu8(_mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup), q70);\n"
+                 "        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */\n"
+                 "        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);\n"
                  "        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);\n"
                  "        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));\n"
                  "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),\n"
                  "                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */\n");
     if (X->sat)
-        pf_put(kern, "        r = _mm256_or_si256(r, _mm256_cmpeq_epi16(kb, k0)); /* s = 0: the clamped top input, the max */\n");
+        pf_put(kern, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */\n");
     pf_printf(kern, "        _mm256_storeu_si256((__m256i *)(y + i), r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
               N);
     G->bw16 = 3;

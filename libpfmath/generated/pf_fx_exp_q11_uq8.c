@@ -356,20 +356,32 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
         b[3][k] = (uint8_t)(32768u >> k);
         b[4][k] = (uint8_t)((32768u >> k) >> 8);
     }
-    const __m256i al = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
-    const __m256i ah = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
-    const __m256i dt = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
-    const __m256i ql = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
-    const __m256i qh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[4]));
-    const __m256i hib = _mm256_set1_epi16(-256), lo8 = _mm256_set1_epi16(255), m15 = _mm256_set1_epi16(15);
-    const __m256i dup = _mm256_set1_epi16(0x101), q70 = _mm256_set1_epi8(0x70), h15 = _mm256_set1_epi16(-32768);
-    const __m256i c1 = _mm256_set1_epi16(-20116), c2 = _mm256_set1_epi16(1004);
-    const __m256i cq = _mm256_set1_epi16(17), k1 = _mm256_set1_epi16(18);
-    const __m256i k0 = _mm256_set1_epi16(19);
-    const __m256i off = _mm256_set1_epi16(15586), l1 = _mm256_set1_epi16(738), l2 = _mm256_set1_epi16(-22291),
-                  cl = _mm256_set1_epi16(21584);
-    const __m256i xlo = _mm256_set1_epi16(-14197);
-    const __m256i xhi = _mm256_set1_epi16(11357);
+    /* the constants in memory GCC cannot see through: with 16 ymm registers it
+       would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside
+       the loop, where a memory operand costs nothing */
+    __m256i kc[19];
+    for (int k = 0; k < 5; k++)
+        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));
+    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
+    kc[6] = _mm256_set1_epi16(0x101);
+    kc[7] = _mm256_set1_epi16(-32768);
+    kc[8] = _mm256_set1_epi16(-20116); /* c1 */
+    kc[9] = _mm256_set1_epi16(1004); /* c2 */
+    kc[10] = _mm256_set1_epi16(129); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */
+    kc[11] = _mm256_set1_epi16(18); /* kb at s = 1 */
+    kc[12] = _mm256_set1_epi16(15586); /* off, or the bias (exp2) */
+    kc[13] = _mm256_set1_epi16(738); /* L1 */
+    kc[14] = _mm256_set1_epi16(-22291); /* L2 */
+    kc[15] = _mm256_set1_epi16(21584); /* Cl */
+    kc[16] = _mm256_set1_epi16(-14197); /* the low clamp */
+    kc[17] = _mm256_set1_epi16(11357); /* the high clamp */
+    kc[18] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */
+    __asm__("" : : "r"(kc) : "memory");
+    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];
+    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];
+    const __m256i off = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];
+    const __m256i j16 = kc[18];
+    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
         __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
@@ -382,19 +394,19 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
         __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);
         __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);
         __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
-        __m256i jd = _mm256_mullo_epi16(_mm256_and_si256(hi, m15), dup); /* j in both bytes */
+        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 12), j16); /* j in both bytes */
         __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
         __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-        v = _mm256_add_epi16(v, _mm256_and_si256(_mm256_shuffle_epi8(dt, jd), lo8));
+        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
         __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
         __m256i kb = _mm256_srli_epi16(hi, 4);
-        /* s - 2 in both bytes, + 0x70 saturating: from s = 18 (and at s <= 1) bit 7 is set */
-        __m256i qi = _mm256_adds_epu8(_mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup), q70);
+        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */
+        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);
         __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);
         __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
         r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
                                _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
-        r = _mm256_or_si256(r, _mm256_cmpeq_epi16(kb, k0)); /* s = 0: the clamped top input, the max */
+        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
         _mm256_storeu_si256((__m256i *)(y + i), r);
     }
     for (; i < n; i++)
