@@ -63,7 +63,10 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
  * avg(M >> (s - 1), 0) + 2^(16 - s).
  * J = 4 (16-entry tables) first: one vpermw per table on AVX-512BW, two
  * vpshufb on AVX2; 2^(j/16) E is avg(E, pmulhuw(A[j], E)) (A = (2^(j/16) -
- * 1) 2^16, so no table of 2^(j/16) itself).  J = 6 (64-entry tables,
+ * 1) 2^16, so no table of 2^(j/16) itself).  exp2 whose r would have 7
+ * bits takes J = 5 (32 entries: one vpermw; four vpshufb on AVX2): r has
+ * 6, and the AVX-512 loop reads E from a 64-entry table (vpermi2w) where
+ * the polynomial took four steps.  J = 6 (64-entry tables,
  * vpermi2w, a table U[j] = 2^(j/64) 2^15 and pmulhuw(U[j], E)) where J = 4
  * misses the bound.
  * Every step is a 16-bit word; exp's x log2(e) to 2^-F (the error model
@@ -97,7 +100,7 @@ static void tab_eval(const fx_gen *G, int base2, int64_t xc, tab_val *v)
     uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
     unsigned j = hi & ((1u << J) - 1);
     uint16_t w;
-    if (J == 4) /* avg(E, pmulhuw(A, E)) + D */
+    if (J != 6) /* avg(E, pmulhuw(A, E)) + D */
         w = (uint16_t)((((uint32_t)e + ((uint32_t)X->ta[j] * e >> 16) + 1u) >> 1) + X->td[j]);
     else
         w = (uint16_t)(((uint32_t)X->tu[j] * e >> 16) + X->td[j]);
@@ -136,7 +139,7 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
         mpfr_set_si(a, j, MPFR_RNDN);
         mpfr_div_2ui(a, a, (unsigned long)J, MPFR_RNDN);
         mpfr_exp2(a, a, MPFR_RNDN);                  /* T1 */
-        if (J != 4)
+        if (J == 6)
             X->tu[j] = (uint16_t)scaled_int(a, 15, MPFR_RNDN);
         mpfr_sub_ui(b, a, 1, MPFR_RNDN);
         mpfr_mul_2ui(b, b, 16, MPFR_RNDN);           /* (T1 - 1) 2^16 */
@@ -173,10 +176,10 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
        the AVX-512 loop reads E from a 32-entry table of the polynomial's own
        values (one vpermw on tb's low bits instead of two multiply-highs and
        an add): the same bits as the plain-C steps, which AVX2 runs faster */
-    X->tet = base2 && Ei - J <= 5;
+    X->tet = base2 && (Ei - J <= 5 || (J != 6 && Ei - J == 6));
     if (X->tet) {
         int mb = Ei - J;
-        for (uint32_t i = 0; i < 32; i++) {
+        for (uint32_t i = 0; i < 64; i++) {
             uint32_t lo = (uint16_t)((i & ((1u << mb) - 1)) << (16 - mb));
             uint16_t g = (uint16_t)(X->tc1 + (lo * (uint32_t)X->tc2 >> 16));
             X->te[i] = (uint16_t)(lo * g >> 16);
@@ -323,13 +326,15 @@ static void tab_texts(fx_gen *G, int base2)
     snprintf(G->alt_order, sizeof G->alt_order,
              "2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and %s %d-entry tables of 2^(j/%d); "
              "uint16_t words: 16-bit lanes",
-             J == 4 ? "two" : "three", NJ, NJ);
+             J != 6 ? "two" : "three", NJ, NJ);
     snprintf(G->alt_method, sizeof G->alt_method,
              "minimax absolute error of 2^r on [0, 2^-%d] (nlopt SLSQP, epigraph form), c1 and c2 rounded to nearest "
              "at 2^-16 and 2^-%d (their multiply-highs' lsbs); tables rounded to nearest from MPFR (256 bits): "
              "A[j] = (2^(j/%d) - 1) 2^16, %sD[j] = (A[j]'s residual + 1/2) 2^%d",
-             J, 32 - F, NJ, J == 4 ? "" : "U[j] = 2^(j/64) 2^15, ", F - 17);
+             J, 32 - F, NJ, J != 6 ? "" : "U[j] = 2^(j/64) 2^15, ", F - 17);
     snprintf(G->alt_con, sizeof G->alt_con, "p(0) = 1 (2^r - 1 has no constant term; exact at r = 0)");
+    char avgt[64];
+    snprintf(avgt, sizeof avgt, "avg(E, pmulhuw(A[j], E)) (= 2^(j/%d) E 2^-1, pavgw)", NJ);
     snprintf(G->alt_formats, sizeof G->alt_formats,
              "r uint16_t at 2^-%d; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^%d (floors; c1 = %lld, c2 = %lld); "
              "M = A[j] + ((%s + D[j]) >> %d), saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of "
@@ -337,16 +342,16 @@ static void tab_texts(fx_gen *G, int base2)
              "(pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the saturating add gives the max "
              "there, at the clamped top input)%s",
              F, F, (long long)X->tc1, (long long)X->tc2,
-             J == 4 ? "avg(E, pmulhuw(A[j], E)) (= 2^(j/16) E 2^-1, pavgw)" : "pmulhuw(U[j], E)", F - 17, 16 - Eo,
+             J != 6 ? avgt : "pmulhuw(U[j], E)", F - 17, 16 - Eo,
              smin, smax,
-             J == 4 ? "; AVX2: round(M 2^-s) + P as avg(Q, pmulhuw(M, Q)) with Q = 2^(17 - s) for s >= 2 (vpshufb "
+             J != 6 ? "; AVX2: round(M 2^-s) + P as avg(Q, pmulhuw(M, Q)) with Q = 2^(17 - s) for s >= 2 (vpshufb "
                       "table, 0 from s = 18), and 2^15 + avg(M, 0) (saturating) at s = 1: the same values"
                     : "");
     snprintf(G->alt_poly, sizeof G->alt_poly,
              "E within %.3f of (2^r - 1) 2^%d for every r (polynomial and floors, all 2^16 r); M within %.4f of "
              "(2^f - 1) 2^16 for every input's (j, r)",
              X->tpoly, F, X->tkern);
-    if (J == 4)
+    if (J != 6)
         snprintf(G->wide_text, sizeof G->wide_text,
                  "16-bit words throughout%s; AVX-512BW (x86-64-v4): lookups vpermw, the shift vpsrlvw; AVX2 "
                  "(x86-64-v3): a lookup two vpshufb and a vpblendvb, the shift a pmulhuw by 2^(17 - s); the "
@@ -362,9 +367,9 @@ static void tab_texts(fx_gen *G, int base2)
     if (X->tet) { /* exp2, r of <= 5 bits: the AVX-512 loop reads E from a table */
         size_t o = strlen(G->alt_formats);
         snprintf(G->alt_formats + o, sizeof G->alt_formats - o,
-                 "; r has %d bits (r = m 2^-%d): the AVX-512 loop reads E from a 32-entry table of these same "
-                 "values (vpermw on the biased input's low bits)",
-                 Ei - J, Ei);
+                 "; r has %d bits (r = m 2^-%d): the AVX-512 loop reads E from a %d-entry table of these same "
+                 "values (%s on the biased input's low bits)",
+                 Ei - J, Ei, Ei - J == 6 ? 64 : 32, Ei - J == 6 ? "vpermi2w" : "vpermw");
     }
     snprintf(G->alt_arith, sizeof G->alt_arith,
              "integers only (no floating point, no <math.h>); the steps before the result floor (unsigned "
@@ -406,7 +411,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         fx_k16(G, 0, "0 (unused: no clamp)");
     snprintf(what, sizeof what, "A[j] = round((2^(j/%d) - 1) 2^16) (MPFR)", NJ);
     tab_table(tabs, N, "ta", X->ta, NJ, what);
-    if (J != 4)
+    if (J == 6)
         tab_table(tabs, N, "tu", X->tu, NJ, "U[j] = round(2^(j/64) 2^15) (MPFR)");
     snprintf(what, sizeof what, "D[j] = round(((2^(j/%d) - 1) 2^16 - A[j] + 1/2) 2^%d), in [0, %d] (MPFR)", NJ, F - 17,
              1 << (F - 17));
@@ -438,14 +443,14 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                     "    uint16_t g = (uint16_t)(%lldu + ((uint32_t)lo * %lldu >> 16));\n"
                     "    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);\n",
               F, (long long)X->tc1, (long long)X->tc2);
-    if (J == 4)
-        pf_printf(body, "    /* M = (2^(j/16 + r) - 1) 2^16, one rounding: A[j] + round(2^(j/16) E 2^-4 + A[j]'s residual),\n"
-                        "       2^(j/16) E 2^-1 = avg(E, pmulhuw(A[j], E)) (pavgw) */\n"
-                        "    unsigned j = hi & 15u;\n"
+    if (J != 6)
+        pf_printf(body, "    /* M = (2^(j/%d + r) - 1) 2^16, one rounding: A[j] + round(2^(j/%d) E 2^-%d + A[j]'s residual),\n"
+                        "       2^(j/%d) E 2^-1 = avg(E, pmulhuw(A[j], E)) (pavgw) */\n"
+                        "    unsigned j = hi & %du;\n"
                         "    uint16_t v = (uint16_t)((((uint32_t)e + ((uint32_t)%s_ta[j] * e >> 16) + 1u) >> 1) + %s_td[j]);\n"
-                        "    uint32_t ms = (uint32_t)%s_ta[j] + (uint32_t)(v >> 3);\n"
+                        "    uint32_t ms = (uint32_t)%s_ta[j] + (uint32_t)(v >> %d);\n"
                         "    uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);\n",
-                  N, N, N);
+                  NJ, NJ, F - 16, NJ, NJ - 1, N, N, N, F - 17);
     else
         pf_printf(body, "    /* M = (2^(j/64 + r) - 1) 2^16, one rounding: A[j] + round(U[j] E 2^-21 + A[j]'s residual) */\n"
                         "    unsigned j = hi & 63u;\n"
@@ -475,7 +480,8 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16(const uint32_t *t)\n{\n"
               "    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),\n"
               "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n",
-              J == 4 ? "vpermw" : "vpermi2w/vpermw", cond, G->ot, N, G->it, J == 4 ? "" : "/vpermi2w", N);
+              J != 6 && !(X->tet && Ei - J == 6) ? "vpermw" : "vpermi2w/vpermw", cond, G->ot, N, G->it,
+              J != 6 && !(X->tet && Ei - J == 6) ? "" : "/vpermi2w", N);
     if (J == 4)
         pf_printf(kern, "/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: hi's low 4 are j) */\n"
                         "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16b(const uint32_t *t)\n{\n"
@@ -488,11 +494,15 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_buf te = {0};
         snprintf(what, sizeof what, "E[i] = the polynomial's E at r = (i mod 2^(Ei - %d)) 2^-Ei (the plain-C steps' values)",
                  J);
-        tab_table(&te, N, "te", X->te, 32, what);
+        tab_table(&te, N, "te", X->te, Ei - J == 6 ? 64 : 32, what);
         pf_put(kern, te.s);
         free(te.s);
     }
-    if (J == 4)
+    if (J == 5)
+        pf_printf(kern, "    const __m512i ta = %s_w16(%s_ta), td = %s_w16(%s_td);\n"
+                        "    const __m512i tp = %s_w16(%s_tp);\n",
+                  N, N, N, N, N, N);
+    else if (J == 4)
         pf_printf(kern, "    const __m512i ta = %s_w16b(%s_ta), td = %s_w16b(%s_td);\n"
                         "    const __m512i tp = %s_w16(%s_tp);\n",
                   N, N, N, N, N, N);
@@ -502,7 +512,9 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                         "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
                         "    const __m512i tp = %s_w16(%s_tp);\n",
                   N, N, N, N, N, N, N, N, N, N, N, N, N, N);
-    if (X->tet)
+    if (X->tet && Ei - J == 6)
+        pf_printf(kern, "    const __m512i te0 = %s_w16(%s_te), te1 = %s_w16(%s_te + 32);\n", N, N, N, N);
+    else if (X->tet)
         pf_printf(kern, "    const __m512i te = %s_w16(%s_te);\n", N, N);
     if (X->tet)
         pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(X->tcc));
@@ -525,7 +537,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
     if (X->sat)
         pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
-    if (base2 && X->tet)
+    if (base2 && X->tet && Ei - J == 6)
+        pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                        "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutex2var_epi16(te0, tb, te1);\n",
+                  Ei - J);
+    else if (base2 && X->tet)
         pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
                         "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
                   Ei - J);
@@ -541,12 +557,13 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                      "        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);\n");
     if (!X->tet)
         pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n");
-    if (J == 4)
-        pf_put(kern, "        __m512i a = _mm512_permutexvar_epi16(hi, ta);\n"
-                     "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
-                     "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));\n"
-                     "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));\n"
-                     "        __m512i kb = _mm512_srli_epi16(hi, 4);\n");
+    if (J != 6)
+        pf_printf(kern, "        __m512i a = _mm512_permutexvar_epi16(hi, ta);\n"
+                        "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
+                        "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));\n"
+                        "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
+                        "        __m512i kb = _mm512_srli_epi16(hi, %d);\n",
+                  F - 17, J);
     else
         pf_put(kern, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
                      "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
@@ -557,7 +574,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     pf_printf(kern, "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
               N);
     G->bw16 = 2;
-    if (J != 4)
+    if (J == 6)
         return;
     /* AVX2: no vpermw, no 16-bit per-element shift, no unsigned compare
        into a mask.  A 16-entry table of words is two vpshufb (its low and
@@ -567,6 +584,35 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
        passes 0x7f and vpshufb gives 0, as the scalar's P does), and
        2^15 + avg(M, 0) (saturating) at s = 1: both equal avg(M >> (s - 1),
        0) + P[k] of the scalar form */
+    pf_buf tb5 = {0};
+    if (J == 4)
+        pf_printf(&tb5, "    uint8_t b[5][16]; /* A's low, high bytes, D, Q's low, high bytes (Q[i] = 2^(15 - i)) */\n"
+                        "    for (int k = 0; k < 16; k++) {\n"
+                        "        b[0][k] = (uint8_t)%s_ta[k];\n"
+                        "        b[1][k] = (uint8_t)(%s_ta[k] >> 8);\n"
+                        "        b[2][k] = (uint8_t)%s_td[k];\n"
+                        "        b[3][k] = (uint8_t)(32768u >> k);\n"
+                        "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
+                        "    }\n",
+                  N, N, N);
+    else
+        pf_printf(&tb5, "    uint8_t b[8][16]; /* A's low, high bytes, D (entries 0-15), Q's low, high bytes (Q[i] =\n"
+                        "                         2^(15 - i)); A's low, high bytes, D (entries 16-31) */\n"
+                        "    for (int k = 0; k < 16; k++) {\n"
+                        "        b[0][k] = (uint8_t)%s_ta[k];\n"
+                        "        b[1][k] = (uint8_t)(%s_ta[k] >> 8);\n"
+                        "        b[2][k] = (uint8_t)%s_td[k];\n"
+                        "        b[3][k] = (uint8_t)(32768u >> k);\n"
+                        "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
+                        "        b[5][k] = (uint8_t)%s_ta[k + 16];\n"
+                        "        b[6][k] = (uint8_t)(%s_ta[k + 16] >> 8);\n"
+                        "        b[7][k] = (uint8_t)%s_td[k + 16];\n"
+                        "    }\n",
+                  N, N, N, N, N, N);
+    const char *k18 = J == 4 ? "    kc[18] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */\n"
+                             : "    kc[18] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */\n"
+                               "    for (int k = 19; k < 22; k++)\n"
+                               "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));\n";
     pf_printf(kern,
               "\n\n/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16\n"
               "   words is two vpshufb (its low and its high bytes) merged by vpblendvb;\n"
@@ -575,18 +621,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "   2^15 + avg(M, 0) at s = 1.  The same values. */\n%s"
               "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
               "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
-              "    uint8_t b[5][16]; /* A's low, high bytes, D, Q's low, high bytes (Q[i] = 2^(15 - i)) */\n"
-              "    for (int k = 0; k < 16; k++) {\n"
-              "        b[0][k] = (uint8_t)%s_ta[k];\n"
-              "        b[1][k] = (uint8_t)(%s_ta[k] >> 8);\n"
-              "        b[2][k] = (uint8_t)%s_td[k];\n"
-              "        b[3][k] = (uint8_t)(32768u >> k);\n"
-              "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
-              "    }\n"
+              "%s"
               "    /* the constants in memory GCC cannot see through: with 16 ymm registers it\n"
               "       would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside\n"
               "       the loop, where a memory operand costs nothing */\n"
-              "    __m256i kc[19];\n"
+              "    __m256i kc[%d];\n"
               "    for (int k = 0; k < 5; k++)\n"
               "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));\n"
               "    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */\n"
@@ -602,16 +641,18 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    kc[15] = _mm256_set1_epi16(%lld); /* Cl */\n"
               "    kc[16] = _mm256_set1_epi16(%lld); /* the low clamp */\n"
               "    kc[17] = _mm256_set1_epi16(%lld); /* the high clamp */\n"
-              "    kc[18] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */\n"
+              "%s"
               "    __asm__(\"\" : : \"r\"(kc) : \"memory\");\n"
               "    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];\n"
               "    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];\n"
               "    const __m256i %s = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];\n"
-              "    const __m256i j16 = kc[18];\n"
+              "    const __m256i j16 = kc[18];\n%s"
               "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
-              cond, N, G->it, G->ot, N, N, N, s16(X->tc1), s16(X->tc2), s16(X->tcc - 1 + 0x70), s16(X->tcc),
+              cond, N, G->it, G->ot, tb5.s, J == 4 ? 19 : 22, s16(X->tc1), s16(X->tc2), s16(X->tcc - 1 + 0x70), s16(X->tcc),
               base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl), (long long)X->xlo,
-              (long long)X->xsat, base2 ? "bias" : "off");
+              (long long)X->xsat, k18, base2 ? "bias" : "off",
+              J == 4 ? "" : "    const __m256i al1 = kc[19], ah1 = kc[20], dt1 = kc[21];\n");
+    free(tb5.s);
     pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
                  "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
     if (X->loclamp)
@@ -634,14 +675,24 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                          "        __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);\n");
         pf_put(kern, "        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);\n");
     }
-    pf_put(kern, "        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));\n"
-                 "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 12), j16); /* j in both bytes */\n"
-                 "        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);\n"
-                 "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
-                 "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));\n"
-                 "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));\n"
-                 "        __m256i kb = _mm256_srli_epi16(hi, 4);\n"
-                 "        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */\n"
+    pf_put(kern, "        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));\n");
+    if (J == 4)
+        pf_put(kern, "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 12), j16); /* j in both bytes */\n"
+                     "        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);\n"
+                     "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
+                     "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));\n"
+                     "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));\n"
+                     "        __m256i kb = _mm256_srli_epi16(hi, 4);\n");
+    else
+        pf_put(kern, "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 11), j16); /* j in both bytes */\n"
+                     "        __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */\n"
+                     "        __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),\n"
+                     "                                       _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);\n"
+                     "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
+                     "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));\n"
+                     "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));\n"
+                     "        __m256i kb = _mm256_srli_epi16(hi, 5);\n");
+    pf_put(kern, "        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */\n"
                  "        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);\n"
                  "        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);\n"
                  "        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));\n"
@@ -664,8 +715,14 @@ static int prep_tab_noclamp(fx_gen *G, int base2, char *err, size_t errlen)
     fx_exp_red *X = &G->exp, save = *X;
     int64_t imin = pf_type_min_stored(&G->in), one = (int64_t)1 << G->in.exp;
     int64_t k0 = imin >= 0 ? 0 : (-imin + one - 1) / one, xtop = X->sat ? X->xsat : X->xhi;
-    /* 16-entry tables first (AVX2 has a loop for them), then 64 */
-    for (int J = 4; J <= 6; J += 2) {
+    /* 16-entry tables first (AVX2 has a loop for them), then 32, then 64;
+       exp2 whose r would have 7 bits with 16 entries: 32 first (r has 6,
+       and the AVX-512 loop reads E from a 64-entry table) */
+    int order[3] = {4, 5, 6};
+    if (base2 && G->in.exp - 4 == 7)
+        order[0] = 5, order[1] = 4;
+    for (int oi = 0; oi < 3; oi++) {
+        int J = order[oi];
         if (base2 && X->loclamp && xtop + k0 * one <= 65535) {
             X->loclamp = 0;
             X->xlo = imin;

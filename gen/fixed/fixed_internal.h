@@ -75,8 +75,8 @@ typedef struct {               /* exp, exp2 */
     int64_t tcc;               /* c = s - 1 = tcc - (hi >> J) */
     uint16_t ta[64], tu[64], td[64], tp[32];
     double terr, tkern, tred, tpoly; /* pre-rounding error (lsb); kernel (2^-16), t (2^-22), E (2^-22) */
-    int tet;                   /* exp2 with r of <= 5 bits: E from a 32-entry table te (vpermw) */
-    uint16_t te[32];
+    int tet;                   /* exp2 with r of <= 5 bits (6 with J < 6): E from a table te (vpermw, vpermi2w) */
+    uint16_t te[64];
     /* 16-bit lanes, fast: the segment-table kernel (kind 2, fixed_exp.c) */
     int64_t fd, fl;            /* u = fd - min(x, fd); exp: w = u fl 2^-16 (w = (t(fd) - t) 2^fb) */
     int ffb, fq;               /* fb; the table's offset, (fq & 3)/4 of W's lsb; fq >> 2: V[0] = the max */
