@@ -490,7 +490,68 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     pf_printf(kern, "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
                     "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
               N, G->it, G->ot);
-    if (X->tet) {
+    /* exp2 with J = 5 and E from a 64-entry table: the loop runs on
+       tbn = CB - x = (c + 1) 2^Ei - 1 - (tb mod 2^Ei), whose top bits are
+       c = s - 1 itself (no vpsubw for the shift count) and whose low bits
+       index the tables reversed; the clamped top input (s = 0) wraps to
+       c = 31 mod 32, the max.  Where every c of the other inputs is at
+       most 30 */
+    int cmpl = base2 && X->tet && J == 5 && Ei - J == 6;
+    int64_t CB = (X->tcc + 1 - X->tk0) * ((int64_t)1 << Ei) - 1;
+    if (cmpl) {
+        int64_t xtop = X->sat ? X->xsat : X->xhi;
+        for (int64_t x = X->xlo; x <= xtop && cmpl; x++) {
+            int64_t tn = CB - x;
+            if (x <= X->xhi ? tn < 0 || tn > 65535 || (tn >> Ei) > 30 : ((uint16_t)tn >> Ei) % 32 != 31)
+                cmpl = 0;
+        }
+    }
+    if (cmpl) {
+        uint16_t rv[64];
+        pf_buf t = {0};
+        for (int i = 0; i < 64; i++)
+            rv[i] = X->te[63 - i];
+        tab_table(&t, N, "ter", rv, 64, "E[63 - i] (tbn's low 6 bits are 63 - r's)");
+        for (int i = 0; i < 32; i++)
+            rv[i] = X->ta[31 - i];
+        tab_table(&t, N, "tar", rv, 32, "A[31 - i] (j = 31 - (tbn >> 6) mod 32)");
+        for (int i = 0; i < 32; i++)
+            rv[i] = X->td[31 - i];
+        tab_table(&t, N, "tdr", rv, 32, "D[31 - i]");
+        for (int i = 0; i < 32; i++) {
+            int64_t kb = X->tcc - i;
+            rv[i] = (uint16_t)(i == 31 ? (X->sat ? 65535 : 0) : kb >= X->klo + X->tk0 ? X->tp[kb & 31] : 0);
+        }
+        tab_table(&t, N, "tpr", rv, 32, "P at c = s - 1 = i (P[(k + K0) & 31] above, k + K0 = tcc - c); 31: s = 0");
+        pf_put(kern, t.s);
+        free(t.s);
+        pf_printf(kern, "    const __m512i ta = %s_w16(%s_tar), td = %s_w16(%s_tdr), tp = %s_w16(%s_tpr);\n"
+                        "    const __m512i te0 = %s_w16(%s_ter), te1 = %s_w16(%s_ter + 32);\n"
+                        "    const __m512i cb = _mm512_set1_epi16(%lld); /* CB = (tcc + 1 - K0) 2^%d - 1 */\n",
+                  N, N, N, N, N, N, N, N, N, N, s16(CB), Ei);
+        if (X->loclamp)
+            pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
+        if (X->sat)
+            pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
+        pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
+                     "        __m512i xc = _mm512_loadu_si512(x + i);\n");
+        if (X->loclamp)
+            pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
+        if (X->sat)
+            pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
+        pf_printf(kern, "        __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^%d - 1 - (tb mod 2^%d) */\n"
+                        "        __m512i hn = _mm512_srli_epi16(tn, %d), e = _mm512_permutex2var_epi16(te0, tn, te1);\n"
+                        "        __m512i a = _mm512_permutexvar_epi16(hn, ta);\n"
+                        "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
+                        "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));\n"
+                        "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
+                        "        __m512i c = _mm512_srli_epi16(tn, %d);\n"
+                        "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());\n"
+                        "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));\n"
+                        "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+                  Ei, Ei, Ei - J, F - 17, Ei, N);
+    }
+    if (X->tet && !cmpl) {
         pf_buf te = {0};
         snprintf(what, sizeof what, "E[i] = the polynomial's E at r = (i mod 2^(Ei - %d)) 2^-Ei (the plain-C steps' values)",
                  J);
@@ -498,81 +559,83 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(kern, te.s);
         free(te.s);
     }
-    if (J == 5)
-        pf_printf(kern, "    const __m512i ta = %s_w16(%s_ta), td = %s_w16(%s_td);\n"
-                        "    const __m512i tp = %s_w16(%s_tp);\n",
-                  N, N, N, N, N, N);
-    else if (J == 4)
-        pf_printf(kern, "    const __m512i ta = %s_w16b(%s_ta), td = %s_w16b(%s_td);\n"
-                        "    const __m512i tp = %s_w16(%s_tp);\n",
-                  N, N, N, N, N, N);
-    else
-        pf_printf(kern, "    const __m512i ta0 = %s_w16(%s_ta), ta1 = %s_w16(%s_ta + 32);\n"
-                        "    const __m512i tu0 = %s_w16(%s_tu), tu1 = %s_w16(%s_tu + 32);\n"
-                        "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
-                        "    const __m512i tp = %s_w16(%s_tp);\n",
-                  N, N, N, N, N, N, N, N, N, N, N, N, N, N);
-    if (X->tet && Ei - J == 6)
-        pf_printf(kern, "    const __m512i te0 = %s_w16(%s_te), te1 = %s_w16(%s_te + 32);\n", N, N, N, N);
-    else if (X->tet)
-        pf_printf(kern, "    const __m512i te = %s_w16(%s_te);\n", N, N);
-    if (X->tet)
-        pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(X->tcc));
-    else
-    pf_printf(kern, "    const __m512i c1 = _mm512_set1_epi16(%lld), c2 = _mm512_set1_epi16(%lld), cc = _mm512_set1_epi16(%lld);\n",
-              s16(X->tc1), s16(X->tc2), s16(X->tcc));
-    if (base2)
-        pf_printf(kern, "    const __m512i bias = _mm512_set1_epi16(%lld);\n", s16(X->tk0 << Ei));
-    else
-        pf_printf(kern, "    const __m512i off = _mm512_set1_epi16(%lld), l1 = _mm512_set1_epi16(%lld), l2 = _mm512_set1_epi16(%lld),\n"
-                        "                  cl = _mm512_set1_epi16(%lld), one = _mm512_set1_epi16(1);\n",
-                  s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl));
-    if (X->loclamp)
-        pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
-    if (X->sat)
-        pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
-    pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
-                 "        __m512i xc = _mm512_loadu_si512(x + i);\n");
-    if (X->loclamp)
-        pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
-    if (X->sat)
-        pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
-    if (base2 && X->tet && Ei - J == 6)
-        pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                        "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutex2var_epi16(te0, tb, te1);\n",
-                  Ei - J);
-    else if (base2 && X->tet)
-        pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                        "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
-                  Ei - J);
-    else if (base2)
-        pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                        "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
-                  Ei - J, 16 - Ei + J);
-    else
-        pf_put(kern, "        __m512i u = _mm512_add_epi16(xc, off);\n"
-                     "        __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);\n"
-                     "        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);\n"
-                     "        __m512i hi = _mm512_mulhi_epu16(u, l1);\n"
-                     "        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);\n");
-    if (!X->tet)
-        pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n");
-    if (J != 6)
-        pf_printf(kern, "        __m512i a = _mm512_permutexvar_epi16(hi, ta);\n"
-                        "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
-                        "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));\n"
-                        "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
-                        "        __m512i kb = _mm512_srli_epi16(hi, %d);\n",
-                  F - 17, J);
-    else
-        pf_put(kern, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
-                     "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
-                     "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
-                     "        __m512i kb = _mm512_srli_epi16(hi, 6);\n");
-    pf_put(kern, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
-                 "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
-    pf_printf(kern, "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-              N);
+    if (!cmpl) {
+        if (J == 5)
+            pf_printf(kern, "    const __m512i ta = %s_w16(%s_ta), td = %s_w16(%s_td);\n"
+                            "    const __m512i tp = %s_w16(%s_tp);\n",
+                      N, N, N, N, N, N);
+        else if (J == 4)
+            pf_printf(kern, "    const __m512i ta = %s_w16b(%s_ta), td = %s_w16b(%s_td);\n"
+                            "    const __m512i tp = %s_w16(%s_tp);\n",
+                      N, N, N, N, N, N);
+        else
+            pf_printf(kern, "    const __m512i ta0 = %s_w16(%s_ta), ta1 = %s_w16(%s_ta + 32);\n"
+                            "    const __m512i tu0 = %s_w16(%s_tu), tu1 = %s_w16(%s_tu + 32);\n"
+                            "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
+                            "    const __m512i tp = %s_w16(%s_tp);\n",
+                      N, N, N, N, N, N, N, N, N, N, N, N, N, N);
+        if (X->tet && Ei - J == 6)
+            pf_printf(kern, "    const __m512i te0 = %s_w16(%s_te), te1 = %s_w16(%s_te + 32);\n", N, N, N, N);
+        else if (X->tet)
+            pf_printf(kern, "    const __m512i te = %s_w16(%s_te);\n", N, N);
+        if (X->tet)
+            pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(X->tcc));
+        else
+        pf_printf(kern, "    const __m512i c1 = _mm512_set1_epi16(%lld), c2 = _mm512_set1_epi16(%lld), cc = _mm512_set1_epi16(%lld);\n",
+                  s16(X->tc1), s16(X->tc2), s16(X->tcc));
+        if (base2)
+            pf_printf(kern, "    const __m512i bias = _mm512_set1_epi16(%lld);\n", s16(X->tk0 << Ei));
+        else
+            pf_printf(kern, "    const __m512i off = _mm512_set1_epi16(%lld), l1 = _mm512_set1_epi16(%lld), l2 = _mm512_set1_epi16(%lld),\n"
+                            "                  cl = _mm512_set1_epi16(%lld), one = _mm512_set1_epi16(1);\n",
+                      s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl));
+        if (X->loclamp)
+            pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
+        if (X->sat)
+            pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
+        pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
+                     "        __m512i xc = _mm512_loadu_si512(x + i);\n");
+        if (X->loclamp)
+            pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
+        if (X->sat)
+            pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
+        if (base2 && X->tet && Ei - J == 6)
+            pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                            "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutex2var_epi16(te0, tb, te1);\n",
+                      Ei - J);
+        else if (base2 && X->tet)
+            pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                            "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
+                      Ei - J);
+        else if (base2)
+            pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                            "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
+                      Ei - J, 16 - Ei + J);
+        else
+            pf_put(kern, "        __m512i u = _mm512_add_epi16(xc, off);\n"
+                         "        __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);\n"
+                         "        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);\n"
+                         "        __m512i hi = _mm512_mulhi_epu16(u, l1);\n"
+                         "        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);\n");
+        if (!X->tet)
+            pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n");
+        if (J != 6)
+            pf_printf(kern, "        __m512i a = _mm512_permutexvar_epi16(hi, ta);\n"
+                            "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
+                            "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));\n"
+                            "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
+                            "        __m512i kb = _mm512_srli_epi16(hi, %d);\n",
+                      F - 17, J);
+        else
+            pf_put(kern, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
+                         "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
+                         "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
+                         "        __m512i kb = _mm512_srli_epi16(hi, 6);\n");
+        pf_put(kern, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
+                     "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
+        pf_printf(kern, "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+                  N);
+    }
     G->bw16 = 2;
     if (J == 6)
         return;

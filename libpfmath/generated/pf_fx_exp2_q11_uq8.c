@@ -300,36 +300,55 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-/* E[i] = the polynomial's E at r = (i mod 2^(Ei - 5)) 2^-Ei (the plain-C steps' values) */
-static const uint32_t pf_exp2_q11_uq8_te[64] = {
-    0, 709, 1420, 2130, 2841, 3551, 4262, 4974,
-    5685, 6397, 7109, 7822, 8534, 9247, 9960, 10673,
-    11387, 12101, 12814, 13529, 14243, 14958, 15673, 16388,
-    17104, 17819, 18535, 19251, 19968, 20685, 21401, 22118,
-    22836, 23554, 24272, 24990, 25708, 26427, 27146, 27864,
-    28584, 29304, 30024, 30743, 31464, 32184, 32905, 33626,
-    34347, 35069, 35791, 36513, 37235, 37957, 38680, 39404,
-    40126, 40850, 41574, 42298, 43021, 43746, 44471, 45196,
+/* E[63 - i] (tbn's low 6 bits are 63 - r's) */
+static const uint32_t pf_exp2_q11_uq8_ter[64] = {
+    45196, 44471, 43746, 43021, 42298, 41574, 40850, 40126,
+    39404, 38680, 37957, 37235, 36513, 35791, 35069, 34347,
+    33626, 32905, 32184, 31464, 30743, 30024, 29304, 28584,
+    27864, 27146, 26427, 25708, 24990, 24272, 23554, 22836,
+    22118, 21401, 20685, 19968, 19251, 18535, 17819, 17104,
+    16388, 15673, 14958, 14243, 13529, 12814, 12101, 11387,
+    10673, 9960, 9247, 8534, 7822, 7109, 6397, 5685,
+    4974, 4262, 3551, 2841, 2130, 1420, 709, 0,
 };
-    const __m512i ta = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ta), td = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_td);
-    const __m512i tp = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tp);
-    const __m512i te0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_te), te1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_te + 32);
-    const __m512i cc = _mm512_set1_epi16(23);
-    const __m512i bias = _mm512_set1_epi16(-32768);
+/* A[31 - i] (j = 31 - (tbn >> 6) mod 32) */
+static const uint32_t pf_exp2_q11_uq8_tar[32] = {
+    62727, 59979, 57289, 54658, 52082, 49562, 47095, 44682,
+    42320, 40009, 37747, 35534, 33369, 31249, 29175, 27146,
+    25160, 23216, 21315, 19454, 17633, 15850, 14106, 12400,
+    10730, 9096, 7496, 5932, 4400, 2902, 1435, 0,
+};
+/* D[31 - i] */
+static const uint32_t pf_exp2_q11_uq8_tdr[32] = {
+    14, 8, 15, 1, 9, 4, 15, 8,
+    12, 10, 16, 13, 2, 12, 14, 6,
+    7, 16, 3, 3, 0, 14, 15, 6,
+    6, 2, 15, 0, 10, 0, 9, 8,
+};
+/* P at c = s - 1 = i (P[(k + K0) & 31] above, k + K0 = tcc - c); 31: s = 0 */
+static const uint32_t pf_exp2_q11_uq8_tpr[32] = {
+    32768, 16384, 8192, 4096, 2048, 1024, 512, 256,
+    128, 64, 32, 16, 8, 4, 2, 1,
+    1, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 65535,
+};
+    const __m512i ta = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tar), td = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tdr), tp = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tpr);
+    const __m512i te0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ter), te1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ter + 32);
+    const __m512i cb = _mm512_set1_epi16(16383); /* CB = (tcc + 1 - K0) 2^11 - 1 */
     const __m512i xhi = _mm512_set1_epi16(16384);
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
         __m512i xc = _mm512_loadu_si512(x + i);
         xc = _mm512_min_epi16(xc, xhi);
-        __m512i tb = _mm512_add_epi16(xc, bias);
-        __m512i hi = _mm512_srli_epi16(tb, 6), e = _mm512_permutex2var_epi16(te0, tb, te1);
-        __m512i a = _mm512_permutexvar_epi16(hi, ta);
+        __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^11 - 1 - (tb mod 2^11) */
+        __m512i hn = _mm512_srli_epi16(tn, 6), e = _mm512_permutex2var_epi16(te0, tn, te1);
+        __m512i a = _mm512_permutexvar_epi16(hn, ta);
         __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
-        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
+        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));
         __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 4));
-        __m512i kb = _mm512_srli_epi16(hi, 5);
-        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
-        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
+        __m512i c = _mm512_srli_epi16(tn, 11);
+        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());
+        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));
         _mm512_storeu_si512(y + i, r);
     }
     for (; i < n; i++)
