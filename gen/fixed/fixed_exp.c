@@ -712,8 +712,8 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    const __m256i j16 = kc[18];\n%s"
               "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
               cond, N, G->it, G->ot, tb5.s, J == 4 ? 19 : 22, s16(X->tc1), s16(X->tc2), s16(X->tcc - 1 + 0x70), s16(X->tcc),
-              base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl), (long long)X->xlo,
-              (long long)X->xsat, k18, base2 ? "bias" : "off",
+              base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
+              X->loclamp ? s16(X->xlo) : 0, X->sat ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
               J == 4 ? "" : "    const __m256i al1 = kc[19], ah1 = kc[20], dt1 = kc[21];\n");
     free(tb5.s);
     pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"

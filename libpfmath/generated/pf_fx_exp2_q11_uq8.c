@@ -394,7 +394,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
     kc[13] = _mm256_set1_epi16(0); /* L1 */
     kc[14] = _mm256_set1_epi16(0); /* L2 */
     kc[15] = _mm256_set1_epi16(0); /* Cl */
-    kc[16] = _mm256_set1_epi16(-32768); /* the low clamp */
+    kc[16] = _mm256_set1_epi16(0); /* the low clamp */
     kc[17] = _mm256_set1_epi16(16384); /* the high clamp */
     kc[18] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */
     for (int k = 19; k < 22; k++)
