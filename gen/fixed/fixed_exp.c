@@ -68,7 +68,7 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
  * 6, and the AVX-512 loop reads E from a 64-entry table (vpermi2w) where
  * the polynomial took four steps.  J = 6 (64-entry tables,
  * vpermi2w, a table U[j] = 2^(j/64) 2^15 and pmulhuw(U[j], E)) where J = 4
- * misses the bound.
+ * and 5 miss the bound (it has no AVX2 loop).
  * Every step is a 16-bit word; exp's x log2(e) to 2^-F (the error model
  * needs t to ~2^-19) is a 16x16 -> 32-bit product from a low/high pair,
  * plus the fraction's high half and one carry.  The error bound is taken
@@ -172,10 +172,11 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
         mpfr_clear(a);
         return -2;
     }
-    /* exp2 whose r = lo 2^-F has at most 5 bits (r = m 2^-Ei, m < 2^(Ei - J)):
-       the AVX-512 loop reads E from a 32-entry table of the polynomial's own
-       values (one vpermw on tb's low bits instead of two multiply-highs and
-       an add): the same bits as the plain-C steps, which AVX2 runs faster */
+    /* exp2 whose r = lo 2^-F has at most 5 bits (r = m 2^-Ei, m < 2^(Ei - J)),
+       or 6 with J < 6: the AVX-512 loop reads E from a 32- or 64-entry table
+       of the polynomial's own values (one vpermw or vpermi2w on tb's low
+       bits instead of a shift, two multiply-highs and an add): the same bits
+       as the plain-C steps and the AVX2 loop, which keep the polynomial */
     X->tet = base2 && (Ei - J <= 5 || (J != 6 && Ei - J == 6));
     if (X->tet) {
         int mb = Ei - J;
