@@ -52,21 +52,28 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
 
 /* ---- exact, 16-bit lanes: the table kernel (kind 1) ----
  *
- * T = (t + K0) 2^22 is held as two 16-bit words hi:lo: j = hi & 63 and
- * k + K0 = hi >> 6 pick 2^(j/64) and the power of two, r = lo is the rest,
- * in [0, 2^-6) at 2^-22.  2^t = 2^k 2^(j/64) 2^r: E = (2^r - 1) 2^22 from a
- * degree-2 polynomial (two unsigned multiply-highs), then N = 2^f 2^16 =
- * 2^16 + M with M = A[j] + round(U[j] E 2^-21 + residual of A[j]): one
- * rounding, as D[j] carries A[j]'s own rounding error (and the 1/2 of the
- * floor).  The result is round(N 2^-s) with s = 16 - Eo - k >= 1: the
- * 2^(16 - s) part is exact, so it is avg(M >> (s - 1), 0) + 2^(16 - s).
- * Every step is a 16-bit word; exp's x log2(e) to 2^-22 (the error model
- * needs t to ~2^-19; |x| has 15 bits and t 26) is a 16x16 -> 32-bit
- * product from a low/high pair, plus the fraction's high half and one
- * carry.  The error bound is taken over every clamped input: the kernel is
- * modelled here exactly as emitted (tab_eval), against 2^t in long double. */
-
-#define TAB_J 6 /* 64-entry tables: vpermi2w */
+ * T = (t + K0) 2^F, F = 16 + J, is held as two 16-bit words hi:lo: j = hi
+ * mod 2^J and k + K0 = hi >> J pick 2^(j/2^J) and the power of two, r = lo
+ * is the rest, in [0, 2^-J) at 2^-F.  2^t = 2^k 2^(j/2^J) 2^r: E = (2^r -
+ * 1) 2^F from a degree-2 polynomial (two unsigned multiply-highs), then
+ * N = 2^f 2^16 = 2^16 + M with M = A[j] + round(2^(j/2^J) E 2^-(F-16) +
+ * residual of A[j]): one rounding, as D[j] carries A[j]'s own rounding
+ * error (and the 1/2 of the floor).  The result is round(N 2^-s) with
+ * s = 16 - Eo - k >= 1: the 2^(16 - s) part is exact, so it is
+ * avg(M >> (s - 1), 0) + 2^(16 - s).
+ * J = 4 (16-entry tables) first: one vpermw per table on AVX-512BW, two
+ * vpshufb on AVX2; 2^(j/16) E is avg(E, pmulhuw(A[j], E)) (A = (2^(j/16) -
+ * 1) 2^16, so no table of 2^(j/16) itself).  exp2 whose r would have 7
+ * bits takes J = 5 (32 entries: one vpermw; four vpshufb on AVX2): r has
+ * 6, and the AVX-512 loop reads E from a 64-entry table (vpermi2w) where
+ * the polynomial took four steps.  J = 6 (64-entry tables,
+ * vpermi2w, a table U[j] = 2^(j/64) 2^15 and pmulhuw(U[j], E)) where J = 4
+ * and 5 miss the bound (it has no AVX2 loop).
+ * Every step is a 16-bit word; exp's x log2(e) to 2^-F (the error model
+ * needs t to ~2^-19) is a 16x16 -> 32-bit product from a low/high pair,
+ * plus the fraction's high half and one carry.  The error bound is taken
+ * over every clamped input: the kernel is modelled here exactly as
+ * emitted (tab_eval), against 2^t in long double. */
 
 /* the emitted integer pipeline for one clamped input: hi, lo, M, c, y */
 typedef struct {
@@ -76,12 +83,12 @@ typedef struct {
 static void tab_eval(const fx_gen *G, int base2, int64_t xc, tab_val *v)
 {
     const fx_exp_red *X = &G->exp;
-    int Ei = G->in.exp;
+    int Ei = G->in.exp, J = X->tj, F = 16 + J;
     uint16_t hi, lo;
     if (base2) {
         uint16_t tb = (uint16_t)((uint16_t)xc + (uint16_t)(X->tk0 << Ei));
-        hi = (uint16_t)(tb >> (Ei - TAB_J));
-        lo = (uint16_t)((uint32_t)tb << (16 - Ei + TAB_J));
+        hi = (uint16_t)(tb >> (Ei - J));
+        lo = (uint16_t)((uint32_t)tb << (16 - Ei + J));
     } else {
         uint16_t u = (uint16_t)((uint16_t)xc + (uint16_t)X->toff);
         uint32_t pr = (uint32_t)u * (uint32_t)X->tl1;
@@ -91,11 +98,15 @@ static void tab_eval(const fx_gen *G, int base2, int64_t xc, tab_val *v)
     }
     uint16_t g = (uint16_t)(X->tc1 + ((uint32_t)lo * (uint32_t)X->tc2 >> 16));
     uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
-    unsigned j = hi & 63u;
-    uint16_t w = (uint16_t)(((uint32_t)X->tu[j] * e >> 16) + X->td[j]);
-    uint32_t ms = (uint32_t)X->ta[j] + (w >> 5);
+    unsigned j = hi & ((1u << J) - 1);
+    uint16_t w;
+    if (J != 6) /* avg(E, pmulhuw(A, E)) + D */
+        w = (uint16_t)((((uint32_t)e + ((uint32_t)X->ta[j] * e >> 16) + 1u) >> 1) + X->td[j]);
+    else
+        w = (uint16_t)(((uint32_t)X->tu[j] * e >> 16) + X->td[j]);
+    uint32_t ms = (uint32_t)X->ta[j] + (w >> (F - 17));
     uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);
-    uint16_t kb = (uint16_t)(hi >> 6);
+    uint16_t kb = (uint16_t)(hi >> J);
     uint16_t c = (uint16_t)(X->tcc - kb);
     uint16_t y0 = (uint16_t)(((uint32_t)(c < 16 ? m >> c : 0) + 1u) >> 1);
     uint32_t ys = (uint32_t)y0 + X->tp[kb & 31u];
@@ -108,39 +119,43 @@ static void tab_eval(const fx_gen *G, int base2, int64_t xc, tab_val *v)
 
 static long double pow2l(long double t) { return exp2l(t); }
 
-/* 0: the kernel is set up and bounded (G->exp.t*); -2: not this type pair */
-static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
+/* 0: the kernel with 2^J-entry tables is set up and bounded below 1 lsb
+   (G->exp.t*); -2: not this type pair, or not within the bound */
+static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
 {
     fx_exp_red *X = &G->exp;
-    int Ei = G->in.exp, Eo = G->out.exp;
+    int Ei = G->in.exp, Eo = G->out.exp, F = 16 + J, NJ = 1 << J;
     if (!G->exact || G->in.storage_bits != 16 || !G->in.is_signed || G->out.storage_bits != 16 || G->out.is_signed ||
-        Ei < (base2 ? TAB_J : TAB_J + 1) || Ei > 15)
+        Ei < (base2 ? J : J + 1) || Ei > 15)
         return -2;
+    X->tj = J;
     long double l2e = 1.4426950408889634073599246810018921L;
-    /* tables: 2^(j/64) from MPFR */
+    /* tables: 2^(j/2^J) from MPFR */
     mpfr_t a, b;
     mpfr_init2(a, 256);
     mpfr_init2(b, 256);
-    for (int j = 0; j < 64; j++) {
+    memset(X->tu, 0, sizeof X->tu);
+    for (int j = 0; j < NJ; j++) {
         mpfr_set_si(a, j, MPFR_RNDN);
-        mpfr_div_2ui(a, a, TAB_J, MPFR_RNDN);
+        mpfr_div_2ui(a, a, (unsigned long)J, MPFR_RNDN);
         mpfr_exp2(a, a, MPFR_RNDN);                  /* T1 */
-        X->tu[j] = (uint16_t)scaled_int(a, 15, MPFR_RNDN);
+        if (J == 6)
+            X->tu[j] = (uint16_t)scaled_int(a, 15, MPFR_RNDN);
         mpfr_sub_ui(b, a, 1, MPFR_RNDN);
         mpfr_mul_2ui(b, b, 16, MPFR_RNDN);           /* (T1 - 1) 2^16 */
         int64_t A = scaled_int(b, 0, MPFR_RNDN);
         X->ta[j] = (uint16_t)A;
         mpfr_sub_si(b, b, (long)A, MPFR_RNDN);       /* residual in [-1/2, 1/2] */
         mpfr_add_d(b, b, 0.5, MPFR_RNDN);
-        X->td[j] = (uint16_t)scaled_int(b, 5, MPFR_RNDN);
+        X->td[j] = (uint16_t)scaled_int(b, F - 17, MPFR_RNDN);
     }
     mpfr_clear(b);
-    /* 2^r - 1 on [0, 2^-6]: minimax (absolute), p(0) = 1 */
+    /* 2^r - 1 on [0, 2^-J]: minimax (absolute), p(0) = 1 */
     fit_problem pb;
     memset(&pb, 0, sizeof pb);
     pb.g = g_exp2;
     pb.a = 0;
-    pb.b = (fit_real)1 / 64;
+    pb.b = (fit_real)1 / NJ;
     pb.order = 2;
     pb.errkind = FIT_ABS;
     pb.ncon = 1;
@@ -152,19 +167,20 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
         return -2;
     }
     X->tc1 = (int64_t)llroundl(ldexpl((long double)fp.c[1], 16));
-    X->tc2 = (int64_t)llroundl(ldexpl((long double)fp.c[2], 10));
+    X->tc2 = (int64_t)llroundl(ldexpl((long double)fp.c[2], 32 - F));
     if (X->tc1 + X->tc2 > 65535) {
         mpfr_clear(a);
         return -2;
     }
-    /* exp2 whose r = lo 2^-22 has at most 5 bits (r = m 2^-Ei, m < 2^(Ei - 6)):
-       the AVX-512 loop reads E from a 32-entry table of the polynomial's own
-       values (one vpermw on tb's low bits instead of two multiply-highs and
-       an add): the same bits as the plain-C steps, which AVX2 runs faster */
-    X->tet = base2 && Ei - TAB_J <= 5;
+    /* exp2 whose r = lo 2^-F has at most 5 bits (r = m 2^-Ei, m < 2^(Ei - J)),
+       or 6 with J < 6: the AVX-512 loop reads E from a 32- or 64-entry table
+       of the polynomial's own values (one vpermw or vpermi2w on tb's low
+       bits instead of a shift, two multiply-highs and an add): the same bits
+       as the plain-C steps and the AVX2 loop, which keep the polynomial */
+    X->tet = base2 && (Ei - J <= 5 || (J != 6 && Ei - J == 6));
     if (X->tet) {
-        int mb = Ei - TAB_J;
-        for (uint32_t i = 0; i < 32; i++) {
+        int mb = Ei - J;
+        for (uint32_t i = 0; i < 64; i++) {
             uint32_t lo = (uint16_t)((i & ((1u << mb) - 1)) << (16 - mb));
             uint16_t g = (uint16_t)(X->tc1 + (lo * (uint32_t)X->tc2 >> 16));
             X->te[i] = (uint16_t)(lo * g >> 16);
@@ -180,7 +196,7 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
         mpfr_set_ui(a, 1, MPFR_RNDN);
         mpfr_exp(a, a, MPFR_RNDN);
         mpfr_log2(a, a, MPFR_RNDN);
-        mpfr_mul_2si(a, a, 22 - Ei, MPFR_RNDN); /* L */
+        mpfr_mul_2si(a, a, F - Ei, MPFR_RNDN); /* L */
         int64_t Lf = scaled_int(a, 16, MPFR_RNDN);
         X->tl1 = Lf >> 16;
         X->tl2 = Lf & 0xffff;
@@ -189,13 +205,14 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
             return -2;
         }
         /* u = x + off in [0, 65535]; off such that off Lq - 1/2 is just
-           below a multiple of 2^22: the low word's constant Cl then keeps
+           below a multiple of 2^F: the low word's constant Cl then keeps
            q + Cl in 16 bits and the middle bits of the constant are 0 */
         int found = 0;
+        long double P2 = ldexpl(1, F);
         for (int64_t off = -xlo; off <= 65535 - xtop && !found; off++) {
             long double c = (long double)off * (long double)Lf / 65536.0L - 0.5L; /* off Lq - 1/2 */
-            int64_t K0 = (int64_t)ceill(c / 0x1p22L);
-            long double cl = (long double)K0 * 0x1p22L - c;
+            int64_t K0 = (int64_t)ceill(c / P2);
+            long double cl = (long double)K0 * P2 - c;
             int64_t Cl = (int64_t)llroundl(cl);
             if (Cl >= 0 && Cl <= 65536 - X->tl2) {
                 X->toff = off;
@@ -215,11 +232,14 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
     memset(X->tp, 0, sizeof X->tp);
     int64_t kbmin = INT64_MAX, kbmax = INT64_MIN;
     tab_val v;
+    X->tcarry0 = 0;
     for (int64_t x = xlo; x <= xtop; x++) {
         tab_eval(G, base2, x, &v);
-        int64_t kb = v.hi >> 6;
+        int64_t kb = v.hi >> J;
         kbmin = kb < kbmin ? kb : kbmin;
         kbmax = kb > kbmax ? kb : kbmax;
+        if (!base2 && ((uint32_t)(uint16_t)((uint16_t)x + (uint16_t)X->toff) * (uint32_t)X->tl1 & 0xffffu) == 0)
+            X->tcarry0 = 1; /* lo = q happens: the AVX2 carry needs its general form */
     }
     /* s >= 1 up to xhi; s = 0 (k + K0 = tcc + 1) only where the result
        saturates: P = 65535 there, and the saturating add gives 65535
@@ -227,7 +247,7 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
     int64_t kbhi = INT64_MIN;
     for (int64_t x = xlo; x <= xhi; x++) {
         tab_eval(G, base2, x, &v);
-        kbhi = (int64_t)(v.hi >> 6) > kbhi ? (int64_t)(v.hi >> 6) : kbhi;
+        kbhi = (int64_t)(v.hi >> J) > kbhi ? (int64_t)(v.hi >> J) : kbhi;
     }
     if (kbmax - kbmin >= 32 || kbhi > X->tcc || kbmax > X->tcc + 1 || X->tcc - kbmin > 31)
         return -2;
@@ -245,6 +265,7 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
     /* the bound: every clamped input, the pre-rounding value (2^16 + M) 2^-s
        against f(x) 2^Eo; with the kernel's and the reduction's parts */
     double worst = 0, kern = 0, red = 0, poly = 0;
+    long double PF = ldexpl(1, F);
     for (int64_t x = xlo; x <= xhi; x++) {
         tab_eval(G, base2, x, &v);
         long double t = base2 ? ldexpl((long double)x, -Ei) : (long double)x * l2e * ldexpl(1, -Ei);
@@ -252,83 +273,104 @@ static int prep_tab(fx_gen *G, int base2, char *err, size_t errlen)
         long double yp = ldexpl(65536.0L + v.m, -(int)(v.c + 1));
         double e = (double)fabsl(yp - yt);
         worst = e > worst ? e : worst;
-        long double T = (t + X->tk0) * 0x1p22L, Tc = (long double)v.hi * 65536 + v.lo;
+        long double T = (t + X->tk0) * PF, Tc = (long double)v.hi * 65536 + v.lo;
         double dr = (double)fabsl(Tc - T);
         red = dr > red ? dr : red;
-        long double mt = (pow2l(ldexpl((long double)((v.hi & 63u) * 65536u + v.lo), -22)) - 1) * 65536;
+        long double mt =
+            (pow2l(ldexpl((long double)((v.hi & (unsigned)(NJ - 1)) * 65536u + v.lo), -F)) - 1) * 65536;
         double dk = (double)fabsl((long double)v.m - mt);
         kern = dk > kern ? dk : kern;
     }
     for (uint32_t r = 0; r < 65536; r++) {
         uint16_t g = (uint16_t)(X->tc1 + (r * (uint32_t)X->tc2 >> 16));
         uint16_t e = (uint16_t)(r * g >> 16);
-        double d = (double)fabsl((long double)e - (pow2l(ldexpl((long double)r, -22)) - 1) * 0x1p22L);
+        double d = (double)fabsl((long double)e - (pow2l(ldexpl((long double)r, -F)) - 1) * PF);
         poly = d > poly ? d : poly;
     }
     X->terr = worst * (1 + 1e-9) + 1e-9; /* long double's own error: far below */
     X->tkern = kern;
     X->tred = red;
     X->tpoly = poly;
-    G->dred = ldexp(red, -22);
+    G->dred = ldexp(red, -F);
+    /* exact: the pre-rounding error and the final rounding's 1/2 below 1 lsb */
+    if (!(X->terr + 0.5 < 1 - 1e-6))
+        return -2;
     return 0;
 }
 
 static void tab_texts(fx_gen *G, int base2)
 {
     const fx_exp_red *X = &G->exp;
-    int Ei = G->in.exp, Eo = G->out.exp;
+    int Ei = G->in.exp, Eo = G->out.exp, J = X->tj, F = 16 + J, NJ = 1 << J;
     int smin = (int)(X->tcc - (X->khi + X->tk0)) + 1, smax = (int)(X->tcc - (X->klo + X->tk0)) + 1;
     long long xtop = (long long)(X->sat ? X->xsat : X->xhi);
     if (base2)
         snprintf(G->red_text, sizeof G->red_text,
-                 "t = x; T = (t + %lld) 2^22 = hi 2^16 + lo from the stored integer biased by %lld 2^%d (exact): "
-                 "j = hi & 63, k + %lld = hi >> 6, r = lo 2^-22 in [0, 2^-6), t = k + j/64 + r; inputs clamped to "
+                 "t = x; T = (t + %lld) 2^%d = hi 2^16 + lo from the stored integer biased by %lld 2^%d (exact): "
+                 "j = hi & %d, k + %lld = hi >> %d, r = lo 2^-%d in [0, 2^-%d), t = k + j/%d + r; inputs clamped to "
                  "[%lld, %lld] (stored)%s",
-                 (long long)X->tk0, (long long)X->tk0, Ei, (long long)X->tk0, (long long)X->xlo, xtop,
-                 X->sat ? ", the last one saturating" : "");
+                 (long long)X->tk0, F, (long long)X->tk0, Ei, NJ - 1, (long long)X->tk0, J, F, J, NJ,
+                 (long long)X->xlo, xtop, X->sat ? ", the last one saturating" : "");
     else
         snprintf(G->red_text, sizeof G->red_text,
-                 "t = x log2(e); T = (t + %lld) 2^22 = hi 2^16 + lo in two 16-bit words: u = x + %lld (a uint16_t), "
+                 "t = x log2(e); T = (t + %lld) 2^%d = hi 2^16 + lo in two 16-bit words: u = x + %lld (a uint16_t), "
                  "T = u L1 + floor(u L2 2^-16) + %lld with L = log2(e) 2^%d = L1 + L2 2^-16, L1 = %lld, L2 = %lld "
                  "(MPFR, rounded to 2^-16), u L1 from a low/high product pair and the low word's carry into hi by an "
-                 "unsigned compare; j = hi & 63, k + %lld = hi >> 6, r = lo 2^-22 in [0, 2^-6); inputs clamped to "
-                 "[%lld, %lld] (stored)%s; |error of T| <= %.3f 2^-22 (every clamped input)",
-                 (long long)X->tk0, (long long)X->toff, (long long)X->tcl, 22 - Ei, (long long)X->tl1,
-                 (long long)X->tl2, (long long)X->tk0, (long long)X->xlo, xtop,
-                 X->sat ? ", the last one saturating" : "", X->tred);
+                 "unsigned compare; j = hi & %d, k + %lld = hi >> %d, r = lo 2^-%d in [0, 2^-%d); inputs clamped to "
+                 "[%lld, %lld] (stored)%s; |error of T| <= %.3f 2^-%d (every clamped input)",
+                 (long long)X->tk0, F, (long long)X->toff, (long long)X->tcl, F - Ei, (long long)X->tl1,
+                 (long long)X->tl2, NJ - 1, (long long)X->tk0, J, F, J, (long long)X->xlo, xtop,
+                 X->sat ? ", the last one saturating" : "", X->tred, F);
     snprintf(G->alt_domain, sizeof G->alt_domain,
-             "2^r - 1 on r in [0, 2^-6]; 2^(j/64) for j in [0, 63] from tables (2^t = 2^k 2^(j/64) 2^r)");
+             "2^r - 1 on r in [0, 2^-%d]; 2^(j/%d) for j in [0, %d] from tables (2^t = 2^k 2^(j/%d) 2^r)", J, NJ,
+             NJ - 1, NJ);
     snprintf(G->alt_order, sizeof G->alt_order,
-             "2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and three 64-entry tables of 2^(j/64); "
-             "uint16_t words: 16-bit lanes");
+             "2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and %s %d-entry tables of 2^(j/%d); "
+             "uint16_t words: 16-bit lanes",
+             J != 6 ? "two" : "three", NJ, NJ);
     snprintf(G->alt_method, sizeof G->alt_method,
-             "minimax absolute error of 2^r on [0, 2^-6] (nlopt SLSQP, epigraph form), c1 and c2 rounded to nearest "
-             "at 2^-16 and 2^-10 (their multiply-highs' lsbs); tables rounded to nearest from MPFR (256 bits): "
-             "A[j] = (2^(j/64) - 1) 2^16, U[j] = 2^(j/64) 2^15, D[j] = (A[j]'s residual + 1/2) 2^5");
+             "minimax absolute error of 2^r on [0, 2^-%d] (nlopt SLSQP, epigraph form), c1 and c2 rounded to nearest "
+             "at 2^-16 and 2^-%d (their multiply-highs' lsbs); tables rounded to nearest from MPFR (256 bits): "
+             "A[j] = (2^(j/%d) - 1) 2^16, %sD[j] = (A[j]'s residual + 1/2) 2^%d",
+             J, 32 - F, NJ, J != 6 ? "" : "U[j] = 2^(j/64) 2^15, ", F - 17);
     snprintf(G->alt_con, sizeof G->alt_con, "p(0) = 1 (2^r - 1 has no constant term; exact at r = 0)");
+    char avgt[64];
+    snprintf(avgt, sizeof avgt, "avg(E, pmulhuw(A[j], E)) (= 2^(j/%d) E 2^-1, pavgw)", NJ);
     snprintf(G->alt_formats, sizeof G->alt_formats,
-             "r uint16_t at 2^-22; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^22 (floors; c1 = %lld, c2 = %lld); "
-             "M = A[j] + ((pmulhuw(U[j], E) + D[j]) >> 5), saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of "
+             "r uint16_t at 2^-%d; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^%d (floors; c1 = %lld, c2 = %lld); "
+             "M = A[j] + ((%s + D[j]) >> %d), saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of "
              "the sum, D carrying A's); result round((2^16 + M) 2^-s), s = %d - k in [%d, %d], as avg(M >> (s - 1), 0) "
              "(pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the saturating add gives the max "
-             "there, at the clamped top input)",
-             (long long)X->tc1, (long long)X->tc2, 16 - Eo, smin, smax);
+             "there, at the clamped top input)%s",
+             F, F, (long long)X->tc1, (long long)X->tc2,
+             J != 6 ? avgt : "pmulhuw(U[j], E)", F - 17, 16 - Eo,
+             smin, smax,
+             J != 6 ? "; AVX2: round(M 2^-s) + P as avg(Q, pmulhuw(M, Q)) with Q = 2^(17 - s) for s >= 2 (vpshufb "
+                      "table, 0 from s = 18), and 2^15 + avg(M, 0) (saturating) at s = 1: the same values"
+                    : "");
     snprintf(G->alt_poly, sizeof G->alt_poly,
-             "E within %.3f of (2^r - 1) 2^22 for every r (polynomial and floors, all 2^16 r); M within %.4f of "
+             "E within %.3f of (2^r - 1) 2^%d for every r (polynomial and floors, all 2^16 r); M within %.4f of "
              "(2^f - 1) 2^16 for every input's (j, r)",
-             X->tpoly, X->tkern);
-    snprintf(G->wide_text, sizeof G->wide_text,
-             "16-bit words throughout%s; lookups (vpermi2w, vpermw) and the per-element shift (vpsrlvw) in "
-             "16-bit lanes by AVX-512BW intrinsics (x86-64-v4); other clones, scalar form: the same steps in "
-             "plain C",
-             base2 ? "" : ", x log2(e) to 2^-22 (the bound needs ~2^-19) a 16x16 -> 32-bit product (pmullw, "
-                          "pmulhuw) plus a carry");
+             X->tpoly, F, X->tkern);
+    if (J != 6)
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 "16-bit words throughout%s; AVX-512BW (x86-64-v4): lookups vpermw, the shift vpsrlvw; AVX2 "
+                 "(x86-64-v3): a lookup two vpshufb and a vpblendvb, the shift a pmulhuw by 2^(17 - s); the "
+                 "default clone, scalar form: the same steps in plain C",
+                 base2 ? "" : ", x log2(e) to 2^-20 a 16x16 -> 32-bit product (pmullw, pmulhuw) plus a carry");
+    else
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 "16-bit words throughout%s; lookups (vpermi2w, vpermw) and the per-element shift (vpsrlvw) in "
+                 "16-bit lanes by AVX-512BW intrinsics (x86-64-v4); other clones, scalar form: the same steps in "
+                 "plain C",
+                 base2 ? "" : ", x log2(e) to 2^-22 (the bound needs ~2^-19) a 16x16 -> 32-bit product (pmullw, "
+                              "pmulhuw) plus a carry");
     if (X->tet) { /* exp2, r of <= 5 bits: the AVX-512 loop reads E from a table */
         size_t o = strlen(G->alt_formats);
         snprintf(G->alt_formats + o, sizeof G->alt_formats - o,
-                 "; r has %d bits (r = m 2^-%d): the AVX-512 loop reads E from a 32-entry table of these same "
-                 "values (vpermw on the biased input's low bits)",
-                 Ei - TAB_J, Ei);
+                 "; r has %d bits (r = m 2^-%d): the AVX-512 loop reads E from a %d-entry table of these same "
+                 "values (%s on the biased input's low bits)",
+                 Ei - J, Ei, Ei - J == 6 ? 64 : 32, Ei - J == 6 ? "vpermi2w" : "vpermw");
     }
     snprintf(G->alt_arith, sizeof G->alt_arith,
              "integers only (no floating point, no <math.h>); the steps before the result floor (unsigned "
@@ -354,9 +396,9 @@ static long long s16(int64_t v) { return (long long)(int16_t)(uint16_t)v; }
 static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int base2)
 {
     const fx_exp_red *X = &G->exp;
-    int Ei = G->in.exp;
+    int Ei = G->in.exp, J = X->tj, F = 16 + J, NJ = 1 << J;
     const char *N = G->name;
-    char w[64];
+    char w[64], what[160];
     const char *kl = NULL, *kh = NULL;
     if (X->loclamp) {
         snprintf(w, sizeof w, "%lld: lowest input computed (clamp)", (long long)X->xlo);
@@ -368,9 +410,13 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     }
     if (!kl && !kh)
         fx_k16(G, 0, "0 (unused: no clamp)");
-    tab_table(tabs, N, "ta", X->ta, 64, "A[j] = round((2^(j/64) - 1) 2^16) (MPFR)");
-    tab_table(tabs, N, "tu", X->tu, 64, "U[j] = round(2^(j/64) 2^15) (MPFR)");
-    tab_table(tabs, N, "td", X->td, 64, "D[j] = round(((2^(j/64) - 1) 2^16 - A[j] + 1/2) 2^5), in [0, 32] (MPFR)");
+    snprintf(what, sizeof what, "A[j] = round((2^(j/%d) - 1) 2^16) (MPFR)", NJ);
+    tab_table(tabs, N, "ta", X->ta, NJ, what);
+    if (J == 6)
+        tab_table(tabs, N, "tu", X->tu, NJ, "U[j] = round(2^(j/64) 2^15) (MPFR)");
+    snprintf(what, sizeof what, "D[j] = round(((2^(j/%d) - 1) 2^16 - A[j] + 1/2) 2^%d), in [0, %d] (MPFR)", NJ, F - 17,
+             1 << (F - 17));
+    tab_table(tabs, N, "td", X->td, NJ, what);
     tab_table(tabs, N, "tp", X->tp, 32, "P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range)");
     pf_put(body, "    int16_t xc = (int16_t)x;\n");
     if (kl)
@@ -379,13 +425,13 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_printf(body, "    xc = (int16_t)(xc > %s ? %s : xc); /* %lld */\n", kh, kh, (long long)X->xsat);
     else
         pf_put(body, "    (void)k;\n");
-    pf_printf(body, "    /* T = (t + %lld) 2^22 = hi 2^16 + lo: j = hi & 63, k + %lld = hi >> 6, r = lo 2^-22 */\n",
-              (long long)X->tk0, (long long)X->tk0);
+    pf_printf(body, "    /* T = (t + %lld) 2^%d = hi 2^16 + lo: j = hi & %d, k + %lld = hi >> %d, r = lo 2^-%d */\n",
+              (long long)X->tk0, F, NJ - 1, (long long)X->tk0, J, F);
     if (base2) {
         pf_printf(body, "    uint16_t tb = (uint16_t)((uint16_t)xc + %lluu); /* (t + %lld) 2^%d */\n",
                   (unsigned long long)(uint16_t)(X->tk0 << Ei), (long long)X->tk0, Ei);
-        pf_printf(body, "    uint16_t hi = (uint16_t)(tb >> %d);\n", Ei - TAB_J);
-        pf_printf(body, "    uint16_t lo = (uint16_t)((uint32_t)tb << %d);\n", 16 - Ei + TAB_J);
+        pf_printf(body, "    uint16_t hi = (uint16_t)(tb >> %d);\n", Ei - J);
+        pf_printf(body, "    uint16_t lo = (uint16_t)((uint32_t)tb << %d);\n", 16 - Ei + J);
     } else {
         pf_printf(body, "    uint16_t u = (uint16_t)((uint16_t)xc + %lluu);\n", (unsigned long long)(uint16_t)X->toff);
         pf_printf(body, "    uint32_t pr = (uint32_t)u * %lldu; /* u L1: pmullw, pmulhuw */\n", (long long)X->tl1);
@@ -394,101 +440,333 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(body, "    uint16_t lo = (uint16_t)(pr + q);\n");
         pf_put(body, "    uint16_t hi = (uint16_t)((pr >> 16) + (lo < q)); /* the carry */\n");
     }
-    pf_printf(body, "    /* E = (2^r - 1) 2^22 = r (c1 + c2 r), floors */\n"
+    pf_printf(body, "    /* E = (2^r - 1) 2^%d = r (c1 + c2 r), floors */\n"
                     "    uint16_t g = (uint16_t)(%lldu + ((uint32_t)lo * %lldu >> 16));\n"
                     "    uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);\n",
-              (long long)X->tc1, (long long)X->tc2);
-    pf_printf(body, "    /* M = (2^(j/64 + r) - 1) 2^16, one rounding: A[j] + round(U[j] E 2^-21 + A[j]'s residual) */\n"
-                    "    unsigned j = hi & 63u;\n"
-                    "    uint16_t v = (uint16_t)(((uint32_t)%s_tu[j] * e >> 16) + %s_td[j]);\n"
-                    "    uint32_t ms = (uint32_t)%s_ta[j] + (uint32_t)(v >> 5);\n"
-                    "    uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);\n",
-              N, N, N);
+              F, (long long)X->tc1, (long long)X->tc2);
+    if (J != 6)
+        pf_printf(body, "    /* M = (2^(j/%d + r) - 1) 2^16, one rounding: A[j] + round(2^(j/%d) E 2^-%d + A[j]'s residual),\n"
+                        "       2^(j/%d) E 2^-1 = avg(E, pmulhuw(A[j], E)) (pavgw) */\n"
+                        "    unsigned j = hi & %du;\n"
+                        "    uint16_t v = (uint16_t)((((uint32_t)e + ((uint32_t)%s_ta[j] * e >> 16) + 1u) >> 1) + %s_td[j]);\n"
+                        "    uint32_t ms = (uint32_t)%s_ta[j] + (uint32_t)(v >> %d);\n"
+                        "    uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);\n",
+                  NJ, NJ, F - 16, NJ, NJ - 1, N, N, N, F - 17);
+    else
+        pf_printf(body, "    /* M = (2^(j/64 + r) - 1) 2^16, one rounding: A[j] + round(U[j] E 2^-21 + A[j]'s residual) */\n"
+                        "    unsigned j = hi & 63u;\n"
+                        "    uint16_t v = (uint16_t)(((uint32_t)%s_tu[j] * e >> 16) + %s_td[j]);\n"
+                        "    uint32_t ms = (uint32_t)%s_ta[j] + (uint32_t)(v >> 5);\n"
+                        "    uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);\n",
+                  N, N, N);
     pf_printf(body, "    /* round((2^16 + M) 2^-s), s = c + 1 >= 1: avg(M >> c, 0) + 2^(16 - s) */\n"
-                    "    uint16_t kb = (uint16_t)(hi >> 6);\n"
+                    "    uint16_t kb = (uint16_t)(hi >> %d);\n"
                     "    uint16_t c = (uint16_t)(%lld - kb); /* in [0, %lld]; wraps at s = 0 (saturated by P) */\n"
                     "    uint16_t y0 = (uint16_t)(((uint32_t)(c < 16 ? m >> c : 0) + 1u) >> 1); /* pavgw; vpsrlvw's 0 */\n"
                     "    uint32_t ys = (uint32_t)y0 + %s_tp[kb & 31u];\n"
                     "    uint16_t r16 = (uint16_t)(ys < 65535u ? ys : 65535u);\n",
-              (long long)X->tcc, (long long)(X->tcc - (X->klo + X->tk0)), N);
+              J, (long long)X->tcc, (long long)(X->tcc - (X->klo + X->tk0)), N);
     pf_printf(body, "    return (%s)r16;", G->ot);
     /* the AVX-512BW loop: the same steps on 32 lanes */
     const char *cond = "#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)\n";
     pf_printf(kern,
               "\n\n/* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn\n"
-              "   the table lookups into vpermi2w/vpermw (nor the carry into a mask): the\n"
+              "   the table lookups into %s (nor the carry into a mask): the\n"
               "   array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the\n"
               "   rest of the array and the other clones use the scalar steps above.  The\n"
               "   same values (pfmathgen sweeps the array form on its machine against the\n"
               "   scalar one). */\n%s#include <immintrin.h>\n"
               "extern %s %s(%s x); /* the scalar form, for the last n %% 32 */\n"
-              "/* 32 table entries as 16-bit words, for vpermw/vpermi2w */\n"
+              "/* 32 table entries as 16-bit words, for vpermw%s */\n"
               "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16(const uint32_t *t)\n{\n"
               "    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),\n"
-              "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n"
-              "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
-              "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
-              cond, G->ot, N, G->it, N, N, G->it, G->ot);
-    if (X->tet) {
+              "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n",
+              J != 6 && !(X->tet && Ei - J == 6) ? "vpermw" : "vpermi2w/vpermw", cond, G->ot, N, G->it,
+              J != 6 && !(X->tet && Ei - J == 6) ? "" : "/vpermi2w", N);
+    if (J == 4)
+        pf_printf(kern, "/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: hi's low 4 are j) */\n"
+                        "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16b(const uint32_t *t)\n{\n"
+                        "    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));\n}\n",
+                  N);
+    pf_printf(kern, "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
+                    "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
+              N, G->it, G->ot);
+    /* exp2 with J = 5 and E from a 64-entry table: the loop runs on
+       tbn = CB - x = (c + 1) 2^Ei - 1 - (tb mod 2^Ei), whose top bits are
+       c = s - 1 itself (no vpsubw for the shift count) and whose low bits
+       index the tables reversed; the clamped top input (s = 0) wraps to
+       c = 31 mod 32, the max.  Where every c of the other inputs is at
+       most 30 */
+    int cmpl = base2 && X->tet && J == 5 && Ei - J == 6;
+    int64_t CB = (X->tcc + 1 - X->tk0) * ((int64_t)1 << Ei) - 1;
+    if (cmpl) {
+        int64_t xtop = X->sat ? X->xsat : X->xhi;
+        for (int64_t x = X->xlo; x <= xtop && cmpl; x++) {
+            int64_t tn = CB - x;
+            if (x <= X->xhi ? tn < 0 || tn > 65535 || (tn >> Ei) > 30 : ((uint16_t)tn >> Ei) % 32 != 31)
+                cmpl = 0;
+        }
+    }
+    if (cmpl) {
+        uint16_t rv[64];
+        pf_buf t = {0};
+        for (int i = 0; i < 64; i++)
+            rv[i] = X->te[63 - i];
+        tab_table(&t, N, "ter", rv, 64, "E[63 - i] (tbn's low 6 bits are 63 - r's)");
+        for (int i = 0; i < 32; i++)
+            rv[i] = X->ta[31 - i];
+        tab_table(&t, N, "tar", rv, 32, "A[31 - i] (j = 31 - (tbn >> 6) mod 32)");
+        for (int i = 0; i < 32; i++)
+            rv[i] = X->td[31 - i];
+        tab_table(&t, N, "tdr", rv, 32, "D[31 - i]");
+        for (int i = 0; i < 32; i++) {
+            int64_t kb = X->tcc - i;
+            rv[i] = (uint16_t)(i == 31 ? (X->sat ? 65535 : 0) : kb >= X->klo + X->tk0 ? X->tp[kb & 31] : 0);
+        }
+        tab_table(&t, N, "tpr", rv, 32, "P at c = s - 1 = i (P[(k + K0) & 31] above, k + K0 = tcc - c); 31: s = 0");
+        pf_put(kern, t.s);
+        free(t.s);
+        pf_printf(kern, "    const __m512i ta = %s_w16(%s_tar), td = %s_w16(%s_tdr), tp = %s_w16(%s_tpr);\n"
+                        "    const __m512i te0 = %s_w16(%s_ter), te1 = %s_w16(%s_ter + 32);\n"
+                        "    const __m512i cb = _mm512_set1_epi16(%lld); /* CB = (tcc + 1 - K0) 2^%d - 1 */\n",
+                  N, N, N, N, N, N, N, N, N, N, s16(CB), Ei);
+        if (X->loclamp)
+            pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
+        if (X->sat)
+            pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
+        pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
+                     "        __m512i xc = _mm512_loadu_si512(x + i);\n");
+        if (X->loclamp)
+            pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
+        if (X->sat)
+            pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
+        pf_printf(kern, "        __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^%d - 1 - (tb mod 2^%d) */\n"
+                        "        __m512i hn = _mm512_srli_epi16(tn, %d), e = _mm512_permutex2var_epi16(te0, tn, te1);\n"
+                        "        __m512i a = _mm512_permutexvar_epi16(hn, ta);\n"
+                        "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
+                        "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));\n"
+                        "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
+                        "        __m512i c = _mm512_srli_epi16(tn, %d);\n"
+                        "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());\n"
+                        "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));\n"
+                        "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+                  Ei, Ei, Ei - J, F - 17, Ei, N);
+    }
+    if (X->tet && !cmpl) {
         pf_buf te = {0};
-        tab_table(&te, N, "te", X->te, 32,
-                  "E[i] = the polynomial's E at r = (i mod 2^(Ei - 6)) 2^-Ei (the plain-C steps' values)");
+        snprintf(what, sizeof what, "E[i] = the polynomial's E at r = (i mod 2^(Ei - %d)) 2^-Ei (the plain-C steps' values)",
+                 J);
+        tab_table(&te, N, "te", X->te, Ei - J == 6 ? 64 : 32, what);
         pf_put(kern, te.s);
         free(te.s);
     }
-    pf_printf(kern, "    const __m512i ta0 = %s_w16(%s_ta), ta1 = %s_w16(%s_ta + 32);\n"
-                    "    const __m512i tu0 = %s_w16(%s_tu), tu1 = %s_w16(%s_tu + 32);\n"
-                    "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
-                    "    const __m512i tp = %s_w16(%s_tp);\n",
-              N, N, N, N, N, N, N, N, N, N, N, N, N, N);
-    if (X->tet)
-        pf_printf(kern, "    const __m512i te = %s_w16(%s_te);\n", N, N);
-    if (X->tet)
-        pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(X->tcc));
-    else
-    pf_printf(kern, "    const __m512i c1 = _mm512_set1_epi16(%lld), c2 = _mm512_set1_epi16(%lld), cc = _mm512_set1_epi16(%lld);\n",
-              s16(X->tc1), s16(X->tc2), s16(X->tcc));
-    if (base2)
-        pf_printf(kern, "    const __m512i bias = _mm512_set1_epi16(%lld);\n", s16(X->tk0 << Ei));
-    else
-        pf_printf(kern, "    const __m512i off = _mm512_set1_epi16(%lld), l1 = _mm512_set1_epi16(%lld), l2 = _mm512_set1_epi16(%lld),\n"
-                        "                  cl = _mm512_set1_epi16(%lld), one = _mm512_set1_epi16(1);\n",
-                  s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl));
-    if (X->loclamp)
-        pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
-    if (X->sat)
-        pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
-    pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
-                 "        __m512i xc = _mm512_loadu_si512(x + i);\n");
-    if (X->loclamp)
-        pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
-    if (X->sat)
-        pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
-    if (base2 && X->tet)
-        pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                        "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
-                  Ei - TAB_J);
-    else if (base2)
-        pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                        "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
-                  Ei - TAB_J, 16 - Ei + TAB_J);
-    else
-        pf_put(kern, "        __m512i u = _mm512_add_epi16(xc, off);\n"
-                     "        __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);\n"
-                     "        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);\n"
-                     "        __m512i hi = _mm512_mulhi_epu16(u, l1);\n"
-                     "        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);\n");
-    if (!X->tet)
-        pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n");
-    pf_put(kern, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
-                 "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
-                 "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
-                 "        __m512i kb = _mm512_srli_epi16(hi, 6);\n"
-                 "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
-                 "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
-    pf_printf(kern, "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-              N);
+    if (!cmpl) {
+        if (J == 5)
+            pf_printf(kern, "    const __m512i ta = %s_w16(%s_ta), td = %s_w16(%s_td);\n"
+                            "    const __m512i tp = %s_w16(%s_tp);\n",
+                      N, N, N, N, N, N);
+        else if (J == 4)
+            pf_printf(kern, "    const __m512i ta = %s_w16b(%s_ta), td = %s_w16b(%s_td);\n"
+                            "    const __m512i tp = %s_w16(%s_tp);\n",
+                      N, N, N, N, N, N);
+        else
+            pf_printf(kern, "    const __m512i ta0 = %s_w16(%s_ta), ta1 = %s_w16(%s_ta + 32);\n"
+                            "    const __m512i tu0 = %s_w16(%s_tu), tu1 = %s_w16(%s_tu + 32);\n"
+                            "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
+                            "    const __m512i tp = %s_w16(%s_tp);\n",
+                      N, N, N, N, N, N, N, N, N, N, N, N, N, N);
+        if (X->tet && Ei - J == 6)
+            pf_printf(kern, "    const __m512i te0 = %s_w16(%s_te), te1 = %s_w16(%s_te + 32);\n", N, N, N, N);
+        else if (X->tet)
+            pf_printf(kern, "    const __m512i te = %s_w16(%s_te);\n", N, N);
+        if (X->tet)
+            pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(X->tcc));
+        else
+        pf_printf(kern, "    const __m512i c1 = _mm512_set1_epi16(%lld), c2 = _mm512_set1_epi16(%lld), cc = _mm512_set1_epi16(%lld);\n",
+                  s16(X->tc1), s16(X->tc2), s16(X->tcc));
+        if (base2)
+            pf_printf(kern, "    const __m512i bias = _mm512_set1_epi16(%lld);\n", s16(X->tk0 << Ei));
+        else
+            pf_printf(kern, "    const __m512i off = _mm512_set1_epi16(%lld), l1 = _mm512_set1_epi16(%lld), l2 = _mm512_set1_epi16(%lld),\n"
+                            "                  cl = _mm512_set1_epi16(%lld), one = _mm512_set1_epi16(1);\n",
+                      s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl));
+        if (X->loclamp)
+            pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
+        if (X->sat)
+            pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
+        pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
+                     "        __m512i xc = _mm512_loadu_si512(x + i);\n");
+        if (X->loclamp)
+            pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
+        if (X->sat)
+            pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
+        if (base2 && X->tet && Ei - J == 6)
+            pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                            "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutex2var_epi16(te0, tb, te1);\n",
+                      Ei - J);
+        else if (base2 && X->tet)
+            pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                            "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
+                      Ei - J);
+        else if (base2)
+            pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+                            "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
+                      Ei - J, 16 - Ei + J);
+        else
+            pf_put(kern, "        __m512i u = _mm512_add_epi16(xc, off);\n"
+                         "        __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);\n"
+                         "        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);\n"
+                         "        __m512i hi = _mm512_mulhi_epu16(u, l1);\n"
+                         "        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);\n");
+        if (!X->tet)
+            pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n");
+        if (J != 6)
+            pf_printf(kern, "        __m512i a = _mm512_permutexvar_epi16(hi, ta);\n"
+                            "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
+                            "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));\n"
+                            "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
+                            "        __m512i kb = _mm512_srli_epi16(hi, %d);\n",
+                      F - 17, J);
+        else
+            pf_put(kern, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
+                         "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
+                         "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
+                         "        __m512i kb = _mm512_srli_epi16(hi, 6);\n");
+        pf_put(kern, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
+                     "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
+        pf_printf(kern, "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+                  N);
+    }
     G->bw16 = 2;
+    if (J == 6)
+        return;
+    /* AVX2: no vpermw, no 16-bit per-element shift, no unsigned compare
+       into a mask.  A 16-entry table of words is two vpshufb (its low and
+       high bytes) merged by vpblendvb; D (< 256) one vpshufb.  The scaling
+       round((2^16 + M) 2^-s) is avg(Q, pmulhuw(M, Q)) with Q = 2^(17 - s)
+       for s in [2, 17] (a vpshufb table on s - 2; from s = 18 the index
+       passes 0x7f and vpshufb gives 0, as the scalar's P does), and
+       2^15 + avg(M, 0) (saturating) at s = 1: both equal avg(M >> (s - 1),
+       0) + P[k] of the scalar form */
+    pf_buf tb5 = {0};
+    if (J == 4)
+        pf_printf(&tb5, "    uint8_t b[5][16]; /* A's low, high bytes, D, Q's low, high bytes (Q[i] = 2^(15 - i)) */\n"
+                        "    for (int k = 0; k < 16; k++) {\n"
+                        "        b[0][k] = (uint8_t)%s_ta[k];\n"
+                        "        b[1][k] = (uint8_t)(%s_ta[k] >> 8);\n"
+                        "        b[2][k] = (uint8_t)%s_td[k];\n"
+                        "        b[3][k] = (uint8_t)(32768u >> k);\n"
+                        "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
+                        "    }\n",
+                  N, N, N);
+    else
+        pf_printf(&tb5, "    uint8_t b[8][16]; /* A's low, high bytes, D (entries 0-15), Q's low, high bytes (Q[i] =\n"
+                        "                         2^(15 - i)); A's low, high bytes, D (entries 16-31) */\n"
+                        "    for (int k = 0; k < 16; k++) {\n"
+                        "        b[0][k] = (uint8_t)%s_ta[k];\n"
+                        "        b[1][k] = (uint8_t)(%s_ta[k] >> 8);\n"
+                        "        b[2][k] = (uint8_t)%s_td[k];\n"
+                        "        b[3][k] = (uint8_t)(32768u >> k);\n"
+                        "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
+                        "        b[5][k] = (uint8_t)%s_ta[k + 16];\n"
+                        "        b[6][k] = (uint8_t)(%s_ta[k + 16] >> 8);\n"
+                        "        b[7][k] = (uint8_t)%s_td[k + 16];\n"
+                        "    }\n",
+                  N, N, N, N, N, N);
+    const char *k18 = J == 4 ? "    kc[18] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */\n"
+                             : "    kc[18] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */\n"
+                               "    for (int k = 19; k < 22; k++)\n"
+                               "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));\n";
+    pf_printf(kern,
+              "\n\n/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16\n"
+              "   words is two vpshufb (its low and its high bytes) merged by vpblendvb;\n"
+              "   no 16-bit per-element shift: round((2^16 + M) 2^-s) = avg(Q, pmulhuw(M, Q))\n"
+              "   with Q = 2^(17 - s) for s >= 2 (a vpshufb table, 0 from s = 18), and\n"
+              "   2^15 + avg(M, 0) at s = 1.  The same values. */\n%s"
+              "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
+              "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+              "%s"
+              "    /* the constants in memory GCC cannot see through: with 16 ymm registers it\n"
+              "       would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside\n"
+              "       the loop, where a memory operand costs nothing */\n"
+              "    __m256i kc[%d];\n"
+              "    for (int k = 0; k < 5; k++)\n"
+              "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));\n"
+              "    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */\n"
+              "    kc[6] = _mm256_set1_epi16(0x101);\n"
+              "    kc[7] = _mm256_set1_epi16(-32768);\n"
+              "    kc[8] = _mm256_set1_epi16(%lld); /* c1 */\n"
+              "    kc[9] = _mm256_set1_epi16(%lld); /* c2 */\n"
+              "    kc[10] = _mm256_set1_epi16(%lld); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */\n"
+              "    kc[11] = _mm256_set1_epi16(%lld); /* kb at s = 1 */\n"
+              "    kc[12] = _mm256_set1_epi16(%lld); /* off, or the bias (exp2) */\n"
+              "    kc[13] = _mm256_set1_epi16(%lld); /* L1 */\n"
+              "    kc[14] = _mm256_set1_epi16(%lld); /* L2 */\n"
+              "    kc[15] = _mm256_set1_epi16(%lld); /* Cl */\n"
+              "    kc[16] = _mm256_set1_epi16(%lld); /* the low clamp */\n"
+              "    kc[17] = _mm256_set1_epi16(%lld); /* the high clamp */\n"
+              "%s"
+              "    __asm__(\"\" : : \"r\"(kc) : \"memory\");\n"
+              "    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];\n"
+              "    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];\n"
+              "    const __m256i %s = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];\n"
+              "    const __m256i j16 = kc[18];\n%s"
+              "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
+              cond, N, G->it, G->ot, tb5.s, J == 4 ? 19 : 22, s16(X->tc1), s16(X->tc2), s16(X->tcc - 1 + 0x70), s16(X->tcc),
+              base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
+              X->loclamp ? s16(X->xlo) : 0, X->sat ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
+              J == 4 ? "" : "    const __m256i al1 = kc[19], ah1 = kc[20], dt1 = kc[21];\n");
+    free(tb5.s);
+    pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
+                 "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
+    if (X->loclamp)
+        pf_put(kern, "        xc = _mm256_max_epi16(xc, xlo);\n");
+    if (X->sat)
+        pf_put(kern, "        xc = _mm256_min_epi16(xc, xhi);\n");
+    if (base2)
+        pf_printf(kern, "        __m256i tb = _mm256_add_epi16(xc, bias);\n"
+                        "        __m256i hi = _mm256_srli_epi16(tb, %d), lo = _mm256_slli_epi16(tb, %d);\n",
+                  Ei - J, 16 - Ei + J);
+    else {
+        pf_put(kern, "        __m256i u = _mm256_add_epi16(xc, off);\n"
+                     "        __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);\n"
+                     "        __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);\n");
+        if (X->tcarry0)
+            pf_put(kern, "        /* the carry, lo < q: lo <= q and lo != q */\n"
+                         "        __m256i cy = _mm256_andnot_si256(_mm256_cmpeq_epi16(lo, q), _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q));\n");
+        else
+            pf_put(kern, "        /* the carry, lo < q: lo <= q (lo = q occurs for no input) */\n"
+                         "        __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);\n");
+        pf_put(kern, "        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);\n");
+    }
+    pf_put(kern, "        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));\n");
+    if (J == 4)
+        pf_put(kern, "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 12), j16); /* j in both bytes */\n"
+                     "        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);\n"
+                     "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
+                     "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));\n"
+                     "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));\n"
+                     "        __m256i kb = _mm256_srli_epi16(hi, 4);\n");
+    else
+        pf_put(kern, "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 11), j16); /* j in both bytes */\n"
+                     "        __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */\n"
+                     "        __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),\n"
+                     "                                       _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);\n"
+                     "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
+                     "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));\n"
+                     "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));\n"
+                     "        __m256i kb = _mm256_srli_epi16(hi, 5);\n");
+    pf_put(kern, "        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */\n"
+                 "        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);\n"
+                 "        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);\n"
+                 "        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));\n"
+                 "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),\n"
+                 "                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */\n");
+    if (X->sat)
+        pf_put(kern, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */\n");
+    pf_printf(kern, "        _mm256_storeu_si256((__m256i *)(y + i), r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+              N);
+    G->bw16 = 3;
 }
 
 /* exp2's table kernel without the low clamp (one vpmaxsw fewer per 32
@@ -501,15 +779,27 @@ static int prep_tab_noclamp(fx_gen *G, int base2, char *err, size_t errlen)
     fx_exp_red *X = &G->exp, save = *X;
     int64_t imin = pf_type_min_stored(&G->in), one = (int64_t)1 << G->in.exp;
     int64_t k0 = imin >= 0 ? 0 : (-imin + one - 1) / one, xtop = X->sat ? X->xsat : X->xhi;
-    if (base2 && X->loclamp && xtop + k0 * one <= 65535) {
-        X->loclamp = 0;
-        X->xlo = imin;
-        X->k0 = k0;
-        if (prep_tab(G, base2, err, errlen) == 0)
+    /* 16-entry tables first (AVX2 has a loop for them), then 32, then 64;
+       exp2 whose r would have 7 bits with 16 entries: 32 first (r has 6,
+       and the AVX-512 loop reads E from a 64-entry table) */
+    int order[3] = {4, 5, 6};
+    if (base2 && G->in.exp - 4 == 7)
+        order[0] = 5, order[1] = 4;
+    for (int oi = 0; oi < 3; oi++) {
+        int J = order[oi];
+        if (base2 && X->loclamp && xtop + k0 * one <= 65535) {
+            X->loclamp = 0;
+            X->xlo = imin;
+            X->k0 = k0;
+            if (prep_tab(G, base2, J, err, errlen) == 0)
+                return 0;
+        }
+        *X = save;
+        if (prep_tab(G, base2, J, err, errlen) == 0)
             return 0;
         *X = save;
     }
-    return prep_tab(G, base2, err, errlen);
+    return -2;
 }
 
 /* 16-bit lanes (see fx_exp16.c.in): int16_t inputs with 1..15 fraction
@@ -686,11 +976,11 @@ static void budget16(fx_gen *G)
         /* the table kernel: no Horner polynomial on [0, 1] (the fit the
            pipeline makes is not used); the pre-rounding error over every
            clamped input, of which the polynomial's share is E's error
-           (2^-22 units) moved to the result: at most 2^(16 - s) 2 2^-22 E
-           lsb, s >= 1 */
+           (2^-F units, F = 16 + J) moved to the result: at most
+           2^(16 - s) 2 2^-F E lsb, s >= 1 */
         G->R = 0;
         G->A = G->exp.terr * fx_lsb(G);
-        G->poly_err = G->exp.tpoly * 0x1p-6 * fx_lsb(G);
+        G->poly_err = G->exp.tpoly * ldexp(1, -G->exp.tj) * fx_lsb(G);
         return;
     }
     /* P >= 1: its absolute Horner error is a relative one; t's error

@@ -358,8 +358,8 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
                     "        v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, %d)));\n"
                     "        __m256i c = _mm256_srli_epi16(w, %d);\n"
                     "        __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));\n"
-                    "        __m256i od = _mm256_andnot_si256(lo16, _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)));\n"
-                    "        _mm256_storeu_si256((__m256i *)(y + i), _mm256_or_si256(ev, od));\n"
+                    "        __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)); /* its high word */\n"
+                    "        _mm256_storeu_si256((__m256i *)(y + i), _mm256_blend_epi16(ev, od, 0xaa));\n"
                     "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
               rb, 16 - rb, fb, N);
     G->bw16 = 3;

@@ -68,13 +68,15 @@ typedef struct {               /* exp, exp2 */
     double dt16;               /* 16-bit lanes: |error of t| */
     /* 16-bit lanes, exact: the table kernel (kind 1, fixed_exp.c) */
     int64_t toff, tl1, tl2, tcl; /* exp: u = x + toff, T = u tl1 + (u tl2 >> 16) + tcl */
-    int64_t tk0;               /* T = (t + tk0) 2^22 */
-    int64_t tc1, tc2;          /* 2^r - 1 = r (tc1 2^-16 + tc2 2^-10 r) */
-    int64_t tcc;               /* c = s - 1 = tcc - (hi >> 6) */
+    int tj;                    /* table index bits J: 2^J entries; T at 2^-(16 + J) */
+    int tcarry0;               /* exp: lo = q occurs (u tl1 = 0 mod 2^16) */
+    int64_t tk0;               /* T = (t + tk0) 2^(16 + J) */
+    int64_t tc1, tc2;          /* 2^r - 1 = r (tc1 2^-16 + tc2 2^(J - 16) r) */
+    int64_t tcc;               /* c = s - 1 = tcc - (hi >> J) */
     uint16_t ta[64], tu[64], td[64], tp[32];
     double terr, tkern, tred, tpoly; /* pre-rounding error (lsb); kernel (2^-16), t (2^-22), E (2^-22) */
-    int tet;                   /* exp2 with r of <= 5 bits: E from a 32-entry table te (vpermw) */
-    uint16_t te[32];
+    int tet;                   /* exp2 with r of <= 5 bits (6 with J < 6): E from a table te (vpermw, vpermi2w) */
+    uint16_t te[64];
     /* 16-bit lanes, fast: the segment-table kernel (kind 2, fixed_exp.c) */
     int64_t fd, fl;            /* u = fd - min(x, fd); exp: w = u fl 2^-16 (w = (t(fd) - t) 2^fb) */
     int ffb, fq;               /* fb; the table's offset, (fq & 3)/4 of W's lsb; fq >> 2: V[0] = the max */

@@ -4,35 +4,38 @@
  * Regenerate:  pfmathgen --func exp2 --type 'fixed<15,11>' --out-type 'ufixed<16,8>' -o libpfmath/generated/pf_fx_exp2_q11_uq8.c
  * Input:       int16_t x, value x 2^-11 in [-16, 15.9995117]
  * Output:      uint16_t y, value y 2^-8 in [0, 255.996094]
- * Reduction:   t = x; T = (t + 16) 2^22 = hi 2^16 + lo from the stored integer biased by 16 
- *              2^11 (exact): j = hi & 63, k + 16 = hi >> 6, r = lo 2^-22 in [0, 2^-6), t = k + 
- *              j/64 + r; inputs clamped to [-32768, 16384] (stored), the last one saturating
- * Domain:      2^r - 1 on r in [0, 2^-6]; 2^(j/64) for j in [0, 63] from tables (2^t = 2^k 
- *              2^(j/64) 2^r)
- * Order:       2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and three 64-entry 
- *              tables of 2^(j/64); uint16_t words: 16-bit lanes
- * Lanes:       16-bit words throughout; lookups (vpermi2w, vpermw) and the per-element shift 
- *              (vpsrlvw) in 16-bit lanes by AVX-512BW intrinsics (x86-64-v4); other clones, 
- *              scalar form: the same steps in plain C
- * Method:      minimax absolute error of 2^r on [0, 2^-6] (nlopt SLSQP, epigraph form), c1 and 
- *              c2 rounded to nearest at 2^-16 and 2^-10 (their multiply-highs' lsbs); tables 
- *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/64) - 1) 2^16, U[j] = 
- *              2^(j/64) 2^15, D[j] = (A[j]'s residual + 1/2) 2^5
+ * Reduction:   t = x; T = (t + 16) 2^21 = hi 2^16 + lo from the stored integer biased by 16 
+ *              2^11 (exact): j = hi & 31, k + 16 = hi >> 5, r = lo 2^-21 in [0, 2^-5), t = k + 
+ *              j/32 + r; inputs clamped to [-32768, 16384] (stored), the last one saturating
+ * Domain:      2^r - 1 on r in [0, 2^-5]; 2^(j/32) for j in [0, 31] from tables (2^t = 2^k 
+ *              2^(j/32) 2^r)
+ * Order:       2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and two 32-entry tables 
+ *              of 2^(j/32); uint16_t words: 16-bit lanes
+ * Lanes:       16-bit words throughout; AVX-512BW (x86-64-v4): lookups vpermw, the shift 
+ *              vpsrlvw; AVX2 (x86-64-v3): a lookup two vpshufb and a vpblendvb, the shift a 
+ *              pmulhuw by 2^(17 - s); the default clone, scalar form: the same steps in plain C
+ * Method:      minimax absolute error of 2^r on [0, 2^-5] (nlopt SLSQP, epigraph form), c1 and 
+ *              c2 rounded to nearest at 2^-16 and 2^-11 (their multiply-highs' lsbs); tables 
+ *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/32) - 1) 2^16, D[j] = 
+ *              (A[j]'s residual + 1/2) 2^4
  * Constraints: p(0) = 1 (2^r - 1 has no constant term; exact at r = 0)
- * Formats:     r uint16_t at 2^-22; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^22 
- *              (floors; c1 = 45426, c2 = 247); M = A[j] + ((pmulhuw(U[j], E) + D[j]) >> 5), 
- *              saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of the sum, D carrying 
- *              A's); result round((2^16 + M) 2^-s), s = 8 - k in [1, 24], as avg(M >> (s - 1), 
- *              0) (pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the 
- *              saturating add gives the max there, at the clamped top input); r has 5 bits (r = 
- *              m 2^-11): the AVX-512 loop reads E from a 32-entry table of these same values 
- *              (vpermw on the biased input's low bits)
- * Polynomial:  E within 1.923 of (2^r - 1) 2^22 for every r (polynomial and floors, all 2^16 
- *              r); M within 0.5336 of (2^f - 1) 2^16 for every input's (j, r)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2668 LSB (polynomial 0.0301, 
- *              arithmetic and reduction 0.2367) = 0.7668 LSB; taken over every clamped input 
+ * Formats:     r uint16_t at 2^-21; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^21 
+ *              (floors; c1 = 45425, c2 = 497); M = A[j] + ((avg(E, pmulhuw(A[j], E)) (= 
+ *              2^(j/32) E 2^-1, pavgw) + D[j]) >> 4), saturated at 65535 (2^f 2^16 = 2^16 + M: 
+ *              one rounding of the sum, D carrying A's); result round((2^16 + M) 2^-s), s = 8 - 
+ *              k in [1, 24], as avg(M >> (s - 1), 0) (pavgw) + P[k] (P = 2^(16 - s), 1 at s = 
+ *              17, 0 beyond, 65535 at s = 0: the saturating add gives the max there, at the 
+ *              clamped top input); AVX2: round(M 2^-s) + P as avg(Q, pmulhuw(M, Q)) with Q = 
+ *              2^(17 - s) for s >= 2 (vpshufb table, 0 from s = 18), and 2^15 + avg(M, 0) 
+ *              (saturating) at s = 1: the same values; r has 6 bits (r = m 2^-11): the AVX-512 
+ *              loop reads E from a 64-entry table of these same values (vpermi2w on the biased 
+ *              input's low bits)
+ * Polynomial:  E within 1.572 of (2^r - 1) 2^21 for every r (polynomial and floors, all 2^16 
+ *              r); M within 0.5550 of (2^f - 1) 2^16 for every input's (j, r)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2775 LSB (polynomial 0.0491, 
+ *              arithmetic and reduction 0.2284) = 0.7775 LSB; taken over every clamped input 
  *              from the emitted integer steps (the table kernel)
- * Sweep:       max 0.7542 LSB at x = 15232 (7.4375), mean 0.1583 LSB; exhaustive: all 65536 
+ * Sweep:       max 0.7665 LSB at x = 16024 (7.82421875), mean 0.1585 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  x >= 16384 (stored; 8) overflows: 65535 (the max); results beyond the output 
  *              range give its max or min
@@ -231,38 +234,19 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    k[] holds the constants; bw picks the form of the per-element
    shift (1: 16-bit lanes, for AVX-512BW's vpsrlvw; 0: 32-bit lanes), which
    give the same values. */
-/* A[j] = round((2^(j/64) - 1) 2^16) (MPFR) */
-static const uint32_t pf_exp2_q11_uq8_ta[64] = {
-    0, 714, 1435, 2164, 2902, 3647, 4400, 5162,
-    5932, 6710, 7496, 8292, 9096, 9908, 10730, 11560,
-    12400, 13249, 14106, 14974, 15850, 16737, 17633, 18538,
-    19454, 20379, 21315, 22260, 23216, 24183, 25160, 26148,
-    27146, 28155, 29175, 30207, 31249, 32303, 33369, 34446,
-    35534, 36635, 37747, 38872, 40009, 41158, 42320, 43495,
-    44682, 45882, 47095, 48322, 49562, 50815, 52082, 53363,
-    54658, 55966, 57289, 58627, 59979, 61346, 62727, 64124,
+/* A[j] = round((2^(j/32) - 1) 2^16) (MPFR) */
+static const uint32_t pf_exp2_q11_uq8_ta[32] = {
+    0, 1435, 2902, 4400, 5932, 7496, 9096, 10730,
+    12400, 14106, 15850, 17633, 19454, 21315, 23216, 25160,
+    27146, 29175, 31249, 33369, 35534, 37747, 40009, 42320,
+    44682, 47095, 49562, 52082, 54658, 57289, 59979, 62727,
 };
-/* U[j] = round(2^(j/64) 2^15) (MPFR) */
-static const uint32_t pf_exp2_q11_uq8_tu[64] = {
-    32768, 33125, 33486, 33850, 34219, 34591, 34968, 35349,
-    35734, 36123, 36516, 36914, 37316, 37722, 38133, 38548,
-    38968, 39392, 39821, 40255, 40693, 41136, 41584, 42037,
-    42495, 42958, 43425, 43898, 44376, 44859, 45348, 45842,
-    46341, 46846, 47356, 47871, 48393, 48920, 49452, 49991,
-    50535, 51085, 51642, 52204, 52773, 53347, 53928, 54515,
-    55109, 55709, 56316, 56929, 57549, 58176, 58809, 59449,
-    60097, 60751, 61413, 62081, 62757, 63441, 64132, 64830,
-};
-/* D[j] = round(((2^(j/64) - 1) 2^16 - A[j] + 1/2) 2^5), in [0, 32] (MPFR) */
-static const uint32_t pf_exp2_q11_uq8_td[64] = {
-    16, 4, 18, 26, 1, 8, 20, 5,
-    0, 8, 30, 7, 5, 27, 12, 27,
-    12, 1, 30, 6, 29, 4, 1, 21,
-    6, 21, 7, 30, 32, 14, 13, 1,
-    13, 20, 28, 7, 25, 22, 3, 3,
-    27, 13, 31, 21, 19, 29, 23, 7,
-    15, 21, 30, 13, 8, 18, 18, 11,
-    2, 28, 30, 14, 15, 8, 29, 19,
+/* D[j] = round(((2^(j/32) - 1) 2^16 - A[j] + 1/2) 2^4), in [0, 16] (MPFR) */
+static const uint32_t pf_exp2_q11_uq8_td[32] = {
+    8, 9, 0, 10, 0, 15, 2, 6,
+    6, 15, 14, 0, 3, 3, 16, 7,
+    6, 14, 12, 2, 13, 16, 10, 12,
+    8, 15, 4, 9, 1, 15, 8, 14,
 };
 /* P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range) */
 static const uint32_t pf_exp2_q11_uq8_tp[32] = {
@@ -276,20 +260,21 @@ PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x, const int16_t *k, int bw
     (void)bw; /* unused where no step has an AVX-512BW form */
     int16_t xc = (int16_t)x;
     xc = (int16_t)(xc > k[0] ? k[0] : xc); /* 16384 */
-    /* T = (t + 16) 2^22 = hi 2^16 + lo: j = hi & 63, k + 16 = hi >> 6, r = lo 2^-22 */
+    /* T = (t + 16) 2^21 = hi 2^16 + lo: j = hi & 31, k + 16 = hi >> 5, r = lo 2^-21 */
     uint16_t tb = (uint16_t)((uint16_t)xc + 32768u); /* (t + 16) 2^11 */
-    uint16_t hi = (uint16_t)(tb >> 5);
-    uint16_t lo = (uint16_t)((uint32_t)tb << 11);
-    /* E = (2^r - 1) 2^22 = r (c1 + c2 r), floors */
-    uint16_t g = (uint16_t)(45426u + ((uint32_t)lo * 247u >> 16));
+    uint16_t hi = (uint16_t)(tb >> 6);
+    uint16_t lo = (uint16_t)((uint32_t)tb << 10);
+    /* E = (2^r - 1) 2^21 = r (c1 + c2 r), floors */
+    uint16_t g = (uint16_t)(45425u + ((uint32_t)lo * 497u >> 16));
     uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
-    /* M = (2^(j/64 + r) - 1) 2^16, one rounding: A[j] + round(U[j] E 2^-21 + A[j]'s residual) */
-    unsigned j = hi & 63u;
-    uint16_t v = (uint16_t)(((uint32_t)pf_exp2_q11_uq8_tu[j] * e >> 16) + pf_exp2_q11_uq8_td[j]);
-    uint32_t ms = (uint32_t)pf_exp2_q11_uq8_ta[j] + (uint32_t)(v >> 5);
+    /* M = (2^(j/32 + r) - 1) 2^16, one rounding: A[j] + round(2^(j/32) E 2^-5 + A[j]'s residual),
+       2^(j/32) E 2^-1 = avg(E, pmulhuw(A[j], E)) (pavgw) */
+    unsigned j = hi & 31u;
+    uint16_t v = (uint16_t)((((uint32_t)e + ((uint32_t)pf_exp2_q11_uq8_ta[j] * e >> 16) + 1u) >> 1) + pf_exp2_q11_uq8_td[j]);
+    uint32_t ms = (uint32_t)pf_exp2_q11_uq8_ta[j] + (uint32_t)(v >> 4);
     uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);
     /* round((2^16 + M) 2^-s), s = c + 1 >= 1: avg(M >> c, 0) + 2^(16 - s) */
-    uint16_t kb = (uint16_t)(hi >> 6);
+    uint16_t kb = (uint16_t)(hi >> 5);
     uint16_t c = (uint16_t)(23 - kb); /* in [0, 23]; wraps at s = 0 (saturated by P) */
     uint16_t y0 = (uint16_t)(((uint32_t)(c < 16 ? m >> c : 0) + 1u) >> 1); /* pavgw; vpsrlvw's 0 */
     uint32_t ys = (uint32_t)y0 + pf_exp2_q11_uq8_tp[kb & 31u];
@@ -315,34 +300,135 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-/* E[i] = the polynomial's E at r = (i mod 2^(Ei - 6)) 2^-Ei (the plain-C steps' values) */
-static const uint32_t pf_exp2_q11_uq8_te[32] = {
-    0, 1419, 2840, 4260, 5682, 7103, 8526, 9948,
-    11371, 12795, 14219, 15644, 17069, 18494, 19921, 21347,
-    22774, 24202, 25629, 27058, 28487, 29917, 31346, 32777,
-    34208, 35639, 37071, 38503, 39936, 41369, 42803, 44237,
+/* E[63 - i] (tbn's low 6 bits are 63 - r's) */
+static const uint32_t pf_exp2_q11_uq8_ter[64] = {
+    45196, 44471, 43746, 43021, 42298, 41574, 40850, 40126,
+    39404, 38680, 37957, 37235, 36513, 35791, 35069, 34347,
+    33626, 32905, 32184, 31464, 30743, 30024, 29304, 28584,
+    27864, 27146, 26427, 25708, 24990, 24272, 23554, 22836,
+    22118, 21401, 20685, 19968, 19251, 18535, 17819, 17104,
+    16388, 15673, 14958, 14243, 13529, 12814, 12101, 11387,
+    10673, 9960, 9247, 8534, 7822, 7109, 6397, 5685,
+    4974, 4262, 3551, 2841, 2130, 1420, 709, 0,
 };
-    const __m512i ta0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ta), ta1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ta + 32);
-    const __m512i tu0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tu), tu1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tu + 32);
-    const __m512i td0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_td), td1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_td + 32);
-    const __m512i tp = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tp);
-    const __m512i te = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_te);
-    const __m512i cc = _mm512_set1_epi16(23);
-    const __m512i bias = _mm512_set1_epi16(-32768);
+/* A[31 - i] (j = 31 - (tbn >> 6) mod 32) */
+static const uint32_t pf_exp2_q11_uq8_tar[32] = {
+    62727, 59979, 57289, 54658, 52082, 49562, 47095, 44682,
+    42320, 40009, 37747, 35534, 33369, 31249, 29175, 27146,
+    25160, 23216, 21315, 19454, 17633, 15850, 14106, 12400,
+    10730, 9096, 7496, 5932, 4400, 2902, 1435, 0,
+};
+/* D[31 - i] */
+static const uint32_t pf_exp2_q11_uq8_tdr[32] = {
+    14, 8, 15, 1, 9, 4, 15, 8,
+    12, 10, 16, 13, 2, 12, 14, 6,
+    7, 16, 3, 3, 0, 14, 15, 6,
+    6, 2, 15, 0, 10, 0, 9, 8,
+};
+/* P at c = s - 1 = i (P[(k + K0) & 31] above, k + K0 = tcc - c); 31: s = 0 */
+static const uint32_t pf_exp2_q11_uq8_tpr[32] = {
+    32768, 16384, 8192, 4096, 2048, 1024, 512, 256,
+    128, 64, 32, 16, 8, 4, 2, 1,
+    1, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 65535,
+};
+    const __m512i ta = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tar), td = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tdr), tp = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tpr);
+    const __m512i te0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ter), te1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ter + 32);
+    const __m512i cb = _mm512_set1_epi16(16383); /* CB = (tcc + 1 - K0) 2^11 - 1 */
     const __m512i xhi = _mm512_set1_epi16(16384);
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
         __m512i xc = _mm512_loadu_si512(x + i);
         xc = _mm512_min_epi16(xc, xhi);
-        __m512i tb = _mm512_add_epi16(xc, bias);
-        __m512i hi = _mm512_srli_epi16(tb, 5), e = _mm512_permutexvar_epi16(tb, te);
-        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);
-        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));
-        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));
-        __m512i kb = _mm512_srli_epi16(hi, 6);
-        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
-        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
+        __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^11 - 1 - (tb mod 2^11) */
+        __m512i hn = _mm512_srli_epi16(tn, 6), e = _mm512_permutex2var_epi16(te0, tn, te1);
+        __m512i a = _mm512_permutexvar_epi16(hn, ta);
+        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
+        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));
+        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 4));
+        __m512i c = _mm512_srli_epi16(tn, 11);
+        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());
+        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));
         _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_exp2_q11_uq8(x[i]);
+}
+#endif
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16
+   words is two vpshufb (its low and its high bytes) merged by vpblendvb;
+   no 16-bit per-element shift: round((2^16 + M) 2^-s) = avg(Q, pmulhuw(M, Q))
+   with Q = 2^(17 - s) for s >= 2 (a vpshufb table, 0 from s = 18), and
+   2^15 + avg(M, 0) at s = 1.  The same values. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    uint8_t b[8][16]; /* A's low, high bytes, D (entries 0-15), Q's low, high bytes (Q[i] =
+                         2^(15 - i)); A's low, high bytes, D (entries 16-31) */
+    for (int k = 0; k < 16; k++) {
+        b[0][k] = (uint8_t)pf_exp2_q11_uq8_ta[k];
+        b[1][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k] >> 8);
+        b[2][k] = (uint8_t)pf_exp2_q11_uq8_td[k];
+        b[3][k] = (uint8_t)(32768u >> k);
+        b[4][k] = (uint8_t)((32768u >> k) >> 8);
+        b[5][k] = (uint8_t)pf_exp2_q11_uq8_ta[k + 16];
+        b[6][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k + 16] >> 8);
+        b[7][k] = (uint8_t)pf_exp2_q11_uq8_td[k + 16];
+    }
+    /* the constants in memory GCC cannot see through: with 16 ymm registers it
+       would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside
+       the loop, where a memory operand costs nothing */
+    __m256i kc[22];
+    for (int k = 0; k < 5; k++)
+        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));
+    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
+    kc[6] = _mm256_set1_epi16(0x101);
+    kc[7] = _mm256_set1_epi16(-32768);
+    kc[8] = _mm256_set1_epi16(-20111); /* c1 */
+    kc[9] = _mm256_set1_epi16(497); /* c2 */
+    kc[10] = _mm256_set1_epi16(134); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */
+    kc[11] = _mm256_set1_epi16(23); /* kb at s = 1 */
+    kc[12] = _mm256_set1_epi16(-32768); /* off, or the bias (exp2) */
+    kc[13] = _mm256_set1_epi16(0); /* L1 */
+    kc[14] = _mm256_set1_epi16(0); /* L2 */
+    kc[15] = _mm256_set1_epi16(0); /* Cl */
+    kc[16] = _mm256_set1_epi16(0); /* the low clamp */
+    kc[17] = _mm256_set1_epi16(16384); /* the high clamp */
+    kc[18] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */
+    for (int k = 19; k < 22; k++)
+        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));
+    __asm__("" : : "r"(kc) : "memory");
+    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];
+    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];
+    const __m256i bias = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];
+    const __m256i j16 = kc[18];
+    const __m256i al1 = kc[19], ah1 = kc[20], dt1 = kc[21];
+    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
+        xc = _mm256_min_epi16(xc, xhi);
+        __m256i tb = _mm256_add_epi16(xc, bias);
+        __m256i hi = _mm256_srli_epi16(tb, 6), lo = _mm256_slli_epi16(tb, 10);
+        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
+        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 11), j16); /* j in both bytes */
+        __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */
+        __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),
+                                       _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);
+        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
+        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));
+        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));
+        __m256i kb = _mm256_srli_epi16(hi, 5);
+        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */
+        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);
+        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);
+        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
+        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
+                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
+        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+        _mm256_storeu_si256((__m256i *)(y + i), r);
     }
     for (; i < n; i++)
         y[i] = pf_exp2_q11_uq8(x[i]);
@@ -377,8 +463,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_exp2_q11_uq8_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_exp2_q11_uq8_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_exp2_q11_uq8_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_exp2_q11_uq8_array_avx2(x, y, n);
         return;
     }
 #endif

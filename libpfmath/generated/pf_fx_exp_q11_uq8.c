@@ -4,38 +4,41 @@
  * Regenerate:  pfmathgen --func exp --type 'fixed<15,11>' --out-type 'ufixed<16,8>' -o libpfmath/generated/pf_fx_exp_q11_uq8.c
  * Input:       int16_t x, value x 2^-11 in [-16, 15.9995117]
  * Output:      uint16_t y, value y 2^-8 in [0, 255.996094]
- * Reduction:   t = x log2(e); T = (t + 11) 2^22 = hi 2^16 + lo in two 16-bit words: u = x + 
- *              15608 (a uint16_t), T = u L1 + floor(u L2 2^-16) + 21332 with L = log2(e) 2^11 = 
- *              L1 + L2 2^-16, L1 = 2954, L2 = 41907 (MPFR, rounded to 2^-16), u L1 from a 
+ * Reduction:   t = x log2(e); T = (t + 11) 2^20 = hi 2^16 + lo in two 16-bit words: u = x + 
+ *              15586 (a uint16_t), T = u L1 + floor(u L2 2^-16) + 21584 with L = log2(e) 2^9 = 
+ *              L1 + L2 2^-16, L1 = 738, L2 = 43245 (MPFR, rounded to 2^-16), u L1 from a 
  *              low/high product pair and the low word's carry into hi by an unsigned compare; j 
- *              = hi & 63, k + 11 = hi >> 6, r = lo 2^-22 in [0, 2^-6); inputs clamped to 
- *              [-14197, 11357] (stored), the last one saturating; |error of T| <= 0.605 2^-22 
+ *              = hi & 15, k + 11 = hi >> 4, r = lo 2^-20 in [0, 2^-4); inputs clamped to 
+ *              [-14197, 11357] (stored), the last one saturating; |error of T| <= 0.735 2^-20 
  *              (every clamped input)
- * Domain:      2^r - 1 on r in [0, 2^-6]; 2^(j/64) for j in [0, 63] from tables (2^t = 2^k 
- *              2^(j/64) 2^r)
- * Order:       2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and three 64-entry 
- *              tables of 2^(j/64); uint16_t words: 16-bit lanes
- * Lanes:       16-bit words throughout, x log2(e) to 2^-22 (the bound needs ~2^-19) a 16x16 -> 
- *              32-bit product (pmullw, pmulhuw) plus a carry; lookups (vpermi2w, vpermw) and 
- *              the per-element shift (vpsrlvw) in 16-bit lanes by AVX-512BW intrinsics 
- *              (x86-64-v4); other clones, scalar form: the same steps in plain C
- * Method:      minimax absolute error of 2^r on [0, 2^-6] (nlopt SLSQP, epigraph form), c1 and 
- *              c2 rounded to nearest at 2^-16 and 2^-10 (their multiply-highs' lsbs); tables 
- *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/64) - 1) 2^16, U[j] = 
- *              2^(j/64) 2^15, D[j] = (A[j]'s residual + 1/2) 2^5
+ * Domain:      2^r - 1 on r in [0, 2^-4]; 2^(j/16) for j in [0, 15] from tables (2^t = 2^k 
+ *              2^(j/16) 2^r)
+ * Order:       2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and two 16-entry tables 
+ *              of 2^(j/16); uint16_t words: 16-bit lanes
+ * Lanes:       16-bit words throughout, x log2(e) to 2^-20 a 16x16 -> 32-bit product (pmullw, 
+ *              pmulhuw) plus a carry; AVX-512BW (x86-64-v4): lookups vpermw, the shift vpsrlvw; 
+ *              AVX2 (x86-64-v3): a lookup two vpshufb and a vpblendvb, the shift a pmulhuw by 
+ *              2^(17 - s); the default clone, scalar form: the same steps in plain C
+ * Method:      minimax absolute error of 2^r on [0, 2^-4] (nlopt SLSQP, epigraph form), c1 and 
+ *              c2 rounded to nearest at 2^-16 and 2^-12 (their multiply-highs' lsbs); tables 
+ *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/16) - 1) 2^16, D[j] = 
+ *              (A[j]'s residual + 1/2) 2^3
  * Constraints: p(0) = 1 (2^r - 1 has no constant term; exact at r = 0)
- * Formats:     r uint16_t at 2^-22; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^22 
- *              (floors; c1 = 45426, c2 = 247); M = A[j] + ((pmulhuw(U[j], E) + D[j]) >> 5), 
- *              saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of the sum, D carrying 
- *              A's); result round((2^16 + M) 2^-s), s = 8 - k in [1, 19], as avg(M >> (s - 1), 
- *              0) (pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the 
- *              saturating add gives the max there, at the clamped top input)
- * Polynomial:  E within 1.923 of (2^r - 1) 2^22 for every r (polynomial and floors, all 2^16 
- *              r); M within 0.5481 of (2^f - 1) 2^16 for every input's (j, r)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2669 LSB (polynomial 0.0301, 
- *              arithmetic and reduction 0.2368) = 0.7669 LSB; taken over every clamped input 
+ * Formats:     r uint16_t at 2^-20; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^20 
+ *              (floors; c1 = 45420, c2 = 1004); M = A[j] + ((avg(E, pmulhuw(A[j], E)) (= 
+ *              2^(j/16) E 2^-1, pavgw) + D[j]) >> 3), saturated at 65535 (2^f 2^16 = 2^16 + M: 
+ *              one rounding of the sum, D carrying A's); result round((2^16 + M) 2^-s), s = 8 - 
+ *              k in [1, 19], as avg(M >> (s - 1), 0) (pavgw) + P[k] (P = 2^(16 - s), 1 at s = 
+ *              17, 0 beyond, 65535 at s = 0: the saturating add gives the max there, at the 
+ *              clamped top input); AVX2: round(M 2^-s) + P as avg(Q, pmulhuw(M, Q)) with Q = 
+ *              2^(17 - s) for s >= 2 (vpshufb table, 0 from s = 18), and 2^15 + avg(M, 0) 
+ *              (saturating) at s = 1: the same values
+ * Polynomial:  E within 2.311 of (2^r - 1) 2^20 for every r (polynomial and floors, all 2^16 
+ *              r); M within 0.6347 of (2^f - 1) 2^16 for every input's (j, r)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.3002 LSB (polynomial 0.1444, 
+ *              arithmetic and reduction 0.1558) = 0.8002 LSB; taken over every clamped input 
  *              from the emitted integer steps (the table kernel)
- * Sweep:       max 0.7508 LSB at x = 10951 (5.34716797), mean 0.1097 LSB; exhaustive: all 65536 
+ * Sweep:       max 0.8002 LSB at x = 11334 (5.53417969), mean 0.1100 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  x >= 11357 (stored; 5.54541016) overflows: 65535 (the max); results beyond the 
  *              output range give its max or min
@@ -234,38 +237,15 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    k[] holds the constants; bw picks the form of the per-element
    shift (1: 16-bit lanes, for AVX-512BW's vpsrlvw; 0: 32-bit lanes), which
    give the same values. */
-/* A[j] = round((2^(j/64) - 1) 2^16) (MPFR) */
-static const uint32_t pf_exp_q11_uq8_ta[64] = {
-    0, 714, 1435, 2164, 2902, 3647, 4400, 5162,
-    5932, 6710, 7496, 8292, 9096, 9908, 10730, 11560,
-    12400, 13249, 14106, 14974, 15850, 16737, 17633, 18538,
-    19454, 20379, 21315, 22260, 23216, 24183, 25160, 26148,
-    27146, 28155, 29175, 30207, 31249, 32303, 33369, 34446,
-    35534, 36635, 37747, 38872, 40009, 41158, 42320, 43495,
-    44682, 45882, 47095, 48322, 49562, 50815, 52082, 53363,
-    54658, 55966, 57289, 58627, 59979, 61346, 62727, 64124,
+/* A[j] = round((2^(j/16) - 1) 2^16) (MPFR) */
+static const uint32_t pf_exp_q11_uq8_ta[16] = {
+    0, 2902, 5932, 9096, 12400, 15850, 19454, 23216,
+    27146, 31249, 35534, 40009, 44682, 49562, 54658, 59979,
 };
-/* U[j] = round(2^(j/64) 2^15) (MPFR) */
-static const uint32_t pf_exp_q11_uq8_tu[64] = {
-    32768, 33125, 33486, 33850, 34219, 34591, 34968, 35349,
-    35734, 36123, 36516, 36914, 37316, 37722, 38133, 38548,
-    38968, 39392, 39821, 40255, 40693, 41136, 41584, 42037,
-    42495, 42958, 43425, 43898, 44376, 44859, 45348, 45842,
-    46341, 46846, 47356, 47871, 48393, 48920, 49452, 49991,
-    50535, 51085, 51642, 52204, 52773, 53347, 53928, 54515,
-    55109, 55709, 56316, 56929, 57549, 58176, 58809, 59449,
-    60097, 60751, 61413, 62081, 62757, 63441, 64132, 64830,
-};
-/* D[j] = round(((2^(j/64) - 1) 2^16 - A[j] + 1/2) 2^5), in [0, 32] (MPFR) */
-static const uint32_t pf_exp_q11_uq8_td[64] = {
-    16, 4, 18, 26, 1, 8, 20, 5,
-    0, 8, 30, 7, 5, 27, 12, 27,
-    12, 1, 30, 6, 29, 4, 1, 21,
-    6, 21, 7, 30, 32, 14, 13, 1,
-    13, 20, 28, 7, 25, 22, 3, 3,
-    27, 13, 31, 21, 19, 29, 23, 7,
-    15, 21, 30, 13, 8, 18, 18, 11,
-    2, 28, 30, 14, 15, 8, 29, 19,
+/* D[j] = round(((2^(j/16) - 1) 2^16 - A[j] + 1/2) 2^3), in [0, 8] (MPFR) */
+static const uint32_t pf_exp_q11_uq8_td[16] = {
+    4, 0, 0, 1, 3, 7, 1, 8,
+    3, 6, 7, 5, 4, 2, 0, 4,
 };
 /* P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range) */
 static const uint32_t pf_exp_q11_uq8_tp[32] = {
@@ -280,22 +260,23 @@ PF_FX_INLINE uint16_t pf_exp_q11_uq8_inline(int16_t x, const int16_t *k, int bw)
     int16_t xc = (int16_t)x;
     xc = (int16_t)(xc < k[0] ? k[0] : xc); /* -14197 */
     xc = (int16_t)(xc > k[1] ? k[1] : xc); /* 11357 */
-    /* T = (t + 11) 2^22 = hi 2^16 + lo: j = hi & 63, k + 11 = hi >> 6, r = lo 2^-22 */
-    uint16_t u = (uint16_t)((uint16_t)xc + 15608u);
-    uint32_t pr = (uint32_t)u * 2954u; /* u L1: pmullw, pmulhuw */
-    uint16_t q = (uint16_t)(((uint32_t)u * 41907u >> 16) + 21332u); /* floor(u L2 2^-16) + Cl */
+    /* T = (t + 11) 2^20 = hi 2^16 + lo: j = hi & 15, k + 11 = hi >> 4, r = lo 2^-20 */
+    uint16_t u = (uint16_t)((uint16_t)xc + 15586u);
+    uint32_t pr = (uint32_t)u * 738u; /* u L1: pmullw, pmulhuw */
+    uint16_t q = (uint16_t)(((uint32_t)u * 43245u >> 16) + 21584u); /* floor(u L2 2^-16) + Cl */
     uint16_t lo = (uint16_t)(pr + q);
     uint16_t hi = (uint16_t)((pr >> 16) + (lo < q)); /* the carry */
-    /* E = (2^r - 1) 2^22 = r (c1 + c2 r), floors */
-    uint16_t g = (uint16_t)(45426u + ((uint32_t)lo * 247u >> 16));
+    /* E = (2^r - 1) 2^20 = r (c1 + c2 r), floors */
+    uint16_t g = (uint16_t)(45420u + ((uint32_t)lo * 1004u >> 16));
     uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
-    /* M = (2^(j/64 + r) - 1) 2^16, one rounding: A[j] + round(U[j] E 2^-21 + A[j]'s residual) */
-    unsigned j = hi & 63u;
-    uint16_t v = (uint16_t)(((uint32_t)pf_exp_q11_uq8_tu[j] * e >> 16) + pf_exp_q11_uq8_td[j]);
-    uint32_t ms = (uint32_t)pf_exp_q11_uq8_ta[j] + (uint32_t)(v >> 5);
+    /* M = (2^(j/16 + r) - 1) 2^16, one rounding: A[j] + round(2^(j/16) E 2^-4 + A[j]'s residual),
+       2^(j/16) E 2^-1 = avg(E, pmulhuw(A[j], E)) (pavgw) */
+    unsigned j = hi & 15u;
+    uint16_t v = (uint16_t)((((uint32_t)e + ((uint32_t)pf_exp_q11_uq8_ta[j] * e >> 16) + 1u) >> 1) + pf_exp_q11_uq8_td[j]);
+    uint32_t ms = (uint32_t)pf_exp_q11_uq8_ta[j] + (uint32_t)(v >> 3);
     uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);
     /* round((2^16 + M) 2^-s), s = c + 1 >= 1: avg(M >> c, 0) + 2^(16 - s) */
-    uint16_t kb = (uint16_t)(hi >> 6);
+    uint16_t kb = (uint16_t)(hi >> 4);
     uint16_t c = (uint16_t)(18 - kb); /* in [0, 18]; wraps at s = 0 (saturated by P) */
     uint16_t y0 = (uint16_t)(((uint32_t)(c < 16 ? m >> c : 0) + 1u) >> 1); /* pavgw; vpsrlvw's 0 */
     uint32_t ys = (uint32_t)y0 + pf_exp_q11_uq8_tp[kb & 31u];
@@ -304,7 +285,7 @@ PF_FX_INLINE uint16_t pf_exp_q11_uq8_inline(int16_t x, const int16_t *k, int bw)
 }
 
 /* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn
-   the table lookups into vpermi2w/vpermw (nor the carry into a mask): the
+   the table lookups into vpermw (nor the carry into a mask): the
    array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the
    rest of the array and the other clones use the scalar steps above.  The
    same values (pfmathgen sweeps the array form on its machine against the
@@ -312,22 +293,25 @@ PF_FX_INLINE uint16_t pf_exp_q11_uq8_inline(int16_t x, const int16_t *k, int bw)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
 extern uint16_t pf_exp_q11_uq8(int16_t x); /* the scalar form, for the last n % 32 */
-/* 32 table entries as 16-bit words, for vpermw/vpermi2w */
+/* 32 table entries as 16-bit words, for vpermw */
 __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp_q11_uq8_w16(const uint32_t *t)
 {
     return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
                               _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
 }
+/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: hi's low 4 are j) */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp_q11_uq8_w16b(const uint32_t *t)
+{
+    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
+}
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_exp_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-    const __m512i ta0 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_ta), ta1 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_ta + 32);
-    const __m512i tu0 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_tu), tu1 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_tu + 32);
-    const __m512i td0 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_td), td1 = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_td + 32);
+    const __m512i ta = pf_exp_q11_uq8_w16b(pf_exp_q11_uq8_ta), td = pf_exp_q11_uq8_w16b(pf_exp_q11_uq8_td);
     const __m512i tp = pf_exp_q11_uq8_w16(pf_exp_q11_uq8_tp);
-    const __m512i c1 = _mm512_set1_epi16(-20110), c2 = _mm512_set1_epi16(247), cc = _mm512_set1_epi16(18);
-    const __m512i off = _mm512_set1_epi16(15608), l1 = _mm512_set1_epi16(2954), l2 = _mm512_set1_epi16(-23629),
-                  cl = _mm512_set1_epi16(21332), one = _mm512_set1_epi16(1);
+    const __m512i c1 = _mm512_set1_epi16(-20116), c2 = _mm512_set1_epi16(1004), cc = _mm512_set1_epi16(18);
+    const __m512i off = _mm512_set1_epi16(15586), l1 = _mm512_set1_epi16(738), l2 = _mm512_set1_epi16(-22291),
+                  cl = _mm512_set1_epi16(21584), one = _mm512_set1_epi16(1);
     const __m512i xlo = _mm512_set1_epi16(-14197);
     const __m512i xhi = _mm512_set1_epi16(11357);
     size_t i = 0;
@@ -341,13 +325,89 @@ static void pf_exp_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restric
         __m512i hi = _mm512_mulhi_epu16(u, l1);
         hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);
         __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
-        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);
-        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));
-        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));
-        __m512i kb = _mm512_srli_epi16(hi, 6);
+        __m512i a = _mm512_permutexvar_epi16(hi, ta);
+        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
+        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
+        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
+        __m512i kb = _mm512_srli_epi16(hi, 4);
         __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
         r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
         _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_exp_q11_uq8(x[i]);
+}
+#endif
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16
+   words is two vpshufb (its low and its high bytes) merged by vpblendvb;
+   no 16-bit per-element shift: round((2^16 + M) 2^-s) = avg(Q, pmulhuw(M, Q))
+   with Q = 2^(17 - s) for s >= 2 (a vpshufb table, 0 from s = 18), and
+   2^15 + avg(M, 0) at s = 1.  The same values. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+{
+    uint8_t b[5][16]; /* A's low, high bytes, D, Q's low, high bytes (Q[i] = 2^(15 - i)) */
+    for (int k = 0; k < 16; k++) {
+        b[0][k] = (uint8_t)pf_exp_q11_uq8_ta[k];
+        b[1][k] = (uint8_t)(pf_exp_q11_uq8_ta[k] >> 8);
+        b[2][k] = (uint8_t)pf_exp_q11_uq8_td[k];
+        b[3][k] = (uint8_t)(32768u >> k);
+        b[4][k] = (uint8_t)((32768u >> k) >> 8);
+    }
+    /* the constants in memory GCC cannot see through: with 16 ymm registers it
+       would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside
+       the loop, where a memory operand costs nothing */
+    __m256i kc[19];
+    for (int k = 0; k < 5; k++)
+        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));
+    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
+    kc[6] = _mm256_set1_epi16(0x101);
+    kc[7] = _mm256_set1_epi16(-32768);
+    kc[8] = _mm256_set1_epi16(-20116); /* c1 */
+    kc[9] = _mm256_set1_epi16(1004); /* c2 */
+    kc[10] = _mm256_set1_epi16(129); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */
+    kc[11] = _mm256_set1_epi16(18); /* kb at s = 1 */
+    kc[12] = _mm256_set1_epi16(15586); /* off, or the bias (exp2) */
+    kc[13] = _mm256_set1_epi16(738); /* L1 */
+    kc[14] = _mm256_set1_epi16(-22291); /* L2 */
+    kc[15] = _mm256_set1_epi16(21584); /* Cl */
+    kc[16] = _mm256_set1_epi16(-14197); /* the low clamp */
+    kc[17] = _mm256_set1_epi16(11357); /* the high clamp */
+    kc[18] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */
+    __asm__("" : : "r"(kc) : "memory");
+    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];
+    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];
+    const __m256i off = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];
+    const __m256i j16 = kc[18];
+    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
+        xc = _mm256_max_epi16(xc, xlo);
+        xc = _mm256_min_epi16(xc, xhi);
+        __m256i u = _mm256_add_epi16(xc, off);
+        __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
+        __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
+        /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
+        __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);
+        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);
+        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
+        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 12), j16); /* j in both bytes */
+        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
+        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
+        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
+        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
+        __m256i kb = _mm256_srli_epi16(hi, 4);
+        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */
+        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);
+        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);
+        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
+        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
+                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
+        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+        _mm256_storeu_si256((__m256i *)(y + i), r);
     }
     for (; i < n; i++)
         y[i] = pf_exp_q11_uq8(x[i]);
@@ -383,8 +443,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_exp_q11_uq8_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_exp_q11_uq8_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_exp_q11_uq8_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_exp_q11_uq8_array_avx2(x, y, n);
         return;
     }
 #endif

@@ -320,8 +320,8 @@ static void pf_exp_q11_uq8_fast_array_avx2(const int16_t *restrict x, uint16_t *
         v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, 10)));
         __m256i c = _mm256_srli_epi16(w, 10);
         __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));
-        __m256i od = _mm256_andnot_si256(lo16, _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)));
-        _mm256_storeu_si256((__m256i *)(y + i), _mm256_or_si256(ev, od));
+        __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)); /* its high word */
+        _mm256_storeu_si256((__m256i *)(y + i), _mm256_blend_epi16(ev, od, 0xaa));
     }
     for (; i < n; i++)
         y[i] = pf_exp_q11_uq8_fast(x[i]);
