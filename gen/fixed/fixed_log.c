@@ -30,6 +30,309 @@ static void g_log2_1p(mpfr_t y, const mpfr_t t, const void *ctx)
 }
 
 
+/* ---- 16-bit lanes: the table kernel (kind 1) ----
+ *
+ * An unsigned input of at most 16 bits is x = 2^(15 - lz) (1 + t) with
+ * lz = 16 - bitlen(x) (16 for x = 0): u = x << lz has its leading one at
+ * bit 15, j = t's top 5 bits picks one of 32 segments of [0, 1) and f =
+ * t's other 10 bits (at 2^-16) the place in it, all exact.  F(t) = log(1 + t)
+ * or log2(1 + t) is a line per segment at 2^-Ef, V[j] + floor(S[j] f 2^-16),
+ * and e K (e = 15 - lz - Ei) = TH[lz] 2^-Eo + TL[lz] 2^-Ef; the result is
+ * TH[lz] + round((V[j] + floor(S[j] f 2^-16) + TL[lz]) 2^-(Ef - Eo)), every
+ * step a 16-bit word, the lookups one vpermw each.  Where the output's lsb
+ * allows (fast, log2), TL is left out: TH alone, rounded at 2^-Eo.
+ * S[j] comes from the chord through MPFR's values at the segment's ends
+ * (searched +-2 around it), V[j] centres the segment's error over its 1024
+ * points (a discrete minimax of the integer step, the floor included).  The
+ * bound is taken over every input by running these integer steps (tab_y)
+ * against MPFR. */
+
+#define TAB_N 32 /* segments: one vpermw (32 16-bit entries) */
+
+static int64_t floordiv(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+/* the emitted steps for one input; 0 if a word would overflow.  *pre is the
+   value before the final rounding, in output lsb */
+static int tab_y(const fx_log_red *L, uint32_t x, int32_t *y, double *pre)
+{
+    int lz = 16 - fx_bitlen(x);
+    uint32_t u = (x << lz) & 0xffffu;
+    unsigned j = (u >> 10) & 31u;
+    uint32_t f = (u << 6) & 0xffffu;
+    int32_t w = L->tv[j] + (int32_t)(((uint32_t)L->ts[j] * f) >> 16) + L->tl[lz];
+    if (w < -32768 || w > 32767)
+        return 0;
+    int32_t r = (int32_t)floordiv((int64_t)floordiv((int64_t)w * (1 << (15 - L->td)), 1 << 14) + 1, 2);
+    *y = L->th[lz] + r;
+    *pre = (double)L->th[lz] + ldexp((double)w, -L->td);
+    return *y >= -32768 && *y <= 32767;
+}
+
+/* F(t) 2^Ef at t = i 2^-15 for i in [0, 2^15], from MPFR */
+static void tab_grid(long double *g, int base2, int ef)
+{
+    mpfr_t t, l;
+    mpfr_inits2(128, t, l, (mpfr_ptr)0);
+    mpfr_const_log2(l, MPFR_RNDN);
+    for (int i = 0; i <= 32768; i++) {
+        mpfr_set_si(t, i, MPFR_RNDN);
+        mpfr_div_2ui(t, t, 15, MPFR_RNDN);
+        mpfr_log1p(t, t, MPFR_RNDN);
+        if (base2)
+            mpfr_div(t, t, l, MPFR_RNDN);
+        mpfr_mul_2si(t, t, ef, MPFR_RNDN);
+        g[i] = mpfr_get_ld(t, MPFR_RNDN);
+    }
+    mpfr_clears(t, l, (mpfr_ptr)0);
+}
+
+/* tables for Ef, TL or not; then the bound over every input.  0: ok */
+static int tab_try(fx_gen *G, int base2, int ef, int tlo, const long double *g)
+{
+    fx_log_red *L = &G->log;
+    int Ei = G->in.exp, Eo = G->out.exp;
+    int64_t mn = pf_type_min_stored(&G->out), mx = pf_type_max_stored(&G->out);
+    L->td = ef - Eo;
+    L->tlo = tlo;
+    L->tseg = 0;
+    for (int j = 0; j < TAB_N; j++) {
+        const long double *gj = g + j * 1024;
+        int64_t s0 = (int64_t)llroundl(gj[1024] - gj[0]);
+        double best = INFINITY;
+        for (int64_t s = s0 - 2; s <= s0 + 2; s++) {
+            if (s < 0 || s > 32767)
+                continue;
+            long double lo = INFINITY, hi = -INFINITY;
+            for (int i = 0; i < 1024; i++) {
+                long double r = (long double)(((uint64_t)s * (uint64_t)(i << 6)) >> 16) - gj[i];
+                lo = r < lo ? r : lo;
+                hi = r > hi ? r : hi;
+            }
+            int64_t v = (int64_t)llroundl(-(lo + hi) / 2);
+            double e = (double)fmaxl(fabsl(v + lo), fabsl(v + hi));
+            if (e < best && v >= -32768 && v <= 32767) {
+                best = e;
+                L->ts[j] = (int32_t)s;
+                L->tv[j] = (int32_t)v;
+            }
+        }
+        if (best == INFINITY)
+            return -1;
+        L->tseg = best > L->tseg ? best : L->tseg;
+    }
+    /* e K = TH 2^-Eo + TL 2^-Ef, from MPFR */
+    mpfr_t a, b;
+    mpfr_inits2(256, a, b, (mpfr_ptr)0);
+    memset(L->th, 0, sizeof L->th);
+    memset(L->tl, 0, sizeof L->tl);
+    for (int lz = 0; lz < 16; lz++) {
+        long e = 15 - lz - Ei;
+        if (base2)
+            mpfr_set_si(a, e, MPFR_RNDN);
+        else {
+            mpfr_const_log2(a, MPFR_RNDN);
+            mpfr_mul_si(a, a, e, MPFR_RNDN);
+        }
+        mpfr_mul_2si(a, a, Eo, MPFR_RNDN);
+        mpfr_rint(b, a, MPFR_RNDN);
+        double th = mpfr_get_d(b, MPFR_RNDN);
+        if (th < -32768 || th > 32767) {
+            mpfr_clears(a, b, (mpfr_ptr)0);
+            return -1;
+        }
+        L->th[lz] = (int32_t)th;
+        if (tlo) {
+            mpfr_sub(a, a, b, MPFR_RNDN);
+            mpfr_mul_2si(a, a, L->td, MPFR_RNDN);
+            mpfr_rint(a, a, MPFR_RNDN);
+            L->tl[lz] = (int32_t)mpfr_get_si(a, MPFR_RNDN);
+        }
+    }
+    mpfr_clears(a, b, (mpfr_ptr)0);
+    /* x = 0: u = 0, j = 0, f = 0; the result must be the most negative */
+    L->th[16] = (int32_t)mn;
+    if (tlo)
+        L->tl[16] = -L->tv[0];
+    /* the bound: every input, against MPFR */
+    mpfr_t xr, lr;
+    mpfr_inits2(128, xr, lr, (mpfr_ptr)0);
+    mpfr_const_log2(lr, MPFR_RNDN);
+    double worst = 0;
+    int ok = 1;
+    int64_t imax = pf_type_max_stored(&G->in);
+    for (int64_t x = 0; x <= imax && ok; x++) {
+        int32_t y;
+        double pre;
+        if (!tab_y(L, (uint32_t)x, &y, &pre)) {
+            ok = 0;
+            break;
+        }
+        if (x == 0) {
+            ok = y == mn;
+            continue;
+        }
+        mpfr_set_si(xr, (long)x, MPFR_RNDN);
+        mpfr_mul_2si(xr, xr, -Ei, MPFR_RNDN);
+        mpfr_log(xr, xr, MPFR_RNDN);
+        if (base2)
+            mpfr_div(xr, xr, lr, MPFR_RNDN);
+        mpfr_mul_2si(xr, xr, Eo, MPFR_RNDN);
+        double ref = mpfr_get_d(xr, MPFR_RNDN);
+        if (ref < (double)mn || ref > (double)mx || y < mn || y > mx) {
+            ok = 0;
+            break;
+        }
+        double e = fabs(pre - ref);
+        worst = e > worst ? e : worst;
+    }
+    mpfr_clears(xr, lr, (mpfr_ptr)0);
+    if (!ok)
+        return -1;
+    L->terr = worst * (1 + 1e-12) + 1e-12; /* MPFR to 128 bits, rounded to double: far below */
+    return fx_within(G, 0, L->terr * fx_lsb(G)) ? 0 : -1;
+}
+
+/* 0: the table kernel is set up and bounded; -2: not for this type pair */
+static int prep_tab(fx_gen *G, int base2)
+{
+    if (G->in.is_signed || G->in.storage_bits != 16 || G->out.storage_bits != 16 || !G->out.is_signed ||
+        G->out.exp < 0 || G->out.exp > 14 || G->in.exp < -16 || G->in.exp > 31)
+        return -2;
+    long double *g = malloc(sizeof *g * 32769);
+    if (!g)
+        return -2;
+    int rc = -2;
+    /* TL only for log (log2's e is exact), and first without it (one lookup fewer) */
+    for (int tlo = 0; tlo <= !base2 && rc != 0; tlo++)
+        for (int ef = 15; ef > G->out.exp && rc != 0; ef--) {
+            tab_grid(g, base2, ef);
+            if (tab_try(G, base2, ef, tlo, g) == 0)
+                rc = 0;
+        }
+    free(g);
+    return rc;
+}
+
+static void tab_texts(fx_gen *G, int base2)
+{
+    const fx_log_red *L = &G->log;
+    int Ei = G->in.exp, Eo = G->out.exp, Ef = Eo + L->td;
+    const char *fn = base2 ? "log2" : "log";
+    snprintf(G->red_text, sizeof G->red_text,
+             "x = 2^e (1 + t), e = 15 - lz - %d with lz = 16 - bitlen(x) (on AVX-512 CPUs a leading-zero count "
+             "of x 2^16 + 2^15, vplzcntd, else branch-free stages), u = x << lz (vpsllvw), t in [0, 1) the 15 bits "
+             "below u's leading one (exact): segment j = t's top 5 bits, f = the other 10 (2^-16); %s(x) = e%s + "
+             "F(t), F(t) = %s; x = 0 -> lz = 16, u = 0, TH[16] = %lld (most negative)",
+             Ei, fn, base2 ? "" : " ln2", base2 ? "log2(1 + t)" : "log(1 + t)", (long long)pf_type_min_stored(&G->out));
+    snprintf(G->alt_domain, sizeof G->alt_domain, "%s on t in [0, 1]: 32 segments [j/32, (j+1)/32)",
+             base2 ? "log2(1+t)" : "log(1+t)");
+    snprintf(G->alt_order, sizeof G->alt_order,
+             "1 per segment (a line: V[j] + S[j] f), 32-entry tables V, S, TH%s; int16_t words: 16-bit lanes",
+             L->tlo ? ", TL" : "");
+    snprintf(G->alt_method, sizeof G->alt_method,
+             "per segment: S[j] the chord's rise at 2^-%d through MPFR's F(j/32), F((j+1)/32) (128 bits), searched "
+             "+-2 for the least error; V[j] centres the error of V[j] + floor(S[j] f 2^-16) - F(t) 2^%d over the "
+             "segment's 1024 inputs (discrete minimax of the integer step, floor included); TH[lz] = round(e%s 2^%d)%s "
+             "(MPFR, to nearest)",
+             Ef, Ef, base2 ? "" : " ln2", Eo,
+             L->tlo ? ", TL[lz] = round((e ln2 2^Eo - TH[lz]) 2^d)" : "");
+    snprintf(G->alt_con, sizeof G->alt_con, "none per segment (C0 only up to the tables' rounding); x = 0 gives the most negative output");
+    snprintf(G->alt_formats, sizeof G->alt_formats,
+             "V, S, TH%s int16_t; w = V[j] + pmulhuw(S[j], f)%s at 2^-%d (int16_t); result TH[lz] + round(w 2^-%d), "
+             "the rounding multiply-high by 2^%d (pmulhrsw), ties up",
+             L->tlo ? ", TL" : "", L->tlo ? " + TL[lz]" : "", Ef, L->td, 15 - L->td);
+    snprintf(G->alt_poly, sizeof G->alt_poly,
+             "segment lines within %.4f 2^-%d (%.4f LSB) of F(t) at every segment input (floor included)", L->tseg,
+             Ef, ldexp(L->tseg, -L->td));
+    snprintf(G->wide_text, sizeof G->wide_text,
+             "16-bit words throughout; lookups (vpermw), leading-zero count (vplzcntd on x 2^16 + 2^15, packed to "
+             "words) and the per-element shift (vpsllvw) by AVX-512BW/CD intrinsics (x86-64-v4); other clones, "
+             "scalar form: the same steps in plain C");
+    snprintf(G->alt_arith, sizeof G->alt_arith,
+             "integers only (no floating point, no <math.h>); the segment product floors (pmulhuw: in the bound), "
+             "the result is rounded once to nearest, ties up (pmulhrsw); bit-identical under any compiler flags");
+    snprintf(G->bound_note, sizeof G->bound_note,
+             "taken over every input from the emitted integer steps (the table kernel) against MPFR");
+}
+
+static void tab_table(pf_buf *b, const char *name, const char *suf, const int32_t *v, int n, const char *what)
+{
+    pf_printf(b, "/* %s */\nstatic const int32_t %s_%s[%d] = {", what, name, suf, n);
+    for (int i = 0; i < n; i++)
+        pf_printf(b, "%s%d,", i % 8 ? " " : "\n    ", (int)v[i]);
+    pf_put(b, "\n};\n");
+}
+
+static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int base2)
+{
+    const fx_log_red *L = &G->log;
+    const char *N = G->name;
+    int Ei = G->in.exp, Eo = G->out.exp, Ef = Eo + L->td;
+    char w[160];
+    const char *fn = base2 ? "log2" : "log";
+    snprintf(w, sizeof w, "V[j]: the segment line's value at its start, F = %s(1 + t) at 2^-%d", fn, Ef);
+    tab_table(tabs, N, "tv", L->tv, 32, w);
+    snprintf(w, sizeof w, "S[j]: the segment line's rise across the segment, at 2^-%d", Ef);
+    tab_table(tabs, N, "ts", L->ts, 32, w);
+    snprintf(w, sizeof w, "TH[lz] = round(e%s 2^%d), e = 15 - lz - %d (MPFR); TH[16] (x = 0): the most negative",
+             base2 ? "" : " ln2", Eo, Ei);
+    tab_table(tabs, N, "th", L->th, 32, w);
+    if (L->tlo) {
+        snprintf(w, sizeof w, "TL[lz] = round((e ln2 2^%d - TH[lz]) 2^%d) (MPFR); TL[16] = -V[0] (x = 0)", Eo, L->td);
+        tab_table(tabs, N, "tl", L->tl, 32, w);
+    }
+    snprintf(w, sizeof w, "2^%d: round(w / 2^%d), a rounding multiply-high", 15 - L->td, L->td);
+    const char *kr = fx_k16(G, (int64_t)1 << (15 - L->td), w);
+    pf_put(body, "    /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */\n"
+                 "    int lz = 16 - pf_fx_bitlen(x);\n"
+                 "    uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */\n"
+                 "    unsigned j = (u >> 10) & 31u;               /* segment: t's top 5 bits */\n"
+                 "    uint16_t f = (uint16_t)(u << 6);            /* t's other 10 bits: the place in it, 2^-16 */\n");
+    pf_printf(body, "    /* F(t) on segment j, at 2^-%d: V[j] + floor(S[j] f 2^-16) (pmulhuw)%s */\n", Ef,
+              L->tlo ? ", plus e ln2's low part" : "");
+    pf_printf(body, "    int16_t w = (int16_t)(%s_tv[j] + (int32_t)(((uint32_t)%s_ts[j] * f) >> 16)%s);\n", N, N,
+              L->tlo ? "" : "");
+    if (L->tlo)
+        pf_printf(body, "    w = (int16_t)(w + %s_tl[lz]);\n", N);
+    pf_printf(body, "    /* e%s at 2^-%d plus w rounded once to it */\n", base2 ? "" : " ln2", Eo);
+    pf_printf(body, "    return (%s)(%s_th[lz] + pf_fx_mulhrs(w, %s));", G->ot, N, kr);
+    const char *cond = "#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)\n";
+    pf_printf(kern,
+              "\n\n/* AVX-512BW/CD: the same steps on 32 lanes, with intrinsics, as GCC does not\n"
+              "   turn the table lookups into vpermw nor a 16-bit leading-zero count into\n"
+              "   vplzcntd: the array form runs this loop on a CPU with x86-64-v4 (see its\n"
+              "   dispatch), the rest of the array and the other clones use the scalar steps\n"
+              "   above.  x 2^16 + 2^15 in 32-bit lanes has lz leading zeros (16 for x = 0);\n"
+              "   unpack and pack keep the lanes' order.  The same values (pfmathgen sweeps\n"
+              "   the array form on its machine against the scalar one). */\n%s#include <immintrin.h>\n"
+              "extern %s %s(%s x); /* the scalar form, for the last n %% 32 */\n"
+              "/* 32 table entries as 16-bit words, for vpermw */\n"
+              "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16(const int32_t *t)\n{\n"
+              "    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),\n"
+              "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n"
+              "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
+              "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
+              cond, G->ot, N, G->it, N, N, G->it, G->ot);
+    pf_printf(kern, "    const __m512i tv = %s_w16(%s_tv), ts = %s_w16(%s_ts), th = %s_w16(%s_th);\n", N, N, N, N, N, N);
+    if (L->tlo)
+        pf_printf(kern, "    const __m512i tl = %s_w16(%s_tl);\n", N, N);
+    pf_printf(kern, "    const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(%d);\n", 1 << (15 - L->td));
+    pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
+                 "        __m512i xv = _mm512_loadu_si512(x + i);\n"
+                 "        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),\n"
+                 "                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));\n"
+                 "        __m512i u = _mm512_sllv_epi16(xv, lz);\n"
+                 "        __m512i j = _mm512_srli_epi16(u, 10), f = _mm512_slli_epi16(u, 6); /* vpermw reads j's low 5 bits */\n"
+                 "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
+                 "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));\n");
+    if (L->tlo)
+        pf_put(kern, "        w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));\n");
+    pf_printf(kern, "        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));\n"
+                    "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+              N);
+    G->bw16 = 2;
+}
+
 /* 16-bit lanes (see fx_log16.c.in): z = e K + P at 2^-a in an int16_t,
    then rounded once to the output; a >= Eo, and |z| 2^a must fit */
 static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
@@ -128,10 +431,21 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
         mpfr_clear(l);
     }
     G->fmax = 0;
+    G->kind = 0;
+    G->alt_domain[0] = G->alt_order[0] = G->alt_method[0] = G->alt_con[0] = G->alt_formats[0] = G->alt_poly[0] = 0;
+    G->alt_arith[0] = 0;
+    G->bound_note[0] = 0;
     snprintf(G->sat_text, sizeof G->sat_text, "%s(x) for x <= 0 (undefined) gives %lld, the most negative output",
              fn, (long long)pf_type_min_stored(&G->out));
-    if (G->W == 16)
+    if (G->W == 16) {
+        /* the table kernel where the type pair allows it, else the Horner form */
+        if (prep_tab(G, base2) == 0) {
+            G->kind = 1;
+            tab_texts(G, base2);
+            return 0;
+        }
         return prepare16(G, err, errlen, base2);
+    }
     G->dred = base2 ? 0 : (double)G->log.emax * ldexp(0.5, -G->log.ez);
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = n - %d with n = bitlen(x) - 1 (leading-zero count), t in [0, 1) the bits "
@@ -147,6 +461,15 @@ static int prep_log2(fx_gen *G, char *err, size_t n) { return prepare(G, err, n,
 
 static void budget16(fx_gen *G)
 {
+    if (G->kind == 1) {
+        /* the table kernel: no Horner polynomial (the fit the pipeline makes
+           is not used); the pre-rounding error over every input, of which the
+           segment lines' share is the polynomial's */
+        G->R = 0;
+        G->A = G->log.terr * fx_lsb(G);
+        G->poly_err = ldexp(G->log.tseg, -(G->out.exp + G->log.td));
+        return;
+    }
     /* 16-bit sum: e K (rounded for log), P rounded to 2^-a when finer, then
        the final rounding (the 1/2 lsb).  Wide sum, when that misses the
        bound: e K exact but for K's rounding, P exact, one rounding */
@@ -229,6 +552,20 @@ static const char *rsh_mulhrs(fx_gen *G, char *buf, size_t n, const char *v, int
 
 static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
+    if (G->kind == 1) {
+        pf_buf tb = {0}, tt = {0}, tk = {0};
+        emit_tab(G, &tb, &tt, &tk, base2);
+        char minout[32];
+        snprintf(minout, sizeof minout, "%lld", (long long)pf_type_min_stored(&G->out));
+        const char *kv[] = {"FUNC", base2 ? "log2" : "log", "KTEXT", base2 ? "" : " ln2", "PTEXT",
+                            base2 ? "log2(1 + t)," : "log(1 + t),", "MINOUT", minout, "NAME", G->name, "IT", G->it,
+                            "OT", G->ot, "BODY", tb.s, "TABLES", tt.s, "KERNEL", tk.s, NULL};
+        pf_subst(b, pf_template("fx_logtab16.c"), kv);
+        free(tb.s);
+        free(tt.s);
+        free(tk.s);
+        return;
+    }
     pf_buf body = {0}, horner = {0};
     int Ei = G->in.exp, Eo = G->out.exp, a = (int)G->log.a16, Ep = G->Ep;
     int nb = fx_bitlen((uint64_t)pf_type_max_stored(&G->in));
@@ -280,16 +617,6 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
                          "rounded once */\n", Eo, Ep, Ep);
         char rs[96];
         pf_printf(&body, "    int16_t r = (int16_t)(eh + %s);\n", rsh_mulhrs(G, rs, sizeof rs, "(int16_t)(el + p)", d));
-        pf_put(&body, "    int16_t rc = (int16_t)");
-        rc[0] = 0;
-        if (mn > -32768)
-            snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "(r < %lld ? %lld : ", (long long)mn, (long long)mn);
-        if (mx < 32767)
-            snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "(r > %lld ? %lld : ", (long long)mx, (long long)mx);
-        snprintf(rc + strlen(rc), sizeof rc - strlen(rc), "r%s%s", mx < 32767 ? ")" : "", mn > -32768 ? ")" : "");
-        pf_put(&body, rc);
-        pf_put(&body, ";\n");
-        snprintf(rc, sizeof rc, "rc");
     } else {
         char pa[96];
         if (Ep > a)
@@ -310,6 +637,8 @@ static void emit16(fx_gen *G, pf_buf *b, int base2)
         } else {
             pf_put(&body, "    int16_t r = z;\n");
         }
+    }
+    if (!G->log.wide) { /* both 16-bit sums end in r: its clamp to the output's range */
         pf_put(&body, "    int16_t rc = (int16_t)");
         rc[0] = 0;
         if (mn > -32768)

@@ -4,34 +4,39 @@
  * Regenerate:  pfmathgen --func log --type 'ufixed<16,8>' --out-type 'fixed<15,11>' --variant fast -o libpfmath/generated/pf_fx_log_uq8_q11_fast.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
- * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
- *              constant shifts and selects; on AVX-512 CPUs a leading-zero count, the same n), 
- *              t in [0, 1) the 15 bits below the leading one (exact); log(x) = e ln2 + P(t) 
- *              summed in an int16_t at 2^-11 (e ln2 = round(e 2^a K 2^-15), K = round(ln2 2^15) 
- *              from MPFR, the rounding multiply-high), rounded once; x <= 0 -> -32768 (most 
- *              negative)
- * Domain:      log(1+t) on t in [0, 1]
- * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       every step in 16-bit lanes
- * Method:      least-squares absolute error (Gauss-Legendre quadrature), coefficients rounded 
- *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
- * Constraints: p(0) = 0 (log(1) = 0 exactly)
- * Formats:     x unsigned fixed<15,15> in int16_t; p3 fixed<15,15>, p2 fixed<15,15>, p1 
- *              fixed<15,15>, p0 fixed<15,15>; steps p = pf_fx_mulhrs(p, x) + c, the rounding 
- *              multiply-high round(p x 2^-15) (pmulhrsw), formats from pf_bw_horner_word (bound 
- *              on each |p_k| plus the rounding errors before it); Horner rounding error <= 
- *              4.578e-05
- * Polynomial:  max absolute error 9.141e-04 (2^-10.10) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.4892 LSB (polynomial 1.8721, 
- *              arithmetic and reduction 0.6172) = 2.9892 LSB
- * Sweep:       max 2.4833 LSB at x = 16369 (63.9414062), mean 0.6806 LSB; exhaustive: all 65536 
- *              inputs
+ * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (on AVX-512 CPUs a 
+ *              leading-zero count of x 2^16 + 2^15, vplzcntd, else branch-free stages), u = x 
+ *              << lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment 
+ *              j = t's top 5 bits, f = the other 10 (2^-16); log(x) = e ln2 + F(t), F(t) = 
+ *              log(1 + t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
+ * Domain:      log(1+t) on t in [0, 1]: 32 segments [j/32, (j+1)/32)
+ * Order:       1 per segment (a line: V[j] + S[j] f), 32-entry tables V, S, TH; int16_t words: 
+ *              16-bit lanes
+ * Lanes:       16-bit words throughout; lookups (vpermw), leading-zero count (vplzcntd on x 
+ *              2^16 + 2^15, packed to words) and the per-element shift (vpsllvw) by 
+ *              AVX-512BW/CD intrinsics (x86-64-v4); other clones, scalar form: the same steps 
+ *              in plain C
+ * Method:      per segment: S[j] the chord's rise at 2^-15 through MPFR's F(j/32), F((j+1)/32) 
+ *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
+ *              floor(S[j] f 2^-16) - F(t) 2^15 over the segment's 1024 inputs (discrete minimax 
+ *              of the integer step, floor included); TH[lz] = round(e ln2 2^11) (MPFR, to 
+ *              nearest)
+ * Constraints: none per segment (C0 only up to the tables' rounding); x = 0 gives the most 
+ *              negative output
+ * Formats:     V, S, TH int16_t; w = V[j] + pmulhuw(S[j], f) at 2^-15 (int16_t); result TH[lz] 
+ *              + round(w 2^-4), the rounding multiply-high by 2^11 (pmulhrsw), ties up
+ * Polynomial:  segment lines within 2.6440 2^-15 (0.1653 LSB) of F(t) at every segment input 
+ *              (floor included)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.5878 LSB (polynomial 0.1653, 
+ *              arithmetic and reduction 0.4226) = 1.0878 LSB; taken over every input from the 
+ *              emitted integer steps (the table kernel) against MPFR
+ * Sweep:       max 1.0420 LSB at x = 768 (3), mean 0.3040 LSB; exhaustive: all 65536 inputs
  * Saturation:  log(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
- *              per rounding); bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating point, no <math.h>); the segment product floors 
+ *              (pmulhuw: in the bound), the result is rounded once to nearest, ties up 
+ *              (pmulhrsw); bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -215,84 +220,96 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* log in fixed point, in 16-bit lanes.  x = 2^e (1 + t) with t in
-   [0, 1): e from a staged normalization of the stored integer, t its
-   remaining bits (exact).  log(x) = e ln2 + P(t), P(t) ~ log(1 + t),
-   summed in an int16_t and rounded once.  x <= 0 (log of 0 or of a
-   negative number) gives the most negative output, -32768.  k[] holds
-   the constants; bw = 1 (AVX-512 CPUs, see fx_tail16.c.in) takes the
-   leading-zero count for the normalization, bw = 0 the staged one: the same
-   values. */
+/* log in fixed point, in 16-bit lanes, from tables (gen/fixed/fixed_log.c,
+   the table kernel).  x = 2^(15 - lz) (1 + t): lz = 16 - bitlen(x), t the
+   15 bits below the leading one (exact).  log(x) = e ln2 + F(t),
+   F(t) = log(1 + t), a line on each of 32 segments of t (V[j] + S[j] f, j the
+   segment, f the place in it), e ln2 from TH[lz]; one rounding at the
+   end.  x = 0 gives the most negative output, -32768 (TH[16]).  k[] holds
+   the rounding's multiplier; bw is unused (the AVX-512 loop below has its
+   own intrinsics). */
+/* V[j]: the segment line's value at its start, F = log(1 + t) at 2^-15 */
+static const int32_t pf_log_uq8_q11_fast_tv[32] = {
+    2, 1010, 1989, 2938, 3861, 4759, 5633, 6484,
+    7314, 8123, 8912, 9683, 10436, 11173, 11893, 12598,
+    13288, 13963, 14625, 15274, 15910, 16534, 17147, 17748,
+    18338, 18918, 19488, 20049, 20599, 21141, 21674, 22198,
+};
+/* S[j]: the segment line's rise across the segment, at 2^-15 */
+static const int32_t pf_log_uq8_q11_fast_ts[32] = {
+    1009, 979, 949, 924, 898, 874, 851, 830,
+    809, 789, 772, 754, 737, 720, 705, 690,
+    675, 662, 649, 636, 625, 613, 601, 591,
+    581, 571, 561, 550, 542, 533, 524, 516,
+};
+/* TH[lz] = round(e ln2 2^11), e = 15 - lz - 8 (MPFR); TH[16] (x = 0): the most negative */
+static const int32_t pf_log_uq8_q11_fast_th[32] = {
+    9937, 8517, 7098, 5678, 4259, 2839, 1420, 0,
+    -1420, -2839, -4259, -5678, -7098, -8517, -9937, -11357,
+    -32768, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0,
+};
 PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k, int bw)
 {
-    (void)bw; /* unused by compilers without __builtin_clz */
-    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */
-    uint16_t u;
-    int16_t n; /* bitlen(ux) - 1 */
-#if defined(__GNUC__)
-    if (bw) {
-        int lz = __builtin_clz((uint32_t)ux) - 16; /* ux >= 1: in [0, 15] */
-        u = (uint16_t)(ux << lz);
-        n = (int16_t)(15 - lz);
-    } else
-#endif
-    {
-        u = (uint16_t)(ux << 0);
-        n = 15;
-        n = (int16_t)(u < 0x100u ? n - 8 : n);
-        u = (uint16_t)(u < 0x100u ? u << 8 : u);
-        n = (int16_t)(u < 0x1000u ? n - 4 : n);
-        u = (uint16_t)(u < 0x1000u ? u << 4 : u);
-        n = (int16_t)(u < 0x4000u ? n - 2 : n);
-        u = (uint16_t)(u < 0x4000u ? u << 2 : u);
-        n = (int16_t)(u < 0x8000u ? n - 1 : n);
-        u = (uint16_t)(u < 0x8000u ? u << 1 : u);
-    }
-    int16_t tq = (int16_t)(u & (uint16_t)k[0]); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    /* P(t) ~ log(1 + t): Horner in 16-bit words, one rounding per step */
-    int16_t p = k[1]; /* c3 = 0.114776611328 */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[2]); /* c2 = -0.407409667969, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c1 = 0.986694335938, 2^-15 units */
-    p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-15 units */
-    int16_t ea = (int16_t)((n - 8) * k[5]); /* e 2^11 */
-    int16_t z = (int16_t)(pf_fx_mulhrs(ea, k[6]) + pf_fx_mulhrs(p, k[4])); /* e ln2 + P at 2^-11 */
-    int16_t r = z;
-    int16_t rc = (int16_t)r;
-    return (int16_t)(x <= 0 ? -32768 : rc);
+    (void)bw;
+    /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */
+    int lz = 16 - pf_fx_bitlen(x);
+    uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */
+    unsigned j = (u >> 10) & 31u;               /* segment: t's top 5 bits */
+    uint16_t f = (uint16_t)(u << 6);            /* t's other 10 bits: the place in it, 2^-16 */
+    /* F(t) on segment j, at 2^-15: V[j] + floor(S[j] f 2^-16) (pmulhuw) */
+    int16_t w = (int16_t)(pf_log_uq8_q11_fast_tv[j] + (int32_t)(((uint32_t)pf_log_uq8_q11_fast_ts[j] * f) >> 16));
+    /* e ln2 at 2^-11 plus w rounded once to it */
+    return (int16_t)(pf_log_uq8_q11_fast_th[lz] + pf_fx_mulhrs(w, k[0]));
 }
 
+/* AVX-512BW/CD: the same steps on 32 lanes, with intrinsics, as GCC does not
+   turn the table lookups into vpermw nor a 16-bit leading-zero count into
+   vplzcntd: the array form runs this loop on a CPU with x86-64-v4 (see its
+   dispatch), the rest of the array and the other clones use the scalar steps
+   above.  x 2^16 + 2^15 in 32-bit lanes has lz leading zeros (16 for x = 0);
+   unpack and pack keep the lanes' order.  The same values (pfmathgen sweeps
+   the array form on its machine against the scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#include <immintrin.h>
+extern int16_t pf_log_uq8_q11_fast(uint16_t x); /* the scalar form, for the last n % 32 */
+/* 32 table entries as 16-bit words, for vpermw */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log_uq8_q11_fast_w16(const int32_t *t)
+{
+    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
+                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
+}
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    const __m512i tv = pf_log_uq8_q11_fast_w16(pf_log_uq8_q11_fast_tv), ts = pf_log_uq8_q11_fast_w16(pf_log_uq8_q11_fast_ts), th = pf_log_uq8_q11_fast_w16(pf_log_uq8_q11_fast_th);
+    const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(2048);
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        __m512i xv = _mm512_loadu_si512(x + i);
+        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
+                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
+        __m512i u = _mm512_sllv_epi16(xv, lz);
+        __m512i j = _mm512_srli_epi16(u, 10), f = _mm512_slli_epi16(u, 6); /* vpermw reads j's low 5 bits */
+        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
+                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));
+        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
+        _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_log_uq8_q11_fast(x[i]);
+}
+#endif
+
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_log_uq8_q11_fast_k[7] = {
-    32767,  /* k[0]: 0x7fff: t's mask (from k[]: hides t's range from GCC) */
-    3761,   /* k[1]: c3 = 0.114776611328 */
-    -13350, /* k[2]: c2 = -0.407409667969 */
-    32332,  /* k[3]: c1 = 0.986694335938 */
-    2048,   /* k[4]: 2^11: round(z / 2^4), a rounding multiply-high */
-    2048,   /* k[5]: 2^11: e at 2^-11 */
-    22713,  /* k[6]: round(ln2 2^15) */
+static const int16_t pf_log_uq8_q11_fast_k[1] = {
+    2048,   /* k[0]: 2^11: round(w / 2^4), a rounding multiply-high */
 };
 
 int16_t pf_log_uq8_q11_fast(uint16_t x)
 {
     return pf_log_uq8_q11_fast_inline(x, pf_log_uq8_q11_fast_k, 0);
 }
-
-/* AVX-512 has a 16-bit per-element shift (vpsrlvw) and a leading-zero count
-   (vplzcntd), AVX2 neither: on a CPU with x86-64-v4 the array form runs this
-   loop, whose kernel (bw = 1) uses them; the clones below keep the forms every
-   level vectorizes (bw = 0), as the scalar form does.  The same values
-   (pfmathgen sweeps the array form on its machine against the scalar one). */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
-__attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
-{
-    const int16_t *k = pf_log_uq8_q11_fast_k;
-    __asm__("" : "+r"(k));
-#pragma GCC ivdep
-    for (size_t i = 0; i < n; i++)
-        y[i] = pf_log_uq8_q11_fast_inline(x[i], k, 1);
-}
-#endif
 
 /* Array form in 16-bit lanes.  The constants come through a pointer that an
    empty asm hides from GCC: GCC 12 rewrites a product by a known constant
