@@ -34,20 +34,22 @@ static void g_log2_1p(mpfr_t y, const mpfr_t t, const void *ctx)
  *
  * An unsigned input of at most 16 bits is x = 2^(15 - lz) (1 + t) with
  * lz = 16 - bitlen(x) (16 for x = 0): u = x << lz has its leading one at
- * bit 15, j = t's top 5 bits picks one of 32 segments of [0, 1) and f =
- * t's other 10 bits (at 2^-16) the place in it, all exact.  F(t) = log(1 + t)
+ * bit 15, j = t's top jb bits picks one of 2^jb segments of [0, 1) and f =
+ * t's other 15 - jb bits (at 2^-16) the place in it, all exact: jb = 4 (16
+ * segments) where the variant's target allows it, else 5 (32).  F(t) = log(1 + t)
  * or log2(1 + t) is a line per segment at 2^-Ef, V[j] + floor(S[j] f 2^-16),
  * and e K (e = 15 - lz - Ei) = TH[lz] 2^-Eo + TL[lz] 2^-Ef; the result is
  * TH[lz] + round((V[j] + floor(S[j] f 2^-16) + TL[lz]) 2^-(Ef - Eo)), every
- * step a 16-bit word, the lookups one vpermw each.  Where the output's lsb
+ * step a 16-bit word, the lookups one vpermw each (AVX-512), or vpshufb on
+ * the tables' byte planes (AVX2: two per plane for 32 entries, one for 16).  Where the output's lsb
  * allows (fast, log2), TL is left out: TH alone, rounded at 2^-Eo.
  * S[j] comes from the chord through MPFR's values at the segment's ends
- * (searched +-2 around it), V[j] centres the segment's error over its 1024
- * points (a discrete minimax of the integer step, the floor included).  The
+ * (searched +-2 around it), V[j] centres the segment's error over its
+ * 2^(15-jb) points (a discrete minimax of the integer step, the floor included).  The
  * bound is taken over every input by running these integer steps (tab_y)
  * against MPFR. */
 
-#define TAB_N 32 /* segments: one vpermw (32 16-bit entries) */
+/* segments: 2^jb, at most 32 (one vpermw of 32 16-bit entries) */
 
 static int64_t floordiv(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
@@ -57,8 +59,9 @@ static int tab_y(const fx_log_red *L, uint32_t x, int32_t *y, double *pre)
 {
     int lz = 16 - fx_bitlen(x);
     uint32_t u = (x << lz) & 0xffffu;
-    unsigned j = (u >> 10) & 31u;
-    uint32_t f = (u << 6) & 0xffffu;
+    int jb = L->tjb;
+    unsigned j = (u >> (15 - jb)) & ((1u << jb) - 1);
+    uint32_t f = (u << (jb + 1)) & 0xffffu;
     int32_t w = L->tv[j] + (int32_t)(((uint32_t)L->ts[j] * f) >> 16) + L->tl[lz];
     if (w < -32768 || w > 32767)
         return 0;
@@ -87,7 +90,7 @@ static void tab_grid(long double *g, int base2, int ef)
 }
 
 /* tables for Ef, TL or not; then the bound over every input.  0: ok */
-static int tab_try(fx_gen *G, int base2, int ef, int tlo, const long double *g)
+static int tab_try(fx_gen *G, int base2, int ef, int tlo, int jb, const long double *g)
 {
     fx_log_red *L = &G->log;
     int Ei = G->in.exp, Eo = G->out.exp;
@@ -95,20 +98,27 @@ static int tab_try(fx_gen *G, int base2, int ef, int tlo, const long double *g)
     L->td = ef - Eo;
     L->tlo = tlo;
     L->tseg = 0;
-    for (int j = 0; j < TAB_N; j++) {
-        const long double *gj = g + j * 1024;
-        int64_t s0 = (int64_t)llroundl(gj[1024] - gj[0]);
+    L->tjb = jb;
+    int np = 1 << (15 - jb); /* points per segment */
+    for (int j = 0; j < 1 << jb; j++) {
+        const long double *gj = g + j * np;
+        int64_t s0 = (int64_t)llroundl(gj[np] - gj[0]);
         double best = INFINITY;
         for (int64_t s = s0 - 2; s <= s0 + 2; s++) {
             if (s < 0 || s > 32767)
                 continue;
             long double lo = INFINITY, hi = -INFINITY;
-            for (int i = 0; i < 1024; i++) {
-                long double r = (long double)(((uint64_t)s * (uint64_t)(i << 6)) >> 16) - gj[i];
+            for (int i = 0; i < np; i++) {
+                long double r = (long double)(((uint64_t)s * ((uint64_t)i << (jb + 1))) >> 16) - gj[i];
                 lo = r < lo ? r : lo;
                 hi = r > hi ? r : hi;
             }
             int64_t v = (int64_t)llroundl(-(lo + hi) / 2);
+            /* x = 0 reads V[0] alone (u = 0): without TL (whose TL[16] = -V[0]
+               cancels it), V[0] must round to 0 at the output, |V[0]| < 2^(td-1) */
+            int64_t vh = (int64_t)1 << (L->td - 1);
+            if (j == 0 && !tlo)
+                v = v < -vh ? -vh : v > vh - 1 ? vh - 1 : v;
             double e = (double)fmaxl(fabsl(v + lo), fabsl(v + hi));
             if (e < best && v >= -32768 && v <= 32767) {
                 best = e;
@@ -202,39 +212,70 @@ static int prep_tab(fx_gen *G, int base2)
     if (!g)
         return -2;
     int rc = -2;
-    /* TL only for log (log2's e is exact), and first without it (one lookup fewer) */
-    for (int tlo = 0; tlo <= !base2 && rc != 0; tlo++)
-        for (int ef = 15; ef > G->out.exp && rc != 0; ef--) {
-            tab_grid(g, base2, ef);
-            if (tab_try(G, base2, ef, tlo, g) == 0)
-                rc = 0;
-        }
+    /* 16 segments first (one vpshufb per byte plane on AVX2, where 32 take
+       two), then 32; TL only for log (log2's e is exact), and first without
+       it (one lookup fewer) */
+    for (int jb = 4; jb <= 5 && rc != 0; jb++)
+        for (int tlo = 0; tlo <= !base2 && rc != 0; tlo++)
+            for (int ef = 15; ef > G->out.exp && rc != 0; ef--) {
+                tab_grid(g, base2, ef);
+                if (tab_try(G, base2, ef, tlo, jb, g) == 0)
+                    rc = 0;
+            }
     free(g);
     return rc;
+}
+
+/* The AVX2 loop's plan: 0 if it cannot give the scalar form's values.
+   There, x = 0 makes both TH and TL lookups 0 (their index has bit 7 set),
+   so the result is TH' + round(w 2^-td) with TH' the stored -32768 and w =
+   V[0] (no TL: tab_try has checked that it rounds to 0) or, with TL, 0: V
+   is stored less V[0] and TL plus V[0], the same sums for x > 0.  That
+   needs the most negative output -32768.
+   *tharith: TH[lz] = (15 - lz - Ei) 2^Eo for every lz < 16 (log2) and the
+   most negative output c 2^Eo with -127 - Ei <= c <= -Ei: TH = max(ex -
+   127 - Ei, c) << Eo from the float's exponent ex (0 for x = 0), no lookup
+   (e = ex - 127 - Ei >= -Ei for x > 0, -127 - Ei for x = 0).
+   *tlbyte: every TL[lz] + V[0] fits a signed byte (one plane). */
+static int tab_avx2(const fx_gen *G, int *tharith, int *tlbyte)
+{
+    const fx_log_red *L = &G->log;
+    int Ei = G->in.exp, Eo = G->out.exp;
+    int64_t mn = pf_type_min_stored(&G->out);
+    *tharith = !L->tlo && mn % ((int64_t)1 << Eo) == 0;
+    for (int lz = 0; lz < 16 && *tharith; lz++)
+        *tharith = L->th[lz] == (int64_t)(15 - lz - Ei) * ((int64_t)1 << Eo) && mn / ((int64_t)1 << Eo) <= -Ei &&
+                   mn / ((int64_t)1 << Eo) >= -127 - Ei;
+    *tlbyte = 1;
+    for (int lz = 0; lz < 16; lz++)
+        *tlbyte &= L->tl[lz] + L->tv[0] >= -128 && L->tl[lz] + L->tv[0] <= 127;
+    return *tharith || mn == -32768;
 }
 
 static void tab_texts(fx_gen *G, int base2)
 {
     const fx_log_red *L = &G->log;
-    int Ei = G->in.exp, Eo = G->out.exp, Ef = Eo + L->td;
+    int Ei = G->in.exp, Eo = G->out.exp, Ef = Eo + L->td, jb = L->tjb, ns = 1 << jb;
     const char *fn = base2 ? "log2" : "log";
+    int tha, tlb, avx2 = tab_avx2(G, &tha, &tlb);
     snprintf(G->red_text, sizeof G->red_text,
-             "x = 2^e (1 + t), e = 15 - lz - %d with lz = 16 - bitlen(x) (on AVX-512 CPUs a leading-zero count "
-             "of x 2^16 + 2^15, vplzcntd, else branch-free stages), u = x << lz (vpsllvw), t in [0, 1) the 15 bits "
-             "below u's leading one (exact): segment j = t's top 5 bits, f = the other 10 (2^-16); %s(x) = e%s + "
-             "F(t), F(t) = %s; x = 0 -> lz = 16, u = 0, TH[16] = %lld (most negative)",
-             Ei, fn, base2 ? "" : " ln2", base2 ? "log2(1 + t)" : "log(1 + t)", (long long)pf_type_min_stored(&G->out));
-    snprintf(G->alt_domain, sizeof G->alt_domain, "%s on t in [0, 1]: 32 segments [j/32, (j+1)/32)",
-             base2 ? "log2(1+t)" : "log(1+t)");
+             "x = 2^e (1 + t), e = 15 - lz - %d with lz = 16 - bitlen(x) (AVX-512: a leading-zero count of x 2^16 + "
+             "2^15, vplzcntd;%s else branch-free stages), u = x << lz (vpsllvw), t in [0, 1) the 15 bits below u's "
+             "leading one (exact): segment j = t's top %d bits, f = the other %d (2^-16); %s(x) = e%s + F(t), F(t) = "
+             "%s; x = 0 -> lz = 16, u = 0, TH[16] = %lld (most negative)",
+             Ei, avx2 ? " AVX2: the exponent and the fraction bits of x converted to float, exact;" : "", jb, 15 - jb,
+             fn, base2 ? "" : " ln2", base2 ? "log2(1 + t)" : "log(1 + t)", (long long)pf_type_min_stored(&G->out));
+    snprintf(G->alt_domain, sizeof G->alt_domain, "%s on t in [0, 1]: %d segments [j/%d, (j+1)/%d)",
+             base2 ? "log2(1+t)" : "log(1+t)", ns, ns, ns);
     snprintf(G->alt_order, sizeof G->alt_order,
-             "1 per segment (a line: V[j] + S[j] f), 32-entry tables V, S, TH%s; int16_t words: 16-bit lanes",
-             L->tlo ? ", TL" : "");
+             "1 per segment (a line: V[j] + S[j] f), %d-entry tables V, S; TH%s by lz; int16_t words: 16-bit lanes",
+             ns, L->tlo ? ", TL" : "");
     snprintf(G->alt_method, sizeof G->alt_method,
-             "per segment: S[j] the chord's rise at 2^-%d through MPFR's F(j/32), F((j+1)/32) (128 bits), searched "
+             "per segment: S[j] the chord's rise at 2^-%d through MPFR's F(j/%d), F((j+1)/%d) (128 bits), searched "
              "+-2 for the least error; V[j] centres the error of V[j] + floor(S[j] f 2^-16) - F(t) 2^%d over the "
-             "segment's 1024 inputs (discrete minimax of the integer step, floor included); TH[lz] = round(e%s 2^%d)%s "
+             "segment's %d inputs (discrete minimax of the integer step, floor included); TH[lz] = round(e%s 2^%d)%s "
              "(MPFR, to nearest)",
-             Ef, Ef, base2 ? "" : " ln2", Eo,
+             Ef, ns, ns, Ef, 1 << (15 - jb), base2 ? "" : " ln2", Eo,
              L->tlo ? ", TL[lz] = round((e ln2 2^Eo - TH[lz]) 2^d)" : "");
     snprintf(G->alt_con, sizeof G->alt_con, "none per segment (C0 only up to the tables' rounding); x = 0 gives the most negative output");
     snprintf(G->alt_formats, sizeof G->alt_formats,
@@ -244,13 +285,23 @@ static void tab_texts(fx_gen *G, int base2)
     snprintf(G->alt_poly, sizeof G->alt_poly,
              "segment lines within %.4f 2^-%d (%.4f LSB) of F(t) at every segment input (floor included)", L->tseg,
              Ef, ldexp(L->tseg, -L->td));
-    snprintf(G->wide_text, sizeof G->wide_text,
-             "16-bit words throughout; lookups (vpermw), leading-zero count (vplzcntd on x 2^16 + 2^15, packed to "
-             "words) and the per-element shift (vpsllvw) by AVX-512BW/CD intrinsics (x86-64-v4); other clones, "
-             "scalar form: the same steps in plain C");
+    if (avx2)
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 "16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count (vplzcntd on x 2^16 + "
+                 "2^15, packed to words), per-element shift (vpsllvw) by AVX-512BW/CD intrinsics; x86-64-v3: "
+                 "lookups by vpshufb on byte planes, lz and t from x's float (vcvtdq2ps on even and odd words)%s; "
+                 "other clones, scalar form: plain C",
+                 tha ? ", TH = max(ex - c, lo) << Eo from its exponent" : "");
+    else
+        snprintf(G->wide_text, sizeof G->wide_text,
+                 "16-bit words throughout; lookups (vpermw), leading-zero count (vplzcntd on x 2^16 + 2^15, packed to "
+                 "words) and the per-element shift (vpsllvw) by AVX-512BW/CD intrinsics (x86-64-v4); other clones, "
+                 "scalar form: the same steps in plain C");
     snprintf(G->alt_arith, sizeof G->alt_arith,
-             "integers only (no floating point, no <math.h>); the segment product floors (pmulhuw: in the bound), "
-             "the result is rounded once to nearest, ties up (pmulhrsw); bit-identical under any compiler flags");
+             "integers only (%s no <math.h>); the segment product floors (pmulhuw: in the bound), "
+             "the result is rounded once to nearest, ties up (pmulhrsw); bit-identical under any compiler flags",
+             avx2 ? "no floating-point arithmetic: the AVX2 loop converts x to float, exact, and reads its bits;"
+                  : "no floating point,");
     snprintf(G->bound_note, sizeof G->bound_note,
              "taken over every input from the emitted integer steps (the table kernel) against MPFR");
 }
@@ -267,13 +318,13 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
 {
     const fx_log_red *L = &G->log;
     const char *N = G->name;
-    int Ei = G->in.exp, Eo = G->out.exp, Ef = Eo + L->td;
+    int Ei = G->in.exp, Eo = G->out.exp, Ef = Eo + L->td, jb = L->tjb, ns = 1 << jb;
     char w[160];
     const char *fn = base2 ? "log2" : "log";
     snprintf(w, sizeof w, "V[j]: the segment line's value at its start, F = %s(1 + t) at 2^-%d", fn, Ef);
-    tab_table(tabs, N, "tv", L->tv, 32, w);
+    tab_table(tabs, N, "tv", L->tv, ns, w);
     snprintf(w, sizeof w, "S[j]: the segment line's rise across the segment, at 2^-%d", Ef);
-    tab_table(tabs, N, "ts", L->ts, 32, w);
+    tab_table(tabs, N, "ts", L->ts, ns, w);
     snprintf(w, sizeof w, "TH[lz] = round(e%s 2^%d), e = 15 - lz - %d (MPFR); TH[16] (x = 0): the most negative",
              base2 ? "" : " ln2", Eo, Ei);
     tab_table(tabs, N, "th", L->th, 32, w);
@@ -285,13 +336,13 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     const char *kr = fx_k16(G, (int64_t)1 << (15 - L->td), w);
     pf_put(body, "    /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */\n"
                  "    int lz = 16 - pf_fx_bitlen(x);\n"
-                 "    uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */\n"
-                 "    unsigned j = (u >> 10) & 31u;               /* segment: t's top 5 bits */\n"
-                 "    uint16_t f = (uint16_t)(u << 6);            /* t's other 10 bits: the place in it, 2^-16 */\n");
+                 "    uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */\n");
+    pf_printf(body, "    unsigned j = (u >> %d) & %du;               /* segment: t's top %d bits */\n"
+                    "    uint16_t f = (uint16_t)(u << %d);            /* t's other %d bits: the place in it, 2^-16 */\n",
+              15 - jb, ns - 1, jb, jb + 1, 15 - jb);
     pf_printf(body, "    /* F(t) on segment j, at 2^-%d: V[j] + floor(S[j] f 2^-16) (pmulhuw)%s */\n", Ef,
               L->tlo ? ", plus e ln2's low part" : "");
-    pf_printf(body, "    int16_t w = (int16_t)(%s_tv[j] + (int32_t)(((uint32_t)%s_ts[j] * f) >> 16)%s);\n", N, N,
-              L->tlo ? "" : "");
+    pf_printf(body, "    int16_t w = (int16_t)(%s_tv[j] + (int32_t)(((uint32_t)%s_ts[j] * f) >> 16));\n", N, N);
     if (L->tlo)
         pf_printf(body, "    w = (int16_t)(w + %s_tl[lz]);\n", N);
     pf_printf(body, "    /* e%s at 2^-%d plus w rounded once to it */\n", base2 ? "" : " ln2", Eo);
@@ -305,32 +356,165 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "   above.  x 2^16 + 2^15 in 32-bit lanes has lz leading zeros (16 for x = 0);\n"
               "   unpack and pack keep the lanes' order.  The same values (pfmathgen sweeps\n"
               "   the array form on its machine against the scalar one). */\n%s#include <immintrin.h>\n"
-              "extern %s %s(%s x); /* the scalar form, for the last n %% 32 */\n"
+              "extern %s %s(%s x); /* the scalar form, for the last n %% 32 (or 16) */\n"
               "/* 32 table entries as 16-bit words, for vpermw */\n"
               "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16(const int32_t *t)\n{\n"
               "    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),\n"
-              "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n"
+              "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n",
+              cond, G->ot, N, G->it, N);
+    if (jb == 4)
+        pf_printf(kern,
+                  "/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: u >> 11 is 16 + j) */\n"
+                  "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16x2(const int32_t *t)\n{\n"
+                  "    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));\n}\n",
+                  N);
+    pf_printf(kern,
               "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
               "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
-              cond, G->ot, N, G->it, N, N, G->it, G->ot);
-    pf_printf(kern, "    const __m512i tv = %s_w16(%s_tv), ts = %s_w16(%s_ts), th = %s_w16(%s_th);\n", N, N, N, N, N, N);
+              N, G->it, G->ot);
+    const char *wv = jb == 4 ? "w16x2" : "w16";
+    pf_printf(kern, "    const __m512i tv = %s_%s(%s_tv), ts = %s_%s(%s_ts), th = %s_w16(%s_th);\n", N, wv, N, N, wv, N, N,
+              N);
     if (L->tlo)
         pf_printf(kern, "    const __m512i tl = %s_w16(%s_tl);\n", N, N);
     pf_printf(kern, "    const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(%d);\n", 1 << (15 - L->td));
-    pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
-                 "        __m512i xv = _mm512_loadu_si512(x + i);\n"
-                 "        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),\n"
-                 "                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));\n"
-                 "        __m512i u = _mm512_sllv_epi16(xv, lz);\n"
-                 "        __m512i j = _mm512_srli_epi16(u, 10), f = _mm512_slli_epi16(u, 6); /* vpermw reads j's low 5 bits */\n"
-                 "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
-                 "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));\n");
+    pf_printf(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
+                    "        __m512i xv = _mm512_loadu_si512(x + i);\n"
+                    "        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),\n"
+                    "                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));\n"
+                    "        __m512i u = _mm512_sllv_epi16(xv, lz);\n"
+                    "        __m512i j = _mm512_srli_epi16(u, %d), f = _mm512_slli_epi16(u, %d); /* vpermw reads j's low 5 bits */\n"
+                    "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
+                    "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));\n",
+              15 - jb, jb + 1);
     if (L->tlo)
         pf_put(kern, "        w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));\n");
     pf_printf(kern, "        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));\n"
-                    "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+                    "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n",
               N);
-    G->bw16 = 2;
+    int tha, tlb;
+    if (!tab_avx2(G, &tha, &tlb)) {
+        pf_put(kern, "#endif");
+        G->bw16 = 2;
+        return;
+    }
+    /* AVX2: no vpermw, no 16-bit per-element shift, no leading-zero count.
+       x converted to float (even and odd words apart, in 32-bit lanes) is
+       exact: its fraction bits are t, its exponent field 126 + bitlen(x) (0
+       for x = 0); two blends of shifted copies put them back in the words'
+       order.  A table of 16 words is two vpshufb on its byte planes merged
+       by vpblendvb, with the index in both bytes of the word; 32 entries are
+       two tables of 16 per plane, the wrong one zeroed by bit 7 of its
+       index.  An index with bit 7 set also zeroes the TH and TL lookups for
+       x = 0 (TH' = TH ^ 0x8000 stored, the result's sign bit flipped back);
+       tab_avx2 says when that gives the scalar form's values. */
+    pf_printf(kern,
+              "\n/* AVX2 (x86-64-v3): the same steps on 16 lanes.  lz and t from x converted\n"
+              "   to float, exact (even and odd words apart, in 32-bit lanes): its fraction\n"
+              "   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put\n"
+              "   them back in the words' order.  No vpermw: a table of 16 words is two\n"
+              "   vpshufb (its low and its high bytes), the index in both bytes of the word,\n"
+              "   merged by vpblendvb%s.  x = 0: the index ex - 127 has bit 7 set, so\n"
+              "   the lookups by it give 0%s%s.  The same values. */\n"
+              "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
+              "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
+              jb == 5 ? "; 32 words are two such tables, the other one's lookup zeroed by bit 7\n"
+                        "   of its index (j + 0x70, j + 0xf0 per byte)"
+                      : "",
+              tha ? "; TH = max(ex - 127 - Ei, lo) << Eo from ex" : " and TH' = TH ^ 0x8000 is stored, the sign bit flipped back",
+              L->tlo ? "; V - V[0] and TL + V[0] are stored, so w = 0 there" : "", N, G->it, G->ot);
+    int nq = 0, qv = 0, qs = 0, qh = 0, ql = 0;
+    /* byte planes: V (2 or 4), S (2 or 4), TH' (2, lookup only), TL (1 or 2) */
+    qv = nq; nq += 2 * (ns / 16);
+    qs = nq; nq += 2 * (ns / 16);
+    if (!tha) { qh = nq; nq += 2; }
+    if (L->tlo) { ql = nq; nq += tlb ? 1 : 2; }
+    pf_printf(kern, "    uint8_t b[%d][16]; /* byte planes: ", nq);
+    pf_printf(kern, "V%s low, high%s; S low, high%s", L->tlo ? " - V[0]" : "", jb == 5 ? " (entries 0-15, 16-31)" : "",
+              jb == 5 ? " (0-15, 16-31)" : "");
+    if (!tha)
+        pf_put(kern, "; TH' by bitlen(x) - 1, low, high");
+    if (L->tlo)
+        pf_printf(kern, "; TL + V[0] by bitlen(x) - 1%s", tlb ? " (one byte each)" : ", low, high");
+    pf_put(kern, " */\n    for (int k = 0; k < 16; k++) {\n");
+    for (int h = 0; h < ns / 16; h++) {
+        const char *o = h ? " + 16" : "";
+        char vk[320];
+        if (L->tlo)
+            snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s] - %s_tv[0])", N, o, N);
+        else
+            snprintf(vk, sizeof vk, "(uint32_t)%s_tv[k%s]", N, o);
+        pf_printf(kern, "        b[%d][k] = (uint8_t)%s;\n", qv + h, vk);
+        pf_printf(kern, "        b[%d][k] = (uint8_t)(%s >> 8);\n", qv + ns / 16 + h, vk);
+        pf_printf(kern, "        b[%d][k] = (uint8_t)%s_ts[k%s];\n", qs + h, N, o);
+        pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_ts[k%s] >> 8);\n", qs + ns / 16 + h, N, o);
+    }
+    if (!tha) {
+        pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_th[15 - k] ^ 0x8000u);\n", qh, N);
+        pf_printf(kern, "        b[%d][k] = (uint8_t)(((uint32_t)%s_th[15 - k] ^ 0x8000u) >> 8);\n", qh + 1, N);
+    }
+    if (L->tlo) {
+        pf_printf(kern, "        b[%d][k] = (uint8_t)(uint32_t)(%s_tl[15 - k] + %s_tv[0]);\n", ql, N, N);
+        if (!tlb)
+            pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)(%s_tl[15 - k] + %s_tv[0]) >> 8);\n", ql + 1, N, N);
+    }
+    pf_put(kern, "    }\n");
+    for (int q = 0; q < nq; q++)
+        pf_printf(kern, "    const __m256i q%d = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[%d]));\n", q, q);
+    pf_printf(kern, "    __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */\n"
+                    "    __asm__(\"\" : \"+x\"(dup));              /* (a vpmullw, not shifts and adds) */\n"
+                    "    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);\n"
+                    "    const __m256i kr = _mm256_set1_epi16(%d);\n",
+              1 << (15 - L->td));
+    if (jb == 5)
+        pf_put(kern, "    const __m256i c70 = _mm256_set1_epi8(0x70), c80 = _mm256_set1_epi8(-128);\n");
+    if (tha)
+        pf_printf(kern, "    const __m256i ce = _mm256_set1_epi16(%d), lo = _mm256_set1_epi16(%lld);\n", 127 + Ei,
+                  (long long)(pf_type_min_stored(&G->out) / ((int64_t)1 << Eo)));
+    else
+        pf_put(kern, "    const __m256i c127 = _mm256_set1_epi16(127), sgn = _mm256_set1_epi16(-32768);\n");
+    pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
+                 "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
+                 "        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));\n"
+                 "        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));\n"
+                 "        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */\n"
+                 "        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);\n");
+    pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup), f = _mm256_slli_epi16(u, %d);\n",
+              16 - jb, jb);
+    if (jb == 4)
+        pf_printf(kern,
+                  "        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, jj), _mm256_shuffle_epi8(q%d, jj), hib);\n"
+                  "        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, jj), _mm256_shuffle_epi8(q%d, jj), hib);\n",
+                  qv, qv + 1, qs, qs + 1);
+    else
+        pf_printf(kern,
+                  "        __m256i a0 = _mm256_add_epi8(jj, c70), a1 = _mm256_xor_si256(a0, c80); /* bit 7 clear: j < 16, j >= 16 */\n"
+                  "        __m256i v = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)),\n"
+                  "                                       _mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)), hib);\n"
+                  "        __m256i s = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)),\n"
+                  "                                       _mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)), hib);\n",
+                  qv, qv + 1, qv + 2, qv + 3, qs, qs + 1, qs + 2, qs + 3);
+    pf_put(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));\n");
+    if (!tha || L->tlo)
+        pf_put(kern, "        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */\n");
+    if (L->tlo) {
+        if (tlb)
+            pf_printf(kern, "        w = _mm256_add_epi16(w, _mm256_srai_epi16(_mm256_shuffle_epi8(q%d, kk), 8));\n", ql);
+        else
+            pf_printf(kern, "        w = _mm256_add_epi16(w, _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib));\n",
+                      ql, ql + 1);
+    }
+    if (tha)
+        pf_printf(kern, "        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), %d);\n"
+                        "        __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));\n",
+                  Eo);
+    else
+        pf_printf(kern, "        __m256i th = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib);\n"
+                        "        __m256i r = _mm256_xor_si256(_mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr)), sgn);\n",
+                  qh, qh + 1);
+    pf_printf(kern, "        _mm256_storeu_si256((__m256i *)(y + i), r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
+              N);
+    G->bw16 = 3;
 }
 
 /* 16-bit lanes (see fx_log16.c.in): z = e K + P at 2^-a in an int16_t,

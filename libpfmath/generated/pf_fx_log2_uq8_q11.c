@@ -4,18 +4,20 @@
  * Regenerate:  pfmathgen --func log2 --type 'ufixed<16,8>' --out-type 'fixed<15,11>' -o libpfmath/generated/pf_fx_log2_uq8_q11.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
- * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (on AVX-512 CPUs a 
- *              leading-zero count of x 2^16 + 2^15, vplzcntd, else branch-free stages), u = x 
- *              << lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment 
- *              j = t's top 5 bits, f = the other 10 (2^-16); log2(x) = e + F(t), F(t) = log2(1 
- *              + t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
+ * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (AVX-512: a 
+ *              leading-zero count of x 2^16 + 2^15, vplzcntd; AVX2: the exponent and the 
+ *              fraction bits of x converted to float, exact; else branch-free stages), u = x << 
+ *              lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment j = 
+ *              t's top 5 bits, f = the other 10 (2^-16); log2(x) = e + F(t), F(t) = log2(1 + 
+ *              t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
  * Domain:      log2(1+t) on t in [0, 1]: 32 segments [j/32, (j+1)/32)
- * Order:       1 per segment (a line: V[j] + S[j] f), 32-entry tables V, S, TH; int16_t words: 
- *              16-bit lanes
- * Lanes:       16-bit words throughout; lookups (vpermw), leading-zero count (vplzcntd on x 
- *              2^16 + 2^15, packed to words) and the per-element shift (vpsllvw) by 
- *              AVX-512BW/CD intrinsics (x86-64-v4); other clones, scalar form: the same steps 
- *              in plain C
+ * Order:       1 per segment (a line: V[j] + S[j] f), 32-entry tables V, S; TH by lz; int16_t 
+ *              words: 16-bit lanes
+ * Lanes:       16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count 
+ *              (vplzcntd on x 2^16 + 2^15, packed to words), per-element shift (vpsllvw) by 
+ *              AVX-512BW/CD intrinsics; x86-64-v3: lookups by vpshufb on byte planes, lz and t 
+ *              from x's float (vcvtdq2ps on even and odd words), TH = max(ex - c, lo) << Eo 
+ *              from its exponent; other clones, scalar form: plain C
  * Method:      per segment: S[j] the chord's rise at 2^-14 through MPFR's F(j/32), F((j+1)/32) 
  *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
  *              floor(S[j] f 2^-16) - F(t) 2^14 over the segment's 1024 inputs (discrete minimax 
@@ -34,9 +36,10 @@
  * Saturation:  log2(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
  * Target:      exact: below 1 LSB of the output for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); the segment product floors 
- *              (pmulhuw: in the bound), the result is rounded once to nearest, ties up 
- *              (pmulhrsw); bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating-point arithmetic: the AVX2 loop converts x to float, 
+ *              exact, and reads its bits; no <math.h>); the segment product floors (pmulhuw: in 
+ *              the bound), the result is rounded once to nearest, ties up (pmulhrsw); 
+ *              bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -226,8 +229,8 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    F(t) = log2(1 + t), a line on each of 32 segments of t (V[j] + S[j] f, j the
    segment, f the place in it), e from TH[lz]; one rounding at the
    end.  x = 0 gives the most negative output, -32768 (TH[16]).  k[] holds
-   the rounding's multiplier; bw is unused (the AVX-512 loop below has its
-   own intrinsics). */
+   the rounding's multiplier; bw is unused (the AVX-512 and AVX2 loops below
+   have their own intrinsics). */
 /* V[j]: the segment line's value at its start, F = log2(1 + t) at 2^-14 */
 static const int32_t pf_log2_uq8_q11_tv[32] = {
     2, 729, 1435, 2120, 2786, 3433, 4063, 4677,
@@ -272,7 +275,7 @@ PF_FX_INLINE int16_t pf_log2_uq8_q11_inline(uint16_t x, const int16_t *k, int bw
    the array form on its machine against the scalar one). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
-extern int16_t pf_log2_uq8_q11(uint16_t x); /* the scalar form, for the last n % 32 */
+extern int16_t pf_log2_uq8_q11(uint16_t x); /* the scalar form, for the last n % 32 (or 16) */
 /* 32 table entries as 16-bit words, for vpermw */
 __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log2_uq8_q11_w16(const int32_t *t)
 {
@@ -295,6 +298,64 @@ static void pf_log2_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restri
                                      _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));
         __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
         _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_log2_uq8_q11(x[i]);
+}
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  lz and t from x converted
+   to float, exact (even and odd words apart, in 32-bit lanes): its fraction
+   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
+   them back in the words' order.  No vpermw: a table of 16 words is two
+   vpshufb (its low and its high bytes), the index in both bytes of the word,
+   merged by vpblendvb; 32 words are two such tables, the other one's lookup zeroed by bit 7
+   of its index (j + 0x70, j + 0xf0 per byte).  x = 0: the index ex - 127 has bit 7 set, so
+   the lookups by it give 0; TH = max(ex - 127 - Ei, lo) << Eo from ex.  The same values. */
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_log2_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    uint8_t b[8][16]; /* byte planes: V low, high (entries 0-15, 16-31); S low, high (0-15, 16-31) */
+    for (int k = 0; k < 16; k++) {
+        b[0][k] = (uint8_t)(uint32_t)pf_log2_uq8_q11_tv[k];
+        b[2][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_tv[k] >> 8);
+        b[4][k] = (uint8_t)pf_log2_uq8_q11_ts[k];
+        b[6][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_ts[k] >> 8);
+        b[1][k] = (uint8_t)(uint32_t)pf_log2_uq8_q11_tv[k + 16];
+        b[3][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_tv[k + 16] >> 8);
+        b[5][k] = (uint8_t)pf_log2_uq8_q11_ts[k + 16];
+        b[7][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_ts[k + 16] >> 8);
+    }
+    const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
+    const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
+    const __m256i q2 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
+    const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
+    const __m256i q4 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[4]));
+    const __m256i q5 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[5]));
+    const __m256i q6 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[6]));
+    const __m256i q7 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[7]));
+    __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
+    __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
+    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
+    const __m256i kr = _mm256_set1_epi16(4096);
+    const __m256i c70 = _mm256_set1_epi8(0x70), c80 = _mm256_set1_epi8(-128);
+    const __m256i ce = _mm256_set1_epi16(135), lo = _mm256_set1_epi16(-16);
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
+        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
+        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
+        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
+        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, 11), dup), f = _mm256_slli_epi16(u, 5);
+        __m256i a0 = _mm256_add_epi8(jj, c70), a1 = _mm256_xor_si256(a0, c80); /* bit 7 clear: j < 16, j >= 16 */
+        __m256i v = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q0, a0), _mm256_shuffle_epi8(q1, a1)),
+                                       _mm256_or_si256(_mm256_shuffle_epi8(q2, a0), _mm256_shuffle_epi8(q3, a1)), hib);
+        __m256i s = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q4, a0), _mm256_shuffle_epi8(q5, a1)),
+                                       _mm256_or_si256(_mm256_shuffle_epi8(q6, a0), _mm256_shuffle_epi8(q7, a1)), hib);
+        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
+        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
+        __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
+        _mm256_storeu_si256((__m256i *)(y + i), r);
     }
     for (; i < n; i++)
         y[i] = pf_log2_uq8_q11(x[i]);
@@ -329,8 +390,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_log2_uq8_q11_array(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_log2_uq8_q11_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_log2_uq8_q11_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_log2_uq8_q11_array_avx2(x, y, n);
         return;
     }
 #endif

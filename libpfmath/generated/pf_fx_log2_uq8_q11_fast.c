@@ -4,39 +4,42 @@
  * Regenerate:  pfmathgen --func log2 --type 'ufixed<16,8>' --out-type 'fixed<15,11>' --variant fast -o libpfmath/generated/pf_fx_log2_uq8_q11_fast.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
- * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (on AVX-512 CPUs a 
- *              leading-zero count of x 2^16 + 2^15, vplzcntd, else branch-free stages), u = x 
- *              << lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment 
- *              j = t's top 5 bits, f = the other 10 (2^-16); log2(x) = e + F(t), F(t) = log2(1 
- *              + t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
- * Domain:      log2(1+t) on t in [0, 1]: 32 segments [j/32, (j+1)/32)
- * Order:       1 per segment (a line: V[j] + S[j] f), 32-entry tables V, S, TH; int16_t words: 
- *              16-bit lanes
- * Lanes:       16-bit words throughout; lookups (vpermw), leading-zero count (vplzcntd on x 
- *              2^16 + 2^15, packed to words) and the per-element shift (vpsllvw) by 
- *              AVX-512BW/CD intrinsics (x86-64-v4); other clones, scalar form: the same steps 
- *              in plain C
- * Method:      per segment: S[j] the chord's rise at 2^-14 through MPFR's F(j/32), F((j+1)/32) 
+ * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (AVX-512: a 
+ *              leading-zero count of x 2^16 + 2^15, vplzcntd; AVX2: the exponent and the 
+ *              fraction bits of x converted to float, exact; else branch-free stages), u = x << 
+ *              lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment j = 
+ *              t's top 4 bits, f = the other 11 (2^-16); log2(x) = e + F(t), F(t) = log2(1 + 
+ *              t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
+ * Domain:      log2(1+t) on t in [0, 1]: 16 segments [j/16, (j+1)/16)
+ * Order:       1 per segment (a line: V[j] + S[j] f), 16-entry tables V, S; TH by lz; int16_t 
+ *              words: 16-bit lanes
+ * Lanes:       16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count 
+ *              (vplzcntd on x 2^16 + 2^15, packed to words), per-element shift (vpsllvw) by 
+ *              AVX-512BW/CD intrinsics; x86-64-v3: lookups by vpshufb on byte planes, lz and t 
+ *              from x's float (vcvtdq2ps on even and odd words), TH = max(ex - c, lo) << Eo 
+ *              from its exponent; other clones, scalar form: plain C
+ * Method:      per segment: S[j] the chord's rise at 2^-14 through MPFR's F(j/16), F((j+1)/16) 
  *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
- *              floor(S[j] f 2^-16) - F(t) 2^14 over the segment's 1024 inputs (discrete minimax 
+ *              floor(S[j] f 2^-16) - F(t) 2^14 over the segment's 2048 inputs (discrete minimax 
  *              of the integer step, floor included); TH[lz] = round(e 2^11) (MPFR, to nearest)
  * Constraints: none per segment (C0 only up to the tables' rounding); x = 0 gives the most 
  *              negative output
  * Formats:     V, S, TH int16_t; w = V[j] + pmulhuw(S[j], f) at 2^-14 (int16_t); result TH[lz] 
  *              + round(w 2^-3), the rounding multiply-high by 2^12 (pmulhrsw), ties up
- * Polynomial:  segment lines within 2.0088 2^-14 (0.2511 LSB) of F(t) at every segment input 
+ * Polynomial:  segment lines within 7.8596 2^-14 (0.9824 LSB) of F(t) at every segment input 
  *              (floor included)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2511 LSB (polynomial 0.2511, 
- *              arithmetic and reduction 0.0000) = 0.7511 LSB; taken over every input from the 
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.9824 LSB (polynomial 0.9824, 
+ *              arithmetic and reduction 0.0000) = 1.4824 LSB; taken over every input from the 
  *              emitted integer steps (the table kernel) against MPFR
- * Sweep:       max 0.7295 LSB at x = 32771 (128.011719), mean 0.2543 LSB; exhaustive: all 65536 
+ * Sweep:       max 1.3542 LSB at x = 33717 (131.707031), mean 0.3191 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  log2(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); the segment product floors 
- *              (pmulhuw: in the bound), the result is rounded once to nearest, ties up 
- *              (pmulhrsw); bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating-point arithmetic: the AVX2 loop converts x to float, 
+ *              exact, and reads its bits; no <math.h>); the segment product floors (pmulhuw: in 
+ *              the bound), the result is rounded once to nearest, ties up (pmulhrsw); 
+ *              bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -226,21 +229,17 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    F(t) = log2(1 + t), a line on each of 32 segments of t (V[j] + S[j] f, j the
    segment, f the place in it), e from TH[lz]; one rounding at the
    end.  x = 0 gives the most negative output, -32768 (TH[16]).  k[] holds
-   the rounding's multiplier; bw is unused (the AVX-512 loop below has its
-   own intrinsics). */
+   the rounding's multiplier; bw is unused (the AVX-512 and AVX2 loops below
+   have their own intrinsics). */
 /* V[j]: the segment line's value at its start, F = log2(1 + t) at 2^-14 */
-static const int32_t pf_log2_uq8_q11_fast_tv[32] = {
-    2, 729, 1435, 2120, 2786, 3433, 4063, 4677,
-    5276, 5859, 6429, 6985, 7528, 8060, 8579, 9087,
-    9585, 10072, 10550, 11018, 11477, 11927, 12369, 12803,
-    13229, 13647, 14058, 14462, 14859, 15250, 15634, 16012,
+static const int32_t pf_log2_uq8_q11_fast_tv[16] = {
+    3, 1438, 2789, 4066, 5278, 6431, 7530, 8581,
+    9587, 10551, 11478, 12370, 13230, 14059, 14860, 15635,
 };
 /* S[j]: the segment line's rise across the segment, at 2^-14 */
-static const int32_t pf_log2_uq8_q11_fast_ts[32] = {
-    727, 706, 685, 666, 647, 631, 615, 599,
-    583, 570, 556, 544, 532, 519, 508, 498,
-    487, 478, 468, 459, 450, 442, 434, 426,
-    418, 411, 404, 397, 391, 384, 379, 373,
+static const int32_t pf_log2_uq8_q11_fast_ts[16] = {
+    1435, 1351, 1278, 1213, 1154, 1100, 1052, 1006,
+    965, 928, 893, 860, 829, 802, 776, 751,
 };
 /* TH[lz] = round(e 2^11), e = 15 - lz - 8 (MPFR); TH[16] (x = 0): the most negative */
 static const int32_t pf_log2_uq8_q11_fast_th[32] = {
@@ -255,8 +254,8 @@ PF_FX_INLINE int16_t pf_log2_uq8_q11_fast_inline(uint16_t x, const int16_t *k, i
     /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */
     int lz = 16 - pf_fx_bitlen(x);
     uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */
-    unsigned j = (u >> 10) & 31u;               /* segment: t's top 5 bits */
-    uint16_t f = (uint16_t)(u << 6);            /* t's other 10 bits: the place in it, 2^-16 */
+    unsigned j = (u >> 11) & 15u;               /* segment: t's top 4 bits */
+    uint16_t f = (uint16_t)(u << 5);            /* t's other 11 bits: the place in it, 2^-16 */
     /* F(t) on segment j, at 2^-14: V[j] + floor(S[j] f 2^-16) (pmulhuw) */
     int16_t w = (int16_t)(pf_log2_uq8_q11_fast_tv[j] + (int32_t)(((uint32_t)pf_log2_uq8_q11_fast_ts[j] * f) >> 16));
     /* e at 2^-11 plus w rounded once to it */
@@ -272,17 +271,22 @@ PF_FX_INLINE int16_t pf_log2_uq8_q11_fast_inline(uint16_t x, const int16_t *k, i
    the array form on its machine against the scalar one). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
-extern int16_t pf_log2_uq8_q11_fast(uint16_t x); /* the scalar form, for the last n % 32 */
+extern int16_t pf_log2_uq8_q11_fast(uint16_t x); /* the scalar form, for the last n % 32 (or 16) */
 /* 32 table entries as 16-bit words, for vpermw */
 __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log2_uq8_q11_fast_w16(const int32_t *t)
 {
     return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
                               _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
 }
+/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: u >> 11 is 16 + j) */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log2_uq8_q11_fast_w16x2(const int32_t *t)
+{
+    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
+}
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    const __m512i tv = pf_log2_uq8_q11_fast_w16(pf_log2_uq8_q11_fast_tv), ts = pf_log2_uq8_q11_fast_w16(pf_log2_uq8_q11_fast_ts), th = pf_log2_uq8_q11_fast_w16(pf_log2_uq8_q11_fast_th);
+    const __m512i tv = pf_log2_uq8_q11_fast_w16x2(pf_log2_uq8_q11_fast_tv), ts = pf_log2_uq8_q11_fast_w16x2(pf_log2_uq8_q11_fast_ts), th = pf_log2_uq8_q11_fast_w16(pf_log2_uq8_q11_fast_th);
     const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(4096);
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
@@ -290,11 +294,56 @@ static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *r
         __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
                                          _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
         __m512i u = _mm512_sllv_epi16(xv, lz);
-        __m512i j = _mm512_srli_epi16(u, 10), f = _mm512_slli_epi16(u, 6); /* vpermw reads j's low 5 bits */
+        __m512i j = _mm512_srli_epi16(u, 11), f = _mm512_slli_epi16(u, 5); /* vpermw reads j's low 5 bits */
         __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
                                      _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));
         __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
         _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_log2_uq8_q11_fast(x[i]);
+}
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  lz and t from x converted
+   to float, exact (even and odd words apart, in 32-bit lanes): its fraction
+   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
+   them back in the words' order.  No vpermw: a table of 16 words is two
+   vpshufb (its low and its high bytes), the index in both bytes of the word,
+   merged by vpblendvb.  x = 0: the index ex - 127 has bit 7 set, so
+   the lookups by it give 0; TH = max(ex - 127 - Ei, lo) << Eo from ex.  The same values. */
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    uint8_t b[4][16]; /* byte planes: V low, high; S low, high */
+    for (int k = 0; k < 16; k++) {
+        b[0][k] = (uint8_t)(uint32_t)pf_log2_uq8_q11_fast_tv[k];
+        b[1][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_fast_tv[k] >> 8);
+        b[2][k] = (uint8_t)pf_log2_uq8_q11_fast_ts[k];
+        b[3][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_fast_ts[k] >> 8);
+    }
+    const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
+    const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
+    const __m256i q2 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
+    const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
+    __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
+    __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
+    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
+    const __m256i kr = _mm256_set1_epi16(4096);
+    const __m256i ce = _mm256_set1_epi16(135), lo = _mm256_set1_epi16(-16);
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
+        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
+        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
+        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
+        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, 12), dup), f = _mm256_slli_epi16(u, 4);
+        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
+        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
+        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
+        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
+        __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
+        _mm256_storeu_si256((__m256i *)(y + i), r);
     }
     for (; i < n; i++)
         y[i] = pf_log2_uq8_q11_fast(x[i]);
@@ -329,8 +378,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_log2_uq8_q11_fast_array(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_log2_uq8_q11_fast_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_log2_uq8_q11_fast_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_log2_uq8_q11_fast_array_avx2(x, y, n);
         return;
     }
 #endif

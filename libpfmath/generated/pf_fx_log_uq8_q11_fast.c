@@ -4,39 +4,43 @@
  * Regenerate:  pfmathgen --func log --type 'ufixed<16,8>' --out-type 'fixed<15,11>' --variant fast -o libpfmath/generated/pf_fx_log_uq8_q11_fast.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
- * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (on AVX-512 CPUs a 
- *              leading-zero count of x 2^16 + 2^15, vplzcntd, else branch-free stages), u = x 
- *              << lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment 
- *              j = t's top 5 bits, f = the other 10 (2^-16); log(x) = e ln2 + F(t), F(t) = 
- *              log(1 + t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
- * Domain:      log(1+t) on t in [0, 1]: 32 segments [j/32, (j+1)/32)
- * Order:       1 per segment (a line: V[j] + S[j] f), 32-entry tables V, S, TH; int16_t words: 
- *              16-bit lanes
- * Lanes:       16-bit words throughout; lookups (vpermw), leading-zero count (vplzcntd on x 
- *              2^16 + 2^15, packed to words) and the per-element shift (vpsllvw) by 
- *              AVX-512BW/CD intrinsics (x86-64-v4); other clones, scalar form: the same steps 
- *              in plain C
- * Method:      per segment: S[j] the chord's rise at 2^-15 through MPFR's F(j/32), F((j+1)/32) 
+ * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (AVX-512: a 
+ *              leading-zero count of x 2^16 + 2^15, vplzcntd; AVX2: the exponent and the 
+ *              fraction bits of x converted to float, exact; else branch-free stages), u = x << 
+ *              lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment j = 
+ *              t's top 4 bits, f = the other 11 (2^-16); log(x) = e ln2 + F(t), F(t) = log(1 + 
+ *              t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
+ * Domain:      log(1+t) on t in [0, 1]: 16 segments [j/16, (j+1)/16)
+ * Order:       1 per segment (a line: V[j] + S[j] f), 16-entry tables V, S; TH by lz; int16_t 
+ *              words: 16-bit lanes
+ * Lanes:       16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count 
+ *              (vplzcntd on x 2^16 + 2^15, packed to words), per-element shift (vpsllvw) by 
+ *              AVX-512BW/CD intrinsics; x86-64-v3: lookups by vpshufb on byte planes, lz and t 
+ *              from x's float (vcvtdq2ps on even and odd words); other clones, scalar form: 
+ *              plain C
+ * Method:      per segment: S[j] the chord's rise at 2^-15 through MPFR's F(j/16), F((j+1)/16) 
  *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
- *              floor(S[j] f 2^-16) - F(t) 2^15 over the segment's 1024 inputs (discrete minimax 
+ *              floor(S[j] f 2^-16) - F(t) 2^15 over the segment's 2048 inputs (discrete minimax 
  *              of the integer step, floor included); TH[lz] = round(e ln2 2^11) (MPFR, to 
  *              nearest)
  * Constraints: none per segment (C0 only up to the tables' rounding); x = 0 gives the most 
  *              negative output
  * Formats:     V, S, TH int16_t; w = V[j] + pmulhuw(S[j], f) at 2^-15 (int16_t); result TH[lz] 
  *              + round(w 2^-4), the rounding multiply-high by 2^11 (pmulhrsw), ties up
- * Polynomial:  segment lines within 2.6440 2^-15 (0.1653 LSB) of F(t) at every segment input 
+ * Polynomial:  segment lines within 8.3936 2^-15 (0.5246 LSB) of F(t) at every segment input 
  *              (floor included)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.5878 LSB (polynomial 0.1653, 
- *              arithmetic and reduction 0.4226) = 1.0878 LSB; taken over every input from the 
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.9138 LSB (polynomial 0.5246, 
+ *              arithmetic and reduction 0.3892) = 1.4138 LSB; taken over every input from the 
  *              emitted integer steps (the table kernel) against MPFR
- * Sweep:       max 1.0420 LSB at x = 768 (3), mean 0.3040 LSB; exhaustive: all 65536 inputs
+ * Sweep:       max 1.3513 LSB at x = 16879 (65.9335938), mean 0.3392 LSB; exhaustive: all 65536 
+ *              inputs
  * Saturation:  log(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); the segment product floors 
- *              (pmulhuw: in the bound), the result is rounded once to nearest, ties up 
- *              (pmulhrsw); bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating-point arithmetic: the AVX2 loop converts x to float, 
+ *              exact, and reads its bits; no <math.h>); the segment product floors (pmulhuw: in 
+ *              the bound), the result is rounded once to nearest, ties up (pmulhrsw); 
+ *              bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -226,21 +230,17 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    F(t) = log(1 + t), a line on each of 32 segments of t (V[j] + S[j] f, j the
    segment, f the place in it), e ln2 from TH[lz]; one rounding at the
    end.  x = 0 gives the most negative output, -32768 (TH[16]).  k[] holds
-   the rounding's multiplier; bw is unused (the AVX-512 loop below has its
-   own intrinsics). */
+   the rounding's multiplier; bw is unused (the AVX-512 and AVX2 loops below
+   have their own intrinsics). */
 /* V[j]: the segment line's value at its start, F = log(1 + t) at 2^-15 */
-static const int32_t pf_log_uq8_q11_fast_tv[32] = {
-    2, 1010, 1989, 2938, 3861, 4759, 5633, 6484,
-    7314, 8123, 8912, 9683, 10436, 11173, 11893, 12598,
-    13288, 13963, 14625, 15274, 15910, 16534, 17147, 17748,
-    18338, 18918, 19488, 20049, 20599, 21141, 21674, 22198,
+static const int32_t pf_log_uq8_q11_fast_tv[16] = {
+    7, 1993, 3866, 5637, 7317, 8915, 10440, 11896,
+    13290, 14627, 15912, 17149, 18340, 19490, 20601, 21675,
 };
 /* S[j]: the segment line's rise across the segment, at 2^-15 */
-static const int32_t pf_log_uq8_q11_fast_ts[32] = {
-    1009, 979, 949, 924, 898, 874, 851, 830,
-    809, 789, 772, 754, 737, 720, 705, 690,
-    675, 662, 649, 636, 625, 613, 601, 591,
-    581, 571, 561, 550, 542, 533, 524, 516,
+static const int32_t pf_log_uq8_q11_fast_ts[16] = {
+    1988, 1874, 1772, 1681, 1599, 1525, 1456, 1394,
+    1338, 1286, 1237, 1192, 1150, 1111, 1074, 1041,
 };
 /* TH[lz] = round(e ln2 2^11), e = 15 - lz - 8 (MPFR); TH[16] (x = 0): the most negative */
 static const int32_t pf_log_uq8_q11_fast_th[32] = {
@@ -255,8 +255,8 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k, in
     /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */
     int lz = 16 - pf_fx_bitlen(x);
     uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */
-    unsigned j = (u >> 10) & 31u;               /* segment: t's top 5 bits */
-    uint16_t f = (uint16_t)(u << 6);            /* t's other 10 bits: the place in it, 2^-16 */
+    unsigned j = (u >> 11) & 15u;               /* segment: t's top 4 bits */
+    uint16_t f = (uint16_t)(u << 5);            /* t's other 11 bits: the place in it, 2^-16 */
     /* F(t) on segment j, at 2^-15: V[j] + floor(S[j] f 2^-16) (pmulhuw) */
     int16_t w = (int16_t)(pf_log_uq8_q11_fast_tv[j] + (int32_t)(((uint32_t)pf_log_uq8_q11_fast_ts[j] * f) >> 16));
     /* e ln2 at 2^-11 plus w rounded once to it */
@@ -272,17 +272,22 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k, in
    the array form on its machine against the scalar one). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
-extern int16_t pf_log_uq8_q11_fast(uint16_t x); /* the scalar form, for the last n % 32 */
+extern int16_t pf_log_uq8_q11_fast(uint16_t x); /* the scalar form, for the last n % 32 (or 16) */
 /* 32 table entries as 16-bit words, for vpermw */
 __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log_uq8_q11_fast_w16(const int32_t *t)
 {
     return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
                               _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
 }
+/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: u >> 11 is 16 + j) */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log_uq8_q11_fast_w16x2(const int32_t *t)
+{
+    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
+}
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    const __m512i tv = pf_log_uq8_q11_fast_w16(pf_log_uq8_q11_fast_tv), ts = pf_log_uq8_q11_fast_w16(pf_log_uq8_q11_fast_ts), th = pf_log_uq8_q11_fast_w16(pf_log_uq8_q11_fast_th);
+    const __m512i tv = pf_log_uq8_q11_fast_w16x2(pf_log_uq8_q11_fast_tv), ts = pf_log_uq8_q11_fast_w16x2(pf_log_uq8_q11_fast_ts), th = pf_log_uq8_q11_fast_w16(pf_log_uq8_q11_fast_th);
     const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(2048);
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
@@ -290,11 +295,61 @@ static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *re
         __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
                                          _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
         __m512i u = _mm512_sllv_epi16(xv, lz);
-        __m512i j = _mm512_srli_epi16(u, 10), f = _mm512_slli_epi16(u, 6); /* vpermw reads j's low 5 bits */
+        __m512i j = _mm512_srli_epi16(u, 11), f = _mm512_slli_epi16(u, 5); /* vpermw reads j's low 5 bits */
         __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
                                      _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));
         __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
         _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_log_uq8_q11_fast(x[i]);
+}
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  lz and t from x converted
+   to float, exact (even and odd words apart, in 32-bit lanes): its fraction
+   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
+   them back in the words' order.  No vpermw: a table of 16 words is two
+   vpshufb (its low and its high bytes), the index in both bytes of the word,
+   merged by vpblendvb.  x = 0: the index ex - 127 has bit 7 set, so
+   the lookups by it give 0 and TH' = TH ^ 0x8000 is stored, the sign bit flipped back.  The same values. */
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_log_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    uint8_t b[6][16]; /* byte planes: V low, high; S low, high; TH' by bitlen(x) - 1, low, high */
+    for (int k = 0; k < 16; k++) {
+        b[0][k] = (uint8_t)(uint32_t)pf_log_uq8_q11_fast_tv[k];
+        b[1][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_fast_tv[k] >> 8);
+        b[2][k] = (uint8_t)pf_log_uq8_q11_fast_ts[k];
+        b[3][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_fast_ts[k] >> 8);
+        b[4][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_fast_th[15 - k] ^ 0x8000u);
+        b[5][k] = (uint8_t)(((uint32_t)pf_log_uq8_q11_fast_th[15 - k] ^ 0x8000u) >> 8);
+    }
+    const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
+    const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
+    const __m256i q2 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
+    const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
+    const __m256i q4 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[4]));
+    const __m256i q5 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[5]));
+    __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
+    __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
+    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
+    const __m256i kr = _mm256_set1_epi16(2048);
+    const __m256i c127 = _mm256_set1_epi16(127), sgn = _mm256_set1_epi16(-32768);
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
+        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
+        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
+        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
+        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, 12), dup), f = _mm256_slli_epi16(u, 4);
+        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
+        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
+        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
+        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */
+        __m256i th = _mm256_blendv_epi8(_mm256_shuffle_epi8(q4, kk), _mm256_shuffle_epi8(q5, kk), hib);
+        __m256i r = _mm256_xor_si256(_mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr)), sgn);
+        _mm256_storeu_si256((__m256i *)(y + i), r);
     }
     for (; i < n; i++)
         y[i] = pf_log_uq8_q11_fast(x[i]);
@@ -329,8 +384,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_log_uq8_q11_fast_array(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_log_uq8_q11_fast_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_log_uq8_q11_fast_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_log_uq8_q11_fast_array_avx2(x, y, n);
         return;
     }
 #endif
