@@ -252,12 +252,94 @@ static int tab_avx2(const fx_gen *G, int *tharith, int *tlbyte)
     return *tharith || mn == -32768;
 }
 
+/* round(a b 2^-15), ties up: pmulhrsw */
+static int32_t mulhrs16(int32_t a, int32_t b) { return (int32_t)floordiv(floordiv((int64_t)a * b, 1 << 14) + 1, 2); }
+static int32_t wrap16(int64_t v) { return (int32_t)(int16_t)(uint16_t)((uint64_t)v & 0xffffu); }
+
+/* The AVX2 loop's TH without a lookup where it is not e 2^Eo: TH[lz] =
+   A e' + round(e' K 2^-15) - B (16-bit words, mod 2^16) for e' = e + s, e
+   = 15 - lz - Ei, lz < 16: one vpmullw and one vpmulhrsw.  B >= 0 goes
+   into the V planes as V - B 2^td (round((w - B 2^td) 2^-td) = round(w
+   2^-td) - B, exact), so the final sum TH + round(w 2^-td) is unchanged;
+   e' = max(ex - c0, c) with x = 0 clamped to c, whose A c + round(c K
+   2^-15) - B is at most -32768, so a saturating add (vpaddsw) gives -32768
+   there (w = V[0] rounds to 0 without TL, w = 0 with it).  Searched over A near the slope,
+   K near the rest of it and the shift s (least |s| first); 0: none. */
+/* the TL variant (exact log) too: 1 (see the AVX2 loop's timings) */
+#define THMUL_TL 1
+
+static int tab_thmul(const fx_gen *G, int *pa, int *pk, int *pc0, int *pc, int *pb)
+{
+    const fx_log_red *L = &G->log;
+    int Ei = G->in.exp, td = L->td, ns = 1 << L->tjb;
+    if (pf_type_min_stored(&G->out) != -32768)
+        return 0;
+    /* the range of w over every input (V, S, TL as the scalar form adds them) */
+    int64_t wlo = INT64_MAX, whi = INT64_MIN, tlo = 0, thi = 0;
+    for (int j = 0; j < ns; j++) {
+        wlo = L->tv[j] < wlo ? L->tv[j] : wlo;
+        int64_t h = L->tv[j] + (((int64_t)L->ts[j] * 65535) >> 16);
+        whi = h > whi ? h : whi;
+    }
+    for (int lz = 0; L->tlo && lz < 16; lz++) {
+        tlo = L->tl[lz] < tlo ? L->tl[lz] : tlo;
+        thi = L->tl[lz] > thi ? L->tl[lz] : thi;
+    }
+    wlo += tlo;
+    whi += thi;
+    double slope = (double)(L->th[0] - L->th[15]) / 15;
+    for (int sa = 0; sa <= 120; sa++)
+        for (int sg = 0; sg < 2; sg++) {
+            int s = sg ? -sa : sa;
+            if (sg && !sa)
+                continue;
+            for (int a = (int)floor(slope) - 1; a <= (int)floor(slope) + 2; a++) {
+                if (a < -32768 || a > 32767)
+                    continue;
+                int kc = (int)lround((slope - a) * 32768);
+                for (int k = kc - 2500; k <= kc + 2500; k++) { /* the slope from the ends: +-1/15 */
+                    if (k < -32768 || k > 32767)
+                        continue;
+                    int64_t bb = 0;
+                    int ok = 1;
+                    for (int lz = 0; lz < 16 && ok; lz++) {
+                        int64_t e1 = 15 - lz - Ei + s;
+                        if (e1 < -32768 || e1 > 32767) {
+                            ok = 0;
+                            break;
+                        }
+                        int64_t b = wrap16(wrap16(a * e1 + mulhrs16((int32_t)e1, k)) - (int64_t)L->th[lz]);
+                        if (lz == 0)
+                            bb = b;
+                        ok = b == bb;
+                    }
+                    /* B >= 0, and w - B 2^td in an int16_t */
+                    if (!ok || bb < 0 || wlo - (bb << td) < -32768 || whi - (bb << td) > 32767)
+                        continue;
+                    int c0 = 127 + Ei - s;
+                    for (int c = -c0; c <= s - Ei - 1; c++) /* x = 0: ex - c0 = -c0 */
+                        if (c >= -32768 && wrap16((int64_t)a * c + mulhrs16(c, k)) - bb <= -32768) {
+                            *pa = a;
+                            *pk = k;
+                            *pc0 = c0;
+                            *pc = c;
+                            *pb = (int)bb;
+                            return 1;
+                        }
+                }
+            }
+        }
+    return 0;
+}
+
 static void tab_texts(fx_gen *G, int base2)
 {
     const fx_log_red *L = &G->log;
     int Ei = G->in.exp, Eo = G->out.exp, Ef = Eo + L->td, jb = L->tjb, ns = 1 << jb;
     const char *fn = base2 ? "log2" : "log";
-    int tha, tlb, avx2 = tab_avx2(G, &tha, &tlb);
+    int tha, tlb, avx2 = tab_avx2(G, &tha, &tlb), thm = 0, t5[5];
+    if (avx2 && !tha && (THMUL_TL || !L->tlo))
+        thm = tab_thmul(G, t5, t5 + 1, t5 + 2, t5 + 3, t5 + 4);
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = 15 - lz - %d with lz = 16 - bitlen(x) (AVX-512: a leading-zero count of x 2^16 + "
              "2^15, vplzcntd;%s else branch-free stages), u = x << lz (vpsllvw), t in [0, 1) the 15 bits below u's "
@@ -291,7 +373,8 @@ static void tab_texts(fx_gen *G, int base2)
                  "2^15, packed to words), per-element shift (vpsllvw) by AVX-512BW/CD intrinsics; x86-64-v3: "
                  "lookups by vpshufb on byte planes, lz and t from x's float (vcvtdq2ps on even and odd words)%s; "
                  "other clones, scalar form: plain C",
-                 tha ? ", TH = max(ex - c, lo) << Eo from its exponent" : "");
+                 tha   ? ", TH = max(ex - c, lo) << Eo from its exponent"
+                 : thm ? ", TH from its exponent by a vpmullw and a vpmulhrsw (searched)" : "");
     else
         snprintf(G->wide_text, sizeof G->wide_text,
                  "16-bit words throughout; lookups (vpermw), leading-zero count (vplzcntd on x 2^16 + 2^15, packed to "
@@ -392,12 +475,14 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     pf_printf(kern, "        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));\n"
                     "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n",
               N);
-    int tha, tlb;
+    int tha, tlb, thm = 0, ta = 0, tk = 0, tc0 = 0, tc = 0, tb = 0;
     if (!tab_avx2(G, &tha, &tlb)) {
         pf_put(kern, "#endif");
         G->bw16 = 2;
         return;
     }
+    if (!tha && (THMUL_TL || !L->tlo))
+        thm = tab_thmul(G, &ta, &tk, &tc0, &tc, &tb);
     /* AVX2: no vpermw, no 16-bit per-element shift, no leading-zero count.
        x converted to float (even and odd words apart, in 32-bit lanes) is
        exact: its fraction bits are t, its exponent field 126 + bitlen(x) (0
@@ -414,34 +499,56 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put\n"
               "   them back in the words' order.  No vpermw: a table of 16 words is two\n"
               "   vpshufb (its low and its high bytes), the index in both bytes of the word,\n"
-              "   merged by vpblendvb%s.  x = 0: the index ex - 127 has bit 7 set, so\n"
-              "   the lookups by it give 0%s%s.  The same values. */\n"
-              "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
-              "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
-              jb == 5 ? "; 32 words are two such tables, the other one's lookup zeroed by bit 7\n"
-                        "   of its index (j + 0x70, j + 0xf0 per byte)"
-                      : "",
-              tha ? "; TH = max(ex - 127 - Ei, lo) << Eo from ex" : " and TH' = TH ^ 0x8000 is stored, the sign bit flipped back",
-              L->tlo ? "; V - V[0] and TL + V[0] are stored, so w = 0 there" : "", N, G->it, G->ot);
+              "   merged by vpblendvb%s.\n",
+              jb == 5 ? "; 32 words are two such tables, the other one's lookup\n"
+                        "   zeroed by bit 7 of its index (j + 0x70, j + 0xf0 per byte)"
+                      : "");
+    if (tha)
+        pf_printf(kern, "   TH = max(ex - %d, %lld) << %d from ex, no lookup: %lld for x = 0, whose w =\n"
+                        "   V[0] rounds to 0 (the scalar form's check).  The same values. */\n",
+                  127 + Ei, (long long)(pf_type_min_stored(&G->out) / ((int64_t)1 << Eo)), Eo,
+                  (long long)pf_type_min_stored(&G->out));
+    else if (thm)
+        pf_printf(kern, "   TH + B = A e' + round(e' K 2^-15) (mod 2^16), A = %d, K = %d, B = %d,\n"
+                        "   e' = max(ex - %d, %d): no lookup (pfmathgen searched A, K, B and the\n"
+                        "   shift of e' for every lz < 16); V%s - B 2^%d is stored, so the sum is\n"
+                        "   the same.  x = 0: e' = %d, A e' + round(e' K 2^-15) - B = %d, and w =\n"
+                        "   %s, so the saturating add gives -32768.  The same values. */\n",
+                  ta, tk, tb, tc0, tc, L->tlo ? " - V[0]" : "", L->td, tc,
+                  wrap16((int64_t)ta * tc + mulhrs16(tc, tk)) - tb,
+                  L->tlo ? "-B 2^td (TL's lookup is 0)" : "V[0] - B 2^td rounds to -B");
+    else
+        pf_printf(kern, "   x = 0: the index ex - 127 of the TH%s lookups has bit 7 set, so they\n"
+                        "   give 0: TH' = TH ^ 0x8000 is stored and the sign bit flipped back%s.\n"
+                        "   The same values. */\n",
+                  L->tlo ? " and TL" : "",
+                  L->tlo ? ";\n   V - V[0] and TL + V[0] are stored, so w = 0 there" : " (w = V[0]\n   rounds to 0)");
+    pf_printf(kern, "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
+                    "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
+              N, G->it, G->ot);
     int nq = 0, qv = 0, qs = 0, qh = 0, ql = 0;
     /* byte planes: V (2 or 4), S (2 or 4), TH' (2, lookup only), TL (1 or 2) */
     qv = nq; nq += 2 * (ns / 16);
     qs = nq; nq += 2 * (ns / 16);
-    if (!tha) { qh = nq; nq += 2; }
+    if (!tha && !thm) { qh = nq; nq += 2; }
     if (L->tlo) { ql = nq; nq += tlb ? 1 : 2; }
     pf_printf(kern, "    uint8_t b[%d][16]; /* byte planes: ", nq);
-    pf_printf(kern, "V%s low, high%s; S low, high%s", L->tlo ? " - V[0]" : "", jb == 5 ? " (entries 0-15, 16-31)" : "",
-              jb == 5 ? " (0-15, 16-31)" : "");
-    if (!tha)
+    pf_printf(kern, "V%s%s low, high%s; S low, high%s", L->tlo ? " - V[0]" : "", thm ? " - B 2^td" : "",
+              jb == 5 ? " (entries 0-15, 16-31)" : "", jb == 5 ? " (0-15, 16-31)" : "");
+    if (!tha && !thm)
         pf_put(kern, "; TH' by bitlen(x) - 1, low, high");
     if (L->tlo)
         pf_printf(kern, "; TL + V[0] by bitlen(x) - 1%s", tlb ? " (one byte each)" : ", low, high");
     pf_put(kern, " */\n    for (int k = 0; k < 16; k++) {\n");
     for (int h = 0; h < ns / 16; h++) {
         const char *o = h ? " + 16" : "";
-        char vk[320];
+        char vk[320], vb[32] = "";
+        if (thm)
+            snprintf(vb, sizeof vb, " - %d", tb << L->td);
         if (L->tlo)
-            snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s] - %s_tv[0])", N, o, N);
+            snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s] - %s_tv[0]%s)", N, o, N, vb);
+        else if (thm)
+            snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s]%s)", N, o, vb);
         else
             snprintf(vk, sizeof vk, "(uint32_t)%s_tv[k%s]", N, o);
         pf_printf(kern, "        b[%d][k] = (uint8_t)%s;\n", qv + h, vk);
@@ -449,7 +556,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_printf(kern, "        b[%d][k] = (uint8_t)%s_ts[k%s];\n", qs + h, N, o);
         pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_ts[k%s] >> 8);\n", qs + ns / 16 + h, N, o);
     }
-    if (!tha) {
+    if (!tha && !thm) {
         pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_th[15 - k] ^ 0x8000u);\n", qh, N);
         pf_printf(kern, "        b[%d][k] = (uint8_t)(((uint32_t)%s_th[15 - k] ^ 0x8000u) >> 8);\n", qh + 1, N);
     }
@@ -463,24 +570,36 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_printf(kern, "    const __m256i q%d = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[%d]));\n", q, q);
     pf_printf(kern, "    __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */\n"
                     "    __asm__(\"\" : \"+x\"(dup));              /* (a vpmullw, not shifts and adds) */\n"
+                    "%s"
                     "    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);\n"
                     "    const __m256i kr = _mm256_set1_epi16(%d);\n",
+              jb == 4 ? "    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */\n"
+                        "    __asm__(\"\" : \"+x\"(c16));\n"
+                      : "",
               1 << (15 - L->td));
     if (jb == 5)
         pf_put(kern, "    const __m256i c70 = _mm256_set1_epi8(0x70), c80 = _mm256_set1_epi8(-128);\n");
     if (tha)
         pf_printf(kern, "    const __m256i ce = _mm256_set1_epi16(%d), lo = _mm256_set1_epi16(%lld);\n", 127 + Ei,
                   (long long)(pf_type_min_stored(&G->out) / ((int64_t)1 << Eo)));
-    else
-        pf_put(kern, "    const __m256i c127 = _mm256_set1_epi16(127), sgn = _mm256_set1_epi16(-32768);\n");
+    else if (thm)
+        pf_printf(kern, "    const __m256i ce = _mm256_set1_epi16(%d), lo = _mm256_set1_epi16(%d);\n"
+                        "    __m256i ka = _mm256_set1_epi16(%d), kb = _mm256_set1_epi16(%d); /* A, K */\n"
+                        "    __asm__(\"\" : \"+x\"(ka), \"+x\"(kb));\n",
+                  tc0, tc, ta, tk);
+    if (L->tlo || (!tha && !thm))
+        pf_printf(kern, "    const __m256i c127 = _mm256_set1_epi16(127)%s;\n", tha || thm ? "" : ", sgn = _mm256_set1_epi16(-32768)");
     pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
                  "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
                  "        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));\n"
                  "        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));\n"
                  "        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */\n"
                  "        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);\n");
-    pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup), f = _mm256_slli_epi16(u, %d);\n",
-              16 - jb, jb);
+    if (jb == 4) /* j and f by multiplies: the shifts' ports are the busier (measured 2% faster; not so at 32) */
+        pf_put(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup), f = _mm256_mullo_epi16(u, c16);\n");
+    else
+        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup), f = _mm256_slli_epi16(u, %d);\n",
+                  16 - jb, jb);
     if (jb == 4)
         pf_printf(kern,
                   "        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, jj), _mm256_shuffle_epi8(q%d, jj), hib);\n"
@@ -495,7 +614,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                   "                                       _mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)), hib);\n",
                   qv, qv + 1, qv + 2, qv + 3, qs, qs + 1, qs + 2, qs + 3);
     pf_put(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));\n");
-    if (!tha || L->tlo)
+    if (L->tlo || (!tha && !thm))
         pf_put(kern, "        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */\n");
     if (L->tlo) {
         if (tlb)
@@ -508,6 +627,10 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_printf(kern, "        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), %d);\n"
                         "        __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));\n",
                   Eo);
+    else if (thm)
+        pf_put(kern, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
+                     "        __m256i th = _mm256_add_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(e, kb)); /* TH + B */\n"
+                     "        __m256i r = _mm256_adds_epi16(th, _mm256_mulhrs_epi16(w, kr));\n");
     else
         pf_printf(kern, "        __m256i th = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib);\n"
                         "        __m256i r = _mm256_xor_si256(_mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr)), sgn);\n",

@@ -308,9 +308,10 @@ static void pf_log2_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restri
    bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
    them back in the words' order.  No vpermw: a table of 16 words is two
    vpshufb (its low and its high bytes), the index in both bytes of the word,
-   merged by vpblendvb; 32 words are two such tables, the other one's lookup zeroed by bit 7
-   of its index (j + 0x70, j + 0xf0 per byte).  x = 0: the index ex - 127 has bit 7 set, so
-   the lookups by it give 0; TH = max(ex - 127 - Ei, lo) << Eo from ex.  The same values. */
+   merged by vpblendvb; 32 words are two such tables, the other one's lookup
+   zeroed by bit 7 of its index (j + 0x70, j + 0xf0 per byte).
+   TH = max(ex - 135, -16) << 11 from ex, no lookup: -32768 for x = 0, whose w =
+   V[0] rounds to 0 (the scalar form's check).  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_log2_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {

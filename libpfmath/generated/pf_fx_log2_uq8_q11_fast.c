@@ -309,8 +309,9 @@ static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *r
    bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
    them back in the words' order.  No vpermw: a table of 16 words is two
    vpshufb (its low and its high bytes), the index in both bytes of the word,
-   merged by vpblendvb.  x = 0: the index ex - 127 has bit 7 set, so
-   the lookups by it give 0; TH = max(ex - 127 - Ei, lo) << Eo from ex.  The same values. */
+   merged by vpblendvb.
+   TH = max(ex - 135, -16) << 11 from ex, no lookup: -32768 for x = 0, whose w =
+   V[0] rounds to 0 (the scalar form's check).  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
@@ -327,6 +328,8 @@ static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t 
     const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
     __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
     __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
+    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */
+    __asm__("" : "+x"(c16));
     const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
     const __m256i kr = _mm256_set1_epi16(4096);
     const __m256i ce = _mm256_set1_epi16(135), lo = _mm256_set1_epi16(-16);
@@ -337,7 +340,7 @@ static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t 
         __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
         __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
         __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
-        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, 12), dup), f = _mm256_slli_epi16(u, 4);
+        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup), f = _mm256_mullo_epi16(u, c16);
         __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
         __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
         __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));

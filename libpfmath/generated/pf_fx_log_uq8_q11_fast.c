@@ -16,8 +16,8 @@
  * Lanes:       16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count 
  *              (vplzcntd on x 2^16 + 2^15, packed to words), per-element shift (vpsllvw) by 
  *              AVX-512BW/CD intrinsics; x86-64-v3: lookups by vpshufb on byte planes, lz and t 
- *              from x's float (vcvtdq2ps on even and odd words); other clones, scalar form: 
- *              plain C
+ *              from x's float (vcvtdq2ps on even and odd words), TH from its exponent by a 
+ *              vpmullw and a vpmulhrsw (searched); other clones, scalar form: plain C
  * Method:      per segment: S[j] the chord's rise at 2^-15 through MPFR's F(j/16), F((j+1)/16) 
  *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
  *              floor(S[j] f 2^-16) - F(t) 2^15 over the segment's 2048 inputs (discrete minimax 
@@ -310,31 +310,35 @@ static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *re
    bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
    them back in the words' order.  No vpermw: a table of 16 words is two
    vpshufb (its low and its high bytes), the index in both bytes of the word,
-   merged by vpblendvb.  x = 0: the index ex - 127 has bit 7 set, so
-   the lookups by it give 0 and TH' = TH ^ 0x8000 is stored, the sign bit flipped back.  The same values. */
+   merged by vpblendvb.
+   TH + B = A e' + round(e' K 2^-15) (mod 2^16), A = 1419, K = 18239, B = 1656,
+   e' = max(ex - 180, -161): no lookup (pfmathgen searched A, K, B and the
+   shift of e' for every lz < 16); V - B 2^4 is stored, so the sum is
+   the same.  x = 0: e' = -161, A e' + round(e' K 2^-15) - B = -33597, and w =
+   V[0] - B 2^td rounds to -B, so the saturating add gives -32768.  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_log_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    uint8_t b[6][16]; /* byte planes: V low, high; S low, high; TH' by bitlen(x) - 1, low, high */
+    uint8_t b[4][16]; /* byte planes: V - B 2^td low, high; S low, high */
     for (int k = 0; k < 16; k++) {
-        b[0][k] = (uint8_t)(uint32_t)pf_log_uq8_q11_fast_tv[k];
-        b[1][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_fast_tv[k] >> 8);
+        b[0][k] = (uint8_t)(uint32_t)(pf_log_uq8_q11_fast_tv[k] - 26496);
+        b[1][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_fast_tv[k] - 26496) >> 8);
         b[2][k] = (uint8_t)pf_log_uq8_q11_fast_ts[k];
         b[3][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_fast_ts[k] >> 8);
-        b[4][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_fast_th[15 - k] ^ 0x8000u);
-        b[5][k] = (uint8_t)(((uint32_t)pf_log_uq8_q11_fast_th[15 - k] ^ 0x8000u) >> 8);
     }
     const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
     const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
     const __m256i q2 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
     const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
-    const __m256i q4 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[4]));
-    const __m256i q5 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[5]));
     __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
     __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
+    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */
+    __asm__("" : "+x"(c16));
     const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
     const __m256i kr = _mm256_set1_epi16(2048);
-    const __m256i c127 = _mm256_set1_epi16(127), sgn = _mm256_set1_epi16(-32768);
+    const __m256i ce = _mm256_set1_epi16(180), lo = _mm256_set1_epi16(-161);
+    __m256i ka = _mm256_set1_epi16(1419), kb = _mm256_set1_epi16(18239); /* A, K */
+    __asm__("" : "+x"(ka), "+x"(kb));
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
         __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
@@ -342,13 +346,13 @@ static void pf_log_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *
         __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
         __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
         __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
-        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, 12), dup), f = _mm256_slli_epi16(u, 4);
+        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup), f = _mm256_mullo_epi16(u, c16);
         __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
         __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
         __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
-        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */
-        __m256i th = _mm256_blendv_epi8(_mm256_shuffle_epi8(q4, kk), _mm256_shuffle_epi8(q5, kk), hib);
-        __m256i r = _mm256_xor_si256(_mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr)), sgn);
+        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);
+        __m256i th = _mm256_add_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(e, kb)); /* TH + B */
+        __m256i r = _mm256_adds_epi16(th, _mm256_mulhrs_epi16(w, kr));
         _mm256_storeu_si256((__m256i *)(y + i), r);
     }
     for (; i < n; i++)
