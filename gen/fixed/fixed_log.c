@@ -265,8 +265,74 @@ static int32_t wrap16(int64_t v) { return (int32_t)(int16_t)(uint16_t)((uint64_t
    2^-15) - B is at most -32768, so a saturating add (vpaddsw) gives -32768
    there (w = V[0] rounds to 0 without TL, w = 0 with it).  Searched over A near the slope,
    K near the rest of it and the shift s (least |s| first); 0: none. */
-/* the TL variant (exact log) too: 1 (see the AVX2 loop's timings) */
+/* the TL variant (exact log) too, where tab_tlq finds nothing: 1 (see the
+   AVX2 loop's timings) */
 #define THMUL_TL 1
+
+/* With TL (exact log): TH[lz] 2^td + TL[lz] = q e for one integer q and
+   every lz < 16 (e ln2 rounded at 2^-(Eo+td), exact multiples while |e| is
+   small), so with q = a 2^td + b the result TH + round((w + TL) 2^-td) is
+   a e' + round((w - q s + b e') 2^-td) for e' = e + s: two vpmullw, no
+   lookup (V - q s stored).  x = 0: e' = max(ex - c0, c) = c, where the
+   saturating add of a c and round((V[0] - q s + b c) 2^-td) (16-bit
+   words) is at most -32768.  Searched over the shift s and c; 0: none. */
+static int tab_tlq(const fx_gen *G, int *pa, int *pb, int *pq, int *ps, int *pc0, int *pc)
+{
+    const fx_log_red *L = &G->log;
+    int Ei = G->in.exp, td = L->td, ns = 1 << L->tjb;
+    if (!L->tlo || pf_type_min_stored(&G->out) != -32768)
+        return 0;
+    int64_t q = 0;
+    int have = 0;
+    for (int lz = 0; lz < 16; lz++) {
+        int64_t e = 15 - lz - Ei, v = (int64_t)L->th[lz] * (1 << td) + L->tl[lz];
+        if (e == 0) {
+            if (v != 0)
+                return 0;
+            continue;
+        }
+        if (v % e)
+            return 0;
+        if (have && v / e != q)
+            return 0;
+        q = v / e;
+        have = 1;
+    }
+    if (!have)
+        return 0;
+    int64_t a = floordiv(q, 1 << td), b = q - a * (1 << td);
+    int64_t wlo = INT64_MAX, whi = INT64_MIN;
+    for (int j = 0; j < ns; j++) {
+        wlo = L->tv[j] < wlo ? L->tv[j] : wlo;
+        int64_t h = L->tv[j] + (((int64_t)L->ts[j] * 65535) >> 16);
+        whi = h > whi ? h : whi;
+    }
+    for (int sa = 0; sa <= 4; sa++)
+        for (int sg = 0; sg < 2; sg++) {
+            int sh = sg ? -sa : sa;
+            if (sg && !sa)
+                continue;
+            int64_t elo = -Ei + sh, ehi = 15 - Ei + sh; /* e' over x > 0 */
+            int64_t b1 = b * elo < b * ehi ? b * elo : b * ehi, b2 = b * elo < b * ehi ? b * ehi : b * elo;
+            if (wlo - q * sh + b1 < -32768 || whi - q * sh + b2 > 32767 || a * elo < -32768 || a * ehi > 32767 ||
+                a * elo > 32767 || a * ehi < -32768)
+                continue;
+            int c0 = 127 + Ei - sh;
+            for (int c = -c0; c <= elo - 1; c++) {
+                int32_t t0 = wrap16(a * c), m0 = mulhrs16(wrap16(L->tv[0] - q * sh + b * c), 1 << (15 - td));
+                if (t0 + m0 <= -32768) {
+                    *pa = (int)a;
+                    *pb = (int)b;
+                    *pq = (int)q;
+                    *ps = sh;
+                    *pc0 = c0;
+                    *pc = c;
+                    return 1;
+                }
+            }
+        }
+    return 0;
+}
 
 static int tab_thmul(const fx_gen *G, int *pa, int *pk, int *pc0, int *pc, int *pb)
 {
@@ -337,9 +403,10 @@ static void tab_texts(fx_gen *G, int base2)
     const fx_log_red *L = &G->log;
     int Ei = G->in.exp, Eo = G->out.exp, Ef = Eo + L->td, jb = L->tjb, ns = 1 << jb;
     const char *fn = base2 ? "log2" : "log";
-    int tha, tlb, avx2 = tab_avx2(G, &tha, &tlb), thm = 0, t5[5];
-    if (avx2 && !tha && (THMUL_TL || !L->tlo))
-        thm = tab_thmul(G, t5, t5 + 1, t5 + 2, t5 + 3, t5 + 4);
+    int tha, tlb, avx2 = tab_avx2(G, &tha, &tlb), thm = 0, t6[6];
+    int tlq = avx2 && tab_tlq(G, t6, t6 + 1, t6 + 2, t6 + 3, t6 + 4, t6 + 5);
+    if (avx2 && !tha && !tlq && (THMUL_TL || !L->tlo))
+        thm = tab_thmul(G, t6, t6 + 1, t6 + 2, t6 + 3, t6 + 4);
     snprintf(G->red_text, sizeof G->red_text,
              "x = 2^e (1 + t), e = 15 - lz - %d with lz = 16 - bitlen(x) (AVX-512: a leading-zero count of x 2^16 + "
              "2^15, vplzcntd;%s else branch-free stages), u = x << lz (vpsllvw), t in [0, 1) the 15 bits below u's "
@@ -374,6 +441,7 @@ static void tab_texts(fx_gen *G, int base2)
                  "lookups by vpshufb on byte planes, lz and t from x's float (vcvtdq2ps on even and odd words)%s; "
                  "other clones, scalar form: plain C",
                  tha   ? ", TH = max(ex - c, lo) << Eo from its exponent"
+                 : tlq ? ", TH and TL from its exponent by a vpmullw each (TH 2^td + TL = q e)"
                  : thm ? ", TH from its exponent by a vpmullw and a vpmulhrsw (searched)" : "");
     else
         snprintf(G->wide_text, sizeof G->wide_text,
@@ -475,13 +543,14 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     pf_printf(kern, "        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));\n"
                     "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n",
               N);
-    int tha, tlb, thm = 0, ta = 0, tk = 0, tc0 = 0, tc = 0, tb = 0;
+    int tha, tlb, thm = 0, ta = 0, tk = 0, tc0 = 0, tc = 0, tb = 0, tq = 0, ts = 0;
     if (!tab_avx2(G, &tha, &tlb)) {
         pf_put(kern, "#endif");
         G->bw16 = 2;
         return;
     }
-    if (!tha && (THMUL_TL || !L->tlo))
+    int tlq = tab_tlq(G, &ta, &tb, &tq, &ts, &tc0, &tc);
+    if (!tha && !tlq && (THMUL_TL || !L->tlo))
         thm = tab_thmul(G, &ta, &tk, &tc0, &tc, &tb);
     /* AVX2: no vpermw, no 16-bit per-element shift, no leading-zero count.
        x converted to float (even and odd words apart, in 32-bit lanes) is
@@ -508,6 +577,12 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                         "   V[0] rounds to 0 (the scalar form's check).  The same values. */\n",
                   127 + Ei, (long long)(pf_type_min_stored(&G->out) / ((int64_t)1 << Eo)), Eo,
                   (long long)pf_type_min_stored(&G->out));
+    else if (tlq)
+        pf_printf(kern, "   TH 2^%d + TL = %d e for every lz < 16, %d = %d 2^%d + %d: the result is\n"
+                        "   %d e' + round((w - %d s + %d e') 2^-%d), e' = e + s = max(ex - %d, %d), s = %d:\n"
+                        "   two vpmullw, no lookup (V - %d s is stored).  x = 0: e' = %d, and the\n"
+                        "   saturating add gives -32768 (pfmathgen checked it).  The same values. */\n",
+                  L->td, tq, tq, ta, L->td, tb, ta, tq, tb, L->td, tc0, tc, ts, tq, tc);
     else if (thm)
         pf_printf(kern, "   TH + B = A e' + round(e' K 2^-15) (mod 2^16), A = %d, K = %d, B = %d,\n"
                         "   e' = max(ex - %d, %d): no lookup (pfmathgen searched A, K, B and the\n"
@@ -530,14 +605,14 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     /* byte planes: V (2 or 4), S (2 or 4), TH' (2, lookup only), TL (1 or 2) */
     qv = nq; nq += 2 * (ns / 16);
     qs = nq; nq += 2 * (ns / 16);
-    if (!tha && !thm) { qh = nq; nq += 2; }
-    if (L->tlo) { ql = nq; nq += tlb ? 1 : 2; }
+    if (!tha && !thm && !tlq) { qh = nq; nq += 2; }
+    if (L->tlo && !tlq) { ql = nq; nq += tlb ? 1 : 2; }
     pf_printf(kern, "    uint8_t b[%d][16]; /* byte planes: ", nq);
-    pf_printf(kern, "V%s%s low, high%s; S low, high%s", L->tlo ? " - V[0]" : "", thm ? " - B 2^td" : "",
+    pf_printf(kern, "V%s%s low, high%s; S low, high%s", tlq ? " - q s" : L->tlo ? " - V[0]" : "", thm ? " - B 2^td" : "",
               jb == 5 ? " (entries 0-15, 16-31)" : "", jb == 5 ? " (0-15, 16-31)" : "");
-    if (!tha && !thm)
+    if (!tha && !thm && !tlq)
         pf_put(kern, "; TH' by bitlen(x) - 1, low, high");
-    if (L->tlo)
+    if (L->tlo && !tlq)
         pf_printf(kern, "; TL + V[0] by bitlen(x) - 1%s", tlb ? " (one byte each)" : ", low, high");
     pf_put(kern, " */\n    for (int k = 0; k < 16; k++) {\n");
     for (int h = 0; h < ns / 16; h++) {
@@ -545,7 +620,9 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         char vk[320], vb[32] = "";
         if (thm)
             snprintf(vb, sizeof vb, " - %d", tb << L->td);
-        if (L->tlo)
+        if (tlq)
+            snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s] - %lld)", N, o, (long long)tq * ts);
+        else if (L->tlo)
             snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s] - %s_tv[0]%s)", N, o, N, vb);
         else if (thm)
             snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s]%s)", N, o, vb);
@@ -556,11 +633,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_printf(kern, "        b[%d][k] = (uint8_t)%s_ts[k%s];\n", qs + h, N, o);
         pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_ts[k%s] >> 8);\n", qs + ns / 16 + h, N, o);
     }
-    if (!tha && !thm) {
+    if (!tha && !thm && !tlq) {
         pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_th[15 - k] ^ 0x8000u);\n", qh, N);
         pf_printf(kern, "        b[%d][k] = (uint8_t)(((uint32_t)%s_th[15 - k] ^ 0x8000u) >> 8);\n", qh + 1, N);
     }
-    if (L->tlo) {
+    if (L->tlo && !tlq) {
         pf_printf(kern, "        b[%d][k] = (uint8_t)(uint32_t)(%s_tl[15 - k] + %s_tv[0]);\n", ql, N, N);
         if (!tlb)
             pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)(%s_tl[15 - k] + %s_tv[0]) >> 8);\n", ql + 1, N, N);
@@ -582,12 +659,17 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     if (tha)
         pf_printf(kern, "    const __m256i ce = _mm256_set1_epi16(%d), lo = _mm256_set1_epi16(%lld);\n", 127 + Ei,
                   (long long)(pf_type_min_stored(&G->out) / ((int64_t)1 << Eo)));
+    else if (tlq)
+        pf_printf(kern, "    const __m256i ce = _mm256_set1_epi16(%d), lo = _mm256_set1_epi16(%d);\n"
+                        "    __m256i ka = _mm256_set1_epi16(%d), kb = _mm256_set1_epi16(%d); /* a, b */\n"
+                        "    __asm__(\"\" : \"+x\"(ka), \"+x\"(kb));\n",
+                  tc0, tc, ta, tb);
     else if (thm)
         pf_printf(kern, "    const __m256i ce = _mm256_set1_epi16(%d), lo = _mm256_set1_epi16(%d);\n"
                         "    __m256i ka = _mm256_set1_epi16(%d), kb = _mm256_set1_epi16(%d); /* A, K */\n"
                         "    __asm__(\"\" : \"+x\"(ka), \"+x\"(kb));\n",
                   tc0, tc, ta, tk);
-    if (L->tlo || (!tha && !thm))
+    if ((L->tlo && !tlq) || (!tha && !thm && !tlq))
         pf_printf(kern, "    const __m256i c127 = _mm256_set1_epi16(127)%s;\n", tha || thm ? "" : ", sgn = _mm256_set1_epi16(-32768)");
     pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
                  "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
@@ -614,9 +696,9 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                   "                                       _mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)), hib);\n",
                   qv, qv + 1, qv + 2, qv + 3, qs, qs + 1, qs + 2, qs + 3);
     pf_put(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));\n");
-    if (L->tlo || (!tha && !thm))
+    if ((L->tlo && !tlq) || (!tha && !thm && !tlq))
         pf_put(kern, "        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */\n");
-    if (L->tlo) {
+    if (L->tlo && !tlq) {
         if (tlb)
             pf_printf(kern, "        w = _mm256_add_epi16(w, _mm256_srai_epi16(_mm256_shuffle_epi8(q%d, kk), 8));\n", ql);
         else
@@ -627,6 +709,10 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_printf(kern, "        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), %d);\n"
                         "        __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));\n",
                   Eo);
+    else if (tlq)
+        pf_put(kern, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
+                     "        w = _mm256_add_epi16(w, _mm256_mullo_epi16(e, kb));\n"
+                     "        __m256i r = _mm256_adds_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(w, kr));\n");
     else if (thm)
         pf_put(kern, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
                      "        __m256i th = _mm256_add_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(e, kb)); /* TH + B */\n"

@@ -16,8 +16,8 @@
  * Lanes:       16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count 
  *              (vplzcntd on x 2^16 + 2^15, packed to words), per-element shift (vpsllvw) by 
  *              AVX-512BW/CD intrinsics; x86-64-v3: lookups by vpshufb on byte planes, lz and t 
- *              from x's float (vcvtdq2ps on even and odd words), TH from its exponent by a 
- *              vpmullw and a vpmulhrsw (searched); other clones, scalar form: plain C
+ *              from x's float (vcvtdq2ps on even and odd words), TH and TL from its exponent by 
+ *              a vpmullw each (TH 2^td + TL = q e); other clones, scalar form: plain C
  * Method:      per segment: S[j] the chord's rise at 2^-15 through MPFR's F(j/32), F((j+1)/32) 
  *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
  *              floor(S[j] f 2^-16) - F(t) 2^15 over the segment's 1024 inputs (discrete minimax 
@@ -322,25 +322,23 @@ static void pf_log_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restric
    vpshufb (its low and its high bytes), the index in both bytes of the word,
    merged by vpblendvb; 32 words are two such tables, the other one's lookup
    zeroed by bit 7 of its index (j + 0x70, j + 0xf0 per byte).
-   TH + B = A e' + round(e' K 2^-15) (mod 2^16), A = 1419, K = 18239, B = 1656,
-   e' = max(ex - 180, -161): no lookup (pfmathgen searched A, K, B and the
-   shift of e' for every lz < 16); V - V[0] - B 2^4 is stored, so the sum is
-   the same.  x = 0: e' = -161, A e' + round(e' K 2^-15) - B = -33597, and w =
-   -B 2^td (TL's lookup is 0), so the saturating add gives -32768.  The same values. */
+   TH 2^4 + TL = 22713 e for every lz < 16, 22713 = 1419 2^4 + 9: the result is
+   1419 e' + round((w - 22713 s + 9 e') 2^-4), e' = e + s = max(ex - 134, -115), s = 1:
+   two vpmullw, no lookup (V - 22713 s is stored).  x = 0: e' = -115, and the
+   saturating add gives -32768 (pfmathgen checked it).  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_log_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    uint8_t b[9][16]; /* byte planes: V - V[0] - B 2^td low, high (entries 0-15, 16-31); S low, high (0-15, 16-31); TL + V[0] by bitlen(x) - 1 (one byte each) */
+    uint8_t b[8][16]; /* byte planes: V - q s low, high (entries 0-15, 16-31); S low, high (0-15, 16-31) */
     for (int k = 0; k < 16; k++) {
-        b[0][k] = (uint8_t)(uint32_t)(pf_log_uq8_q11_tv[k] - pf_log_uq8_q11_tv[0] - 26496);
-        b[2][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_tv[k] - pf_log_uq8_q11_tv[0] - 26496) >> 8);
+        b[0][k] = (uint8_t)(uint32_t)(pf_log_uq8_q11_tv[k] - 22713);
+        b[2][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_tv[k] - 22713) >> 8);
         b[4][k] = (uint8_t)pf_log_uq8_q11_ts[k];
         b[6][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_ts[k] >> 8);
-        b[1][k] = (uint8_t)(uint32_t)(pf_log_uq8_q11_tv[k + 16] - pf_log_uq8_q11_tv[0] - 26496);
-        b[3][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_tv[k + 16] - pf_log_uq8_q11_tv[0] - 26496) >> 8);
+        b[1][k] = (uint8_t)(uint32_t)(pf_log_uq8_q11_tv[k + 16] - 22713);
+        b[3][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_tv[k + 16] - 22713) >> 8);
         b[5][k] = (uint8_t)pf_log_uq8_q11_ts[k + 16];
         b[7][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_ts[k + 16] >> 8);
-        b[8][k] = (uint8_t)(uint32_t)(pf_log_uq8_q11_tl[15 - k] + pf_log_uq8_q11_tv[0]);
     }
     const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
     const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
@@ -350,16 +348,14 @@ static void pf_log_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *restr
     const __m256i q5 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[5]));
     const __m256i q6 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[6]));
     const __m256i q7 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[7]));
-    const __m256i q8 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[8]));
     __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
     __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
     const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
     const __m256i kr = _mm256_set1_epi16(2048);
     const __m256i c70 = _mm256_set1_epi8(0x70), c80 = _mm256_set1_epi8(-128);
-    const __m256i ce = _mm256_set1_epi16(180), lo = _mm256_set1_epi16(-161);
-    __m256i ka = _mm256_set1_epi16(1419), kb = _mm256_set1_epi16(18239); /* A, K */
+    const __m256i ce = _mm256_set1_epi16(134), lo = _mm256_set1_epi16(-115);
+    __m256i ka = _mm256_set1_epi16(1419), kb = _mm256_set1_epi16(9); /* a, b */
     __asm__("" : "+x"(ka), "+x"(kb));
-    const __m256i c127 = _mm256_set1_epi16(127);
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
         __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
@@ -374,11 +370,9 @@ static void pf_log_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *restr
         __m256i s = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q4, a0), _mm256_shuffle_epi8(q5, a1)),
                                        _mm256_or_si256(_mm256_shuffle_epi8(q6, a0), _mm256_shuffle_epi8(q7, a1)), hib);
         __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
-        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */
-        w = _mm256_add_epi16(w, _mm256_srai_epi16(_mm256_shuffle_epi8(q8, kk), 8));
         __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);
-        __m256i th = _mm256_add_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(e, kb)); /* TH + B */
-        __m256i r = _mm256_adds_epi16(th, _mm256_mulhrs_epi16(w, kr));
+        w = _mm256_add_epi16(w, _mm256_mullo_epi16(e, kb));
+        __m256i r = _mm256_adds_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(w, kr));
         _mm256_storeu_si256((__m256i *)(y + i), r);
     }
     for (; i < n; i++)
