@@ -35,21 +35,21 @@ static void g_log2_1p(mpfr_t y, const mpfr_t t, const void *ctx)
  * An unsigned input of at most 16 bits is x = 2^(15 - lz) (1 + t) with
  * lz = 16 - bitlen(x) (16 for x = 0): u = x << lz has its leading one at
  * bit 15, j = t's top jb bits picks one of 2^jb segments of [0, 1) and f =
- * t's other 15 - jb bits (at 2^-16) the place in it, all exact: jb = 4 (16
- * segments) where the variant's target allows it, else 5 (32).  F(t) = log(1 + t)
- * or log2(1 + t) is a line per segment at 2^-Ef, V[j] + floor(S[j] f 2^-16),
- * and e K (e = 15 - lz - Ei) = TH[lz] 2^-Eo + TL[lz] 2^-Ef; the result is
- * TH[lz] + round((V[j] + floor(S[j] f 2^-16) + TL[lz]) 2^-(Ef - Eo)), every
- * step a 16-bit word, the lookups one vpermw each (AVX-512), or vpshufb on
- * the tables' byte planes (AVX2: two per plane for 32 entries, one for 16).  Where the output's lsb
- * allows (fast, log2), TL is left out: TH alone, rounded at 2^-Eo.
+ * t's other 15 - jb bits (at 2^-16) the place in it, all exact: jb = 4
+ * (16 segments) where the variant's target allows it, else 5 (32: one
+ * vpermw of 32 16-bit entries).  F(t) = log(1 + t) or log2(1 + t) is a
+ * line per segment at 2^-Ef, V[j] + floor(S[j] f 2^-16), and e K (e = 15 -
+ * lz - Ei) = TH[lz] 2^-Eo + TL[lz] 2^-Ef; the result is TH[lz] + round((V[j]
+ * + floor(S[j] f 2^-16) + TL[lz]) 2^-(Ef - Eo)), every step a 16-bit word,
+ * the lookups one vpermw each (AVX-512), or vpshufb on the tables' byte
+ * planes (AVX2: two per plane for 32 entries, one for 16; TH and TL there
+ * by multiplies where pfmathgen finds an exact form).  Where the output's
+ * lsb allows (fast, log2), TL is left out: TH alone, rounded at 2^-Eo.
  * S[j] comes from the chord through MPFR's values at the segment's ends
  * (searched +-2 around it), V[j] centres the segment's error over its
- * 2^(15-jb) points (a discrete minimax of the integer step, the floor included).  The
- * bound is taken over every input by running these integer steps (tab_y)
- * against MPFR. */
-
-/* segments: 2^jb, at most 32 (one vpermw of 32 16-bit entries) */
+ * 2^(15-jb) points (a discrete minimax of the integer step, the floor
+ * included).  The bound is taken over every input by running these integer
+ * steps (tab_y) against MPFR. */
 
 static int64_t floordiv(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
