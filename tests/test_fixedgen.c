@@ -185,8 +185,9 @@ static int json_int(const char *s, const char *key)
 static void test_fast_variant(void **st)
 {
     (void)st;
+    /* log2 from a signed input: the Horner form (ufixed<16,8> takes the table kernel, which has no order) */
     const char *types[] = {"--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>'",
-                           "--func log2 --type 'ufixed<16,8>' --out-type 'fixed<15,11>'"};
+                           "--func log2 --type 'fixed<15,8>' --out-type 'fixed<15,11>'"};
     for (int i = 0; i < 2; i++) {
         char a[512];
         snprintf(a, sizeof a, "%s --variant fast --json", types[i]);

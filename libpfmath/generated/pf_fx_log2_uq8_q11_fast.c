@@ -4,32 +4,42 @@
  * Regenerate:  pfmathgen --func log2 --type 'ufixed<16,8>' --out-type 'fixed<15,11>' --variant fast -o libpfmath/generated/pf_fx_log2_uq8_q11_fast.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
- * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
- *              constant shifts and selects; on AVX-512 CPUs a leading-zero count, the same n), 
- *              t in [0, 1) the 15 bits below the leading one (exact); log2(x) = e + P(t) summed 
- *              in an int16_t at 2^-11, rounded once; x <= 0 -> -32768 (most negative)
- * Domain:      log2(1+t) on t in [0, 1]
- * Order:       3 (4 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       every step in 16-bit lanes
- * Method:      least-squares absolute error (Gauss-Legendre quadrature), coefficients rounded 
- *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
- * Constraints: p(0) = 0 (log2 of powers of 2 exact)
- * Formats:     x unsigned fixed<15,15> in int16_t; p3 fixed<15,15>, p2 fixed<15,15>, p1 
- *              fixed<15,14> (x rounded to 2^-14), p0 fixed<15,14>; steps p = pf_fx_mulhrs(p, x) 
- *              + c, the rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
- *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
- *              Horner rounding error <= 9.423e-05
- * Polynomial:  max absolute error 1.312e-03 (2^-9.57) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.8805 LSB (polynomial 2.6875, 
- *              arithmetic and reduction 0.1930) = 3.3805 LSB
- * Sweep:       max 3.1803 LSB at x = 16383 (63.9960938), mean 0.9208 LSB; exhaustive: all 65536 
+ * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (AVX-512: a 
+ *              leading-zero count of x 2^16 + 2^15, vplzcntd; AVX2: the exponent and the 
+ *              fraction bits of x converted to float, exact; else branch-free stages), u = x << 
+ *              lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment j = 
+ *              t's top 4 bits, f = the other 11 (2^-16); log2(x) = e + F(t), F(t) = log2(1 + 
+ *              t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
+ * Domain:      log2(1+t) on t in [0, 1]: 16 segments [j/16, (j+1)/16)
+ * Order:       1 per segment (a line: V[j] + S[j] f), 16-entry tables V, S; TH by lz; int16_t 
+ *              words: 16-bit lanes
+ * Lanes:       16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count 
+ *              (vplzcntd on x 2^16 + 2^15, packed to words), per-element shift (vpsllvw) by 
+ *              AVX-512BW/CD intrinsics; x86-64-v3: lookups by vpshufb on byte planes, lz and t 
+ *              from x's float (vcvtdq2ps on even and odd words), TH = max(ex - c, lo) << Eo 
+ *              from its exponent; other clones, scalar form: plain C
+ * Method:      per segment: S[j] the chord's rise at 2^-14 through MPFR's F(j/16), F((j+1)/16) 
+ *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
+ *              floor(S[j] f 2^-16) - F(t) 2^14 over the segment's 2048 inputs (discrete minimax 
+ *              of the integer step, floor included); TH[lz] = round(e 2^11) (MPFR, to nearest)
+ * Constraints: none per segment (C0 only up to the tables' rounding); x = 0 gives the most 
+ *              negative output
+ * Formats:     V, S, TH int16_t; w = V[j] + pmulhuw(S[j], f) at 2^-14 (int16_t); result TH[lz] 
+ *              + round(w 2^-3), the rounding multiply-high by 2^12 (pmulhrsw), ties up
+ * Polynomial:  segment lines within 7.8596 2^-14 (0.9824 LSB) of F(t) at every segment input 
+ *              (floor included)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.9824 LSB (polynomial 0.9824, 
+ *              arithmetic and reduction 0.0000) = 1.4824 LSB; taken over every input from the 
+ *              emitted integer steps (the table kernel) against MPFR
+ * Sweep:       max 1.3542 LSB at x = 33717 (131.707031), mean 0.3191 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  log2(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
- *              per rounding); bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating-point arithmetic: the AVX2 loop converts x to float, 
+ *              exact, and reads its bits; no <math.h>); the segment product floors (pmulhuw: in 
+ *              the bound), the result is rounded once to nearest, ties up (pmulhrsw); 
+ *              bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -213,85 +223,145 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* log2 in fixed point, in 16-bit lanes.  x = 2^e (1 + t) with t in
-   [0, 1): e from a staged normalization of the stored integer, t its
-   remaining bits (exact).  log2(x) = e  + P(t), P(t) ~ log2(1 + t),
-   summed in an int16_t and rounded once.  x <= 0 (log of 0 or of a
-   negative number) gives the most negative output, -32768.  k[] holds
-   the constants; bw = 1 (AVX-512 CPUs, see fx_tail16.c.in) takes the
-   leading-zero count for the normalization, bw = 0 the staged one: the same
-   values. */
+/* log2 in fixed point, in 16-bit lanes, from tables (gen/fixed/fixed_log.c,
+   the table kernel).  x = 2^(15 - lz) (1 + t): lz = 16 - bitlen(x), t the
+   15 bits below the leading one (exact).  log2(x) = e + F(t),
+   F(t) = log2(1 + t), a line on each of 32 segments of t (V[j] + S[j] f, j the
+   segment, f the place in it), e from TH[lz]; one rounding at the
+   end.  x = 0 gives the most negative output, -32768 (TH[16]).  k[] holds
+   the rounding's multiplier; bw is unused (the AVX-512 and AVX2 loops below
+   have their own intrinsics). */
+/* V[j]: the segment line's value at its start, F = log2(1 + t) at 2^-14 */
+static const int32_t pf_log2_uq8_q11_fast_tv[16] = {
+    3, 1438, 2789, 4066, 5278, 6431, 7530, 8581,
+    9587, 10551, 11478, 12370, 13230, 14059, 14860, 15635,
+};
+/* S[j]: the segment line's rise across the segment, at 2^-14 */
+static const int32_t pf_log2_uq8_q11_fast_ts[16] = {
+    1435, 1351, 1278, 1213, 1154, 1100, 1052, 1006,
+    965, 928, 893, 860, 829, 802, 776, 751,
+};
+/* TH[lz] = round(e 2^11), e = 15 - lz - 8 (MPFR); TH[16] (x = 0): the most negative */
+static const int32_t pf_log2_uq8_q11_fast_th[32] = {
+    14336, 12288, 10240, 8192, 6144, 4096, 2048, 0,
+    -2048, -4096, -6144, -8192, -10240, -12288, -14336, -16384,
+    -32768, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0,
+};
 PF_FX_INLINE int16_t pf_log2_uq8_q11_fast_inline(uint16_t x, const int16_t *k, int bw)
 {
-    (void)bw; /* unused by compilers without __builtin_clz */
-    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */
-    uint16_t u;
-    int16_t n; /* bitlen(ux) - 1 */
-#if defined(__GNUC__)
-    if (bw) {
-        int lz = __builtin_clz((uint32_t)ux) - 16; /* ux >= 1: in [0, 15] */
-        u = (uint16_t)(ux << lz);
-        n = (int16_t)(15 - lz);
-    } else
-#endif
-    {
-        u = (uint16_t)(ux << 0);
-        n = 15;
-        n = (int16_t)(u < 0x100u ? n - 8 : n);
-        u = (uint16_t)(u < 0x100u ? u << 8 : u);
-        n = (int16_t)(u < 0x1000u ? n - 4 : n);
-        u = (uint16_t)(u < 0x1000u ? u << 4 : u);
-        n = (int16_t)(u < 0x4000u ? n - 2 : n);
-        u = (uint16_t)(u < 0x4000u ? u << 2 : u);
-        n = (int16_t)(u < 0x8000u ? n - 1 : n);
-        u = (uint16_t)(u < 0x8000u ? u << 1 : u);
-    }
-    int16_t tq = (int16_t)(u & (uint16_t)k[0]); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    /* P(t) ~ log2(1 + t): Horner in 16-bit words, one rounding per step */
-    int16_t tq1 = pf_fx_mulhrs(tq, k[1]); /* tq rounded to 2^-14 */
-    int16_t p = k[2]; /* c3 = 0.165649414062 */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c2 = -0.587860107422, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, tq1) + k[4]); /* c1 = 1.42352294922, 2^-14 units */
-    p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-14 units */
-    int16_t ea = (int16_t)((n - 8) * k[6]); /* e 2^11 */
-    int16_t z = (int16_t)(ea + pf_fx_mulhrs(p, k[5])); /* e + P at 2^-11 */
-    int16_t r = z;
-    int16_t rc = (int16_t)r;
-    return (int16_t)(x <= 0 ? -32768 : rc);
+    (void)bw;
+    /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */
+    int lz = 16 - pf_fx_bitlen(x);
+    uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */
+    unsigned j = (u >> 11) & 15u;               /* segment: t's top 4 bits */
+    uint16_t f = (uint16_t)(u << 5);            /* t's other 11 bits: the place in it, 2^-16 */
+    /* F(t) on segment j, at 2^-14: V[j] + floor(S[j] f 2^-16) (pmulhuw) */
+    int16_t w = (int16_t)(pf_log2_uq8_q11_fast_tv[j] + (int32_t)(((uint32_t)pf_log2_uq8_q11_fast_ts[j] * f) >> 16));
+    /* e at 2^-11 plus w rounded once to it */
+    return (int16_t)(pf_log2_uq8_q11_fast_th[lz] + pf_fx_mulhrs(w, k[0]));
 }
 
+/* AVX-512BW/CD: the same steps on 32 lanes, with intrinsics, as GCC does not
+   turn the table lookups into vpermw nor a 16-bit leading-zero count into
+   vplzcntd: the array form runs this loop on a CPU with x86-64-v4 (see its
+   dispatch), the rest of the array and the other clones use the scalar steps
+   above.  x 2^16 + 2^15 in 32-bit lanes has lz leading zeros (16 for x = 0);
+   unpack and pack keep the lanes' order.  The same values (pfmathgen sweeps
+   the array form on its machine against the scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#include <immintrin.h>
+extern int16_t pf_log2_uq8_q11_fast(uint16_t x); /* the scalar form, for the last n % 32 (or 16) */
+/* 32 table entries as 16-bit words, for vpermw */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log2_uq8_q11_fast_w16(const int32_t *t)
+{
+    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
+                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
+}
+/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: u >> 11 is 16 + j) */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log2_uq8_q11_fast_w16x2(const int32_t *t)
+{
+    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
+}
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    const __m512i tv = pf_log2_uq8_q11_fast_w16x2(pf_log2_uq8_q11_fast_tv), ts = pf_log2_uq8_q11_fast_w16x2(pf_log2_uq8_q11_fast_ts), th = pf_log2_uq8_q11_fast_w16(pf_log2_uq8_q11_fast_th);
+    const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(4096);
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        __m512i xv = _mm512_loadu_si512(x + i);
+        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
+                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
+        __m512i u = _mm512_sllv_epi16(xv, lz);
+        __m512i j = _mm512_srli_epi16(u, 11), f = _mm512_slli_epi16(u, 5); /* vpermw reads j's low 5 bits */
+        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
+                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));
+        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
+        _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_log2_uq8_q11_fast(x[i]);
+}
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  lz and t from x converted
+   to float, exact (even and odd words apart, in 32-bit lanes): its fraction
+   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
+   them back in the words' order.  No vpermw: a table of 16 words is two
+   vpshufb (its low and its high bytes), the index in both bytes of the word,
+   merged by vpblendvb.
+   TH = max(ex - 135, -16) << 11 from ex, no lookup: -32768 for x = 0, whose w =
+   V[0] rounds to 0 (the scalar form's check).  The same values. */
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    uint8_t b[4][16]; /* byte planes: V low, high; S low, high */
+    for (int k = 0; k < 16; k++) {
+        b[0][k] = (uint8_t)(uint32_t)pf_log2_uq8_q11_fast_tv[k];
+        b[1][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_fast_tv[k] >> 8);
+        b[2][k] = (uint8_t)pf_log2_uq8_q11_fast_ts[k];
+        b[3][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_fast_ts[k] >> 8);
+    }
+    const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
+    const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
+    const __m256i q2 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
+    const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
+    __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
+    __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
+    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */
+    __asm__("" : "+x"(c16));
+    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
+    const __m256i kr = _mm256_set1_epi16(4096);
+    const __m256i ce = _mm256_set1_epi16(135), lo = _mm256_set1_epi16(-16);
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
+        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
+        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
+        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
+        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup), f = _mm256_mullo_epi16(u, c16);
+        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
+        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
+        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
+        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
+        __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
+        _mm256_storeu_si256((__m256i *)(y + i), r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_log2_uq8_q11_fast(x[i]);
+}
+#endif
+
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_log2_uq8_q11_fast_k[7] = {
-    32767,  /* k[0]: 0x7fff: t's mask (from k[]: hides t's range from GCC) */
-    16384,  /* k[1]: 2^14: tq rounded to 14 fraction bits */
-    5428,   /* k[2]: c3 = 0.165649414062 */
-    -19263, /* k[3]: c2 = -0.587860107422 */
-    23323,  /* k[4]: c1 = 1.42352294922 */
-    4096,   /* k[5]: 2^12: round(z / 2^3), a rounding multiply-high */
-    2048,   /* k[6]: 2^11: e at 2^-11 */
+static const int16_t pf_log2_uq8_q11_fast_k[1] = {
+    4096,   /* k[0]: 2^12: round(w / 2^3), a rounding multiply-high */
 };
 
 int16_t pf_log2_uq8_q11_fast(uint16_t x)
 {
     return pf_log2_uq8_q11_fast_inline(x, pf_log2_uq8_q11_fast_k, 0);
 }
-
-/* AVX-512 has a 16-bit per-element shift (vpsrlvw) and a leading-zero count
-   (vplzcntd), AVX2 neither: on a CPU with x86-64-v4 the array form runs this
-   loop, whose kernel (bw = 1) uses them; the clones below keep the forms every
-   level vectorizes (bw = 0), as the scalar form does.  The same values
-   (pfmathgen sweeps the array form on its machine against the scalar one). */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
-__attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
-{
-    const int16_t *k = pf_log2_uq8_q11_fast_k;
-    __asm__("" : "+r"(k));
-#pragma GCC ivdep
-    for (size_t i = 0; i < n; i++)
-        y[i] = pf_log2_uq8_q11_fast_inline(x[i], k, 1);
-}
-#endif
 
 /* Array form in 16-bit lanes.  The constants come through a pointer that an
    empty asm hides from GCC: GCC 12 rewrites a product by a known constant
@@ -311,8 +381,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_log2_uq8_q11_fast_array(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_log2_uq8_q11_fast_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_log2_uq8_q11_fast_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_log2_uq8_q11_fast_array_avx2(x, y, n);
         return;
     }
 #endif

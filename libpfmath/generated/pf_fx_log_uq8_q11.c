@@ -4,35 +4,44 @@
  * Regenerate:  pfmathgen --func log --type 'ufixed<16,8>' --out-type 'fixed<15,11>' -o libpfmath/generated/pf_fx_log_uq8_q11.c
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
- * Reduction:   x = 2^e (1 + t), e = n - 8 with n = bitlen(x) - 1 (a staged normalization: 
- *              constant shifts and selects; on AVX-512 CPUs a leading-zero count, the same n), 
- *              t in [0, 1) the 15 bits below the leading one (exact); log(x) = e ln2 + P(t) 
- *              summed in 16-bit words with ln2 in two words: e H at 2^-11 exact (H = round(ln2 
- *              2^11) = 1420) plus e L + P at 2^-15 (L = round(ln2 2^15) - H 2^4 = -7; MPFR) 
- *              rounded to 2^-11, rounded once; x <= 0 -> -32768 (most negative)
- * Domain:      log(1+t) on t in [0, 1]
- * Order:       4 (5 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       every step in 16-bit lanes
- * Method:      minimax absolute error (nlopt SLSQP, epigraph form, from the least-squares fit), 
- *              coefficients rounded to the lsb of their Horner step (bit-width analysis) by 
- *              pin-and-refit
- * Constraints: p(0) = 0 (log(1) = 0 exactly)
- * Formats:     x unsigned fixed<15,15> in int16_t; p4 fixed<15,15>, p3 fixed<15,15>, p2 
- *              fixed<15,15>, p1 fixed<15,15>, p0 fixed<15,15>; steps p = pf_fx_mulhrs(p, x) + 
- *              c, the rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
- *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
- *              Horner rounding error <= 6.104e-05
- * Polynomial:  max absolute error 7.602e-05 (2^-13.68) at t = 0.893884038
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.3041 LSB (polynomial 0.1557, 
- *              arithmetic and reduction 0.1484) = 0.8041 LSB
- * Sweep:       max 0.7196 LSB at x = 62375 (243.652344), mean 0.2615 LSB; exhaustive: all 65536 
+ * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (AVX-512: a 
+ *              leading-zero count of x 2^16 + 2^15, vplzcntd; AVX2: the exponent and the 
+ *              fraction bits of x converted to float, exact; else branch-free stages), u = x << 
+ *              lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment j = 
+ *              t's top 5 bits, f = the other 10 (2^-16); log(x) = e ln2 + F(t), F(t) = log(1 + 
+ *              t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
+ * Domain:      log(1+t) on t in [0, 1]: 32 segments [j/32, (j+1)/32)
+ * Order:       1 per segment (a line: V[j] + S[j] f), 32-entry tables V, S; TH, TL by lz; 
+ *              int16_t words: 16-bit lanes
+ * Lanes:       16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count 
+ *              (vplzcntd on x 2^16 + 2^15, packed to words), per-element shift (vpsllvw) by 
+ *              AVX-512BW/CD intrinsics; x86-64-v3: lookups by vpshufb on byte planes, lz and t 
+ *              from x's float (vcvtdq2ps on even and odd words), TH and TL from its exponent by 
+ *              a vpmullw each (TH 2^td + TL = q e); other clones, scalar form: plain C
+ * Method:      per segment: S[j] the chord's rise at 2^-15 through MPFR's F(j/32), F((j+1)/32) 
+ *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
+ *              floor(S[j] f 2^-16) - F(t) 2^15 over the segment's 1024 inputs (discrete minimax 
+ *              of the integer step, floor included); TH[lz] = round(e ln2 2^11), TL[lz] = 
+ *              round((e ln2 2^Eo - TH[lz]) 2^d) (MPFR, to nearest)
+ * Constraints: none per segment (C0 only up to the tables' rounding); x = 0 gives the most 
+ *              negative output
+ * Formats:     V, S, TH, TL int16_t; w = V[j] + pmulhuw(S[j], f) + TL[lz] at 2^-15 (int16_t); 
+ *              result TH[lz] + round(w 2^-4), the rounding multiply-high by 2^11 (pmulhrsw), 
+ *              ties up
+ * Polynomial:  segment lines within 2.6440 2^-15 (0.1653 LSB) of F(t) at every segment input 
+ *              (floor included)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.1826 LSB (polynomial 0.1653, 
+ *              arithmetic and reduction 0.0173) = 0.6826 LSB; taken over every input from the 
+ *              emitted integer steps (the table kernel) against MPFR
+ * Sweep:       max 0.6374 LSB at x = 8446 (32.9921875), mean 0.2523 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  log(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
  * Target:      exact: below 1 LSB of the output for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
- *              per rounding); bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating-point arithmetic: the AVX2 loop converts x to float, 
+ *              exact, and reads its bits; no <math.h>); the segment product floors (pmulhuw: in 
+ *              the bound), the result is rounded once to nearest, ties up (pmulhrsw); 
+ *              bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -216,87 +225,170 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* log in fixed point, in 16-bit lanes.  x = 2^e (1 + t) with t in
-   [0, 1): e from a staged normalization of the stored integer, t its
-   remaining bits (exact).  log(x) = e ln2 + P(t), P(t) ~ log(1 + t),
-   summed in an int16_t and rounded once.  x <= 0 (log of 0 or of a
-   negative number) gives the most negative output, -32768.  k[] holds
-   the constants; bw = 1 (AVX-512 CPUs, see fx_tail16.c.in) takes the
-   leading-zero count for the normalization, bw = 0 the staged one: the same
-   values. */
+/* log in fixed point, in 16-bit lanes, from tables (gen/fixed/fixed_log.c,
+   the table kernel).  x = 2^(15 - lz) (1 + t): lz = 16 - bitlen(x), t the
+   15 bits below the leading one (exact).  log(x) = e ln2 + F(t),
+   F(t) = log(1 + t), a line on each of 32 segments of t (V[j] + S[j] f, j the
+   segment, f the place in it), e ln2 from TH[lz]; one rounding at the
+   end.  x = 0 gives the most negative output, -32768 (TH[16]).  k[] holds
+   the rounding's multiplier; bw is unused (the AVX-512 and AVX2 loops below
+   have their own intrinsics). */
+/* V[j]: the segment line's value at its start, F = log(1 + t) at 2^-15 */
+static const int32_t pf_log_uq8_q11_tv[32] = {
+    2, 1010, 1989, 2938, 3861, 4759, 5633, 6484,
+    7314, 8123, 8912, 9683, 10436, 11173, 11893, 12598,
+    13288, 13963, 14625, 15274, 15910, 16534, 17147, 17748,
+    18338, 18918, 19488, 20049, 20599, 21141, 21674, 22198,
+};
+/* S[j]: the segment line's rise across the segment, at 2^-15 */
+static const int32_t pf_log_uq8_q11_ts[32] = {
+    1009, 979, 949, 924, 898, 874, 851, 830,
+    809, 789, 772, 754, 737, 720, 705, 690,
+    675, 662, 649, 636, 625, 613, 601, 591,
+    581, 571, 561, 550, 542, 533, 524, 516,
+};
+/* TH[lz] = round(e ln2 2^11), e = 15 - lz - 8 (MPFR); TH[16] (x = 0): the most negative */
+static const int32_t pf_log_uq8_q11_th[32] = {
+    9937, 8517, 7098, 5678, 4259, 2839, 1420, 0,
+    -1420, -2839, -4259, -5678, -7098, -8517, -9937, -11357,
+    -32768, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0,
+};
+/* TL[lz] = round((e ln2 2^11 - TH[lz]) 2^4) (MPFR); TL[16] = -V[0] (x = 0) */
+static const int32_t pf_log_uq8_q11_tl[32] = {
+    -1, 6, -3, 4, -5, 2, -7, 0,
+    7, -2, 5, -4, 3, -6, 1, 8,
+    -2, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0,
+};
 PF_FX_INLINE int16_t pf_log_uq8_q11_inline(uint16_t x, const int16_t *k, int bw)
 {
-    (void)bw; /* unused by compilers without __builtin_clz */
-    uint16_t ux = (uint16_t)(x > 0 ? x : 1); /* x <= 0 is selected at the end */
-    uint16_t u;
-    int16_t n; /* bitlen(ux) - 1 */
-#if defined(__GNUC__)
-    if (bw) {
-        int lz = __builtin_clz((uint32_t)ux) - 16; /* ux >= 1: in [0, 15] */
-        u = (uint16_t)(ux << lz);
-        n = (int16_t)(15 - lz);
-    } else
-#endif
-    {
-        u = (uint16_t)(ux << 0);
-        n = 15;
-        n = (int16_t)(u < 0x100u ? n - 8 : n);
-        u = (uint16_t)(u < 0x100u ? u << 8 : u);
-        n = (int16_t)(u < 0x1000u ? n - 4 : n);
-        u = (uint16_t)(u < 0x1000u ? u << 4 : u);
-        n = (int16_t)(u < 0x4000u ? n - 2 : n);
-        u = (uint16_t)(u < 0x4000u ? u << 2 : u);
-        n = (int16_t)(u < 0x8000u ? n - 1 : n);
-        u = (uint16_t)(u < 0x8000u ? u << 1 : u);
-    }
-    int16_t tq = (int16_t)(u & (uint16_t)k[0]); /* the bits below the leading one: t in [0, 1), 2^-15 units, exact */
-    /* P(t) ~ log(1 + t): Horner in 16-bit words, one rounding per step */
-    int16_t p = k[1]; /* c4 = -0.0586853027344 */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[2]); /* c3 = 0.225555419922, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[3]); /* c2 = -0.471221923828, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, tq) + k[4]); /* c1 = 0.997436523438, 2^-15 units */
-    p = pf_fx_mulhrs(p, tq); /* c0 = 0, 2^-15 units */
-    int16_t eh = (int16_t)((n - 8) * k[5]); /* e H, exact */
-    int16_t el = (int16_t)((n - 8) * k[6]); /* e L, exact */
-    /* e ln2 + P = e H 2^-11 + (e L + P) 2^-15 (but for e's share of round(ln2 2^15)), rounded once */
-    int16_t r = (int16_t)(eh + pf_fx_mulhrs((int16_t)(el + p), k[7]));
-    int16_t rc = (int16_t)r;
-    return (int16_t)(x <= 0 ? -32768 : rc);
+    (void)bw;
+    /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */
+    int lz = 16 - pf_fx_bitlen(x);
+    uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */
+    unsigned j = (u >> 10) & 31u;               /* segment: t's top 5 bits */
+    uint16_t f = (uint16_t)(u << 6);            /* t's other 10 bits: the place in it, 2^-16 */
+    /* F(t) on segment j, at 2^-15: V[j] + floor(S[j] f 2^-16) (pmulhuw), plus e ln2's low part */
+    int16_t w = (int16_t)(pf_log_uq8_q11_tv[j] + (int32_t)(((uint32_t)pf_log_uq8_q11_ts[j] * f) >> 16));
+    w = (int16_t)(w + pf_log_uq8_q11_tl[lz]);
+    /* e ln2 at 2^-11 plus w rounded once to it */
+    return (int16_t)(pf_log_uq8_q11_th[lz] + pf_fx_mulhrs(w, k[0]));
 }
 
+/* AVX-512BW/CD: the same steps on 32 lanes, with intrinsics, as GCC does not
+   turn the table lookups into vpermw nor a 16-bit leading-zero count into
+   vplzcntd: the array form runs this loop on a CPU with x86-64-v4 (see its
+   dispatch), the rest of the array and the other clones use the scalar steps
+   above.  x 2^16 + 2^15 in 32-bit lanes has lz leading zeros (16 for x = 0);
+   unpack and pack keep the lanes' order.  The same values (pfmathgen sweeps
+   the array form on its machine against the scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#include <immintrin.h>
+extern int16_t pf_log_uq8_q11(uint16_t x); /* the scalar form, for the last n % 32 (or 16) */
+/* 32 table entries as 16-bit words, for vpermw */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log_uq8_q11_w16(const int32_t *t)
+{
+    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
+                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
+}
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_log_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    const __m512i tv = pf_log_uq8_q11_w16(pf_log_uq8_q11_tv), ts = pf_log_uq8_q11_w16(pf_log_uq8_q11_ts), th = pf_log_uq8_q11_w16(pf_log_uq8_q11_th);
+    const __m512i tl = pf_log_uq8_q11_w16(pf_log_uq8_q11_tl);
+    const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(2048);
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        __m512i xv = _mm512_loadu_si512(x + i);
+        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
+                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
+        __m512i u = _mm512_sllv_epi16(xv, lz);
+        __m512i j = _mm512_srli_epi16(u, 10), f = _mm512_slli_epi16(u, 6); /* vpermw reads j's low 5 bits */
+        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
+                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));
+        w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));
+        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
+        _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_log_uq8_q11(x[i]);
+}
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  lz and t from x converted
+   to float, exact (even and odd words apart, in 32-bit lanes): its fraction
+   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
+   them back in the words' order.  No vpermw: a table of 16 words is two
+   vpshufb (its low and its high bytes), the index in both bytes of the word,
+   merged by vpblendvb; 32 words are two such tables, the other one's lookup
+   zeroed by bit 7 of its index (j + 0x70, j + 0xf0 per byte).
+   TH 2^4 + TL = 22713 e for every lz < 16, 22713 = 1419 2^4 + 9: the result is
+   1419 e' + round((w - 22713 s + 9 e') 2^-4), e' = e + s = max(ex - 134, -115), s = 1:
+   two vpmullw, no lookup (V - 22713 s is stored).  x = 0: e' = -115, and the
+   saturating add gives -32768 (pfmathgen checked it).  The same values. */
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_log_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    uint8_t b[8][16]; /* byte planes: V - q s low, high (entries 0-15, 16-31); S low, high (0-15, 16-31) */
+    for (int k = 0; k < 16; k++) {
+        b[0][k] = (uint8_t)(uint32_t)(pf_log_uq8_q11_tv[k] - 22713);
+        b[2][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_tv[k] - 22713) >> 8);
+        b[4][k] = (uint8_t)pf_log_uq8_q11_ts[k];
+        b[6][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_ts[k] >> 8);
+        b[1][k] = (uint8_t)(uint32_t)(pf_log_uq8_q11_tv[k + 16] - 22713);
+        b[3][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_tv[k + 16] - 22713) >> 8);
+        b[5][k] = (uint8_t)pf_log_uq8_q11_ts[k + 16];
+        b[7][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_ts[k + 16] >> 8);
+    }
+    const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
+    const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
+    const __m256i q2 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
+    const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
+    const __m256i q4 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[4]));
+    const __m256i q5 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[5]));
+    const __m256i q6 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[6]));
+    const __m256i q7 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[7]));
+    __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
+    __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
+    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
+    const __m256i kr = _mm256_set1_epi16(2048);
+    const __m256i c70 = _mm256_set1_epi8(0x70), c80 = _mm256_set1_epi8(-128);
+    const __m256i ce = _mm256_set1_epi16(134), lo = _mm256_set1_epi16(-115);
+    __m256i ka = _mm256_set1_epi16(1419), kb = _mm256_set1_epi16(9); /* a, b */
+    __asm__("" : "+x"(ka), "+x"(kb));
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
+        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
+        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
+        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
+        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, 11), dup), f = _mm256_slli_epi16(u, 5);
+        __m256i a0 = _mm256_add_epi8(jj, c70), a1 = _mm256_xor_si256(a0, c80); /* bit 7 clear: j < 16, j >= 16 */
+        __m256i v = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q0, a0), _mm256_shuffle_epi8(q1, a1)),
+                                       _mm256_or_si256(_mm256_shuffle_epi8(q2, a0), _mm256_shuffle_epi8(q3, a1)), hib);
+        __m256i s = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q4, a0), _mm256_shuffle_epi8(q5, a1)),
+                                       _mm256_or_si256(_mm256_shuffle_epi8(q6, a0), _mm256_shuffle_epi8(q7, a1)), hib);
+        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
+        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);
+        w = _mm256_add_epi16(w, _mm256_mullo_epi16(e, kb));
+        __m256i r = _mm256_adds_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(w, kr));
+        _mm256_storeu_si256((__m256i *)(y + i), r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_log_uq8_q11(x[i]);
+}
+#endif
+
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_log_uq8_q11_k[8] = {
-    32767,  /* k[0]: 0x7fff: t's mask (from k[]: hides t's range from GCC) */
-    -1923,  /* k[1]: c4 = -0.0586853027344 */
-    7391,   /* k[2]: c3 = 0.225555419922 */
-    -15441, /* k[3]: c2 = -0.471221923828 */
-    32684,  /* k[4]: c1 = 0.997436523438 */
-    1420,   /* k[5]: H = round(ln2 2^11): e ln2 at 2^-11, high word */
-    -7,     /* k[6]: L = round(ln2 2^15) - H 2^4: low word at 2^-15 */
-    2048,   /* k[7]: 2^11: round(z / 2^4), a rounding multiply-high */
+static const int16_t pf_log_uq8_q11_k[1] = {
+    2048,   /* k[0]: 2^11: round(w / 2^4), a rounding multiply-high */
 };
 
 int16_t pf_log_uq8_q11(uint16_t x)
 {
     return pf_log_uq8_q11_inline(x, pf_log_uq8_q11_k, 0);
 }
-
-/* AVX-512 has a 16-bit per-element shift (vpsrlvw) and a leading-zero count
-   (vplzcntd), AVX2 neither: on a CPU with x86-64-v4 the array form runs this
-   loop, whose kernel (bw = 1) uses them; the clones below keep the forms every
-   level vectorizes (bw = 0), as the scalar form does.  The same values
-   (pfmathgen sweeps the array form on its machine against the scalar one). */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
-__attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_log_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
-{
-    const int16_t *k = pf_log_uq8_q11_k;
-    __asm__("" : "+r"(k));
-#pragma GCC ivdep
-    for (size_t i = 0; i < n; i++)
-        y[i] = pf_log_uq8_q11_inline(x[i], k, 1);
-}
-#endif
 
 /* Array form in 16-bit lanes.  The constants come through a pointer that an
    empty asm hides from GCC: GCC 12 rewrites a product by a known constant
@@ -316,8 +408,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_log_uq8_q11_array(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_log_uq8_q11_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_log_uq8_q11_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_log_uq8_q11_array_avx2(x, y, n);
         return;
     }
 #endif
