@@ -16,8 +16,9 @@
  * Order:       2 per segment (P_j(tau) = C0 + tau (C1 + tau C2)), three 32-entry tables of 
  *              int16_t; int16_t words: 16-bit lanes
  * Lanes:       every step in 16-bit lanes; the lookups (vpermw, three registers of 32 entries) 
- *              in the AVX-512BW loop by intrinsics (x86-64-v4); other clones, scalar form: the 
- *              same steps in plain C (32-bit table loads)
+ *              in the AVX-512BW loop by intrinsics (x86-64-v4); AVX2 intrinsics (x86-64-v3): 
+ *              each lookup four vpshufb on byte planes merged by vpor; the default clone, 
+ *              scalar form: the same steps in plain C (32-bit table loads)
  * Method:      per segment: the quadratic through the three Chebyshev nodes of [0, 1] (long 
  *              double), rounded to 2^-16, then the integers within (+-4, +-4, +-3) of it with 
  *              the smallest largest error of the emitted steps over the segment's inputs (every 
@@ -315,6 +316,62 @@ static void pf_cos_q12_q14_array_bw(const int16_t *restrict x, int16_t *restrict
 }
 #endif
 
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: each table is
+   four registers, its low and its high bytes for j < 16 and j >= 16 (byte
+   planes); a lookup is four vpshufb whose indices have bit 7 set (the
+   byte zeroed) where the plane or the half is not theirs, merged by vpor.
+   The sign by vpsignw.  The same values. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+__attribute__((target("arch=x86-64-v3"))) static inline __m256i pf_cos_q12_q14_lk(const __m256i *p, __m256i ia,
+                                                                    __m256i ib, __m256i ja, __m256i jb)
+{
+    return _mm256_or_si256(_mm256_or_si256(_mm256_shuffle_epi8(p[0], ia), _mm256_shuffle_epi8(p[1], ib)),
+                           _mm256_or_si256(_mm256_shuffle_epi8(p[2], ja), _mm256_shuffle_epi8(p[3], jb)));
+}
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_cos_q12_q14_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    const int32_t *tab[3] = {pf_cos_q12_q14_c0, pf_cos_q12_q14_c1, pf_cos_q12_q14_c2};
+    uint8_t b[3][4][16]; /* per table: low bytes of 0..15, 16..31, high bytes of 0..15, 16..31 */
+    for (int a = 0; a < 3; a++)
+        for (int k = 0; k < 32; k++) {
+            b[a][k >> 4][k & 15] = (uint8_t)(uint32_t)tab[a][k];
+            b[a][2 + (k >> 4)][k & 15] = (uint8_t)((uint32_t)tab[a][k] >> 8);
+        }
+    __m256i c[3][4];
+    for (int a = 0; a < 3; a++)
+        for (int p = 0; p < 4; p++)
+            c[a][p] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[a][p]));
+    const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2), kr = _mm256_set1_epi16(8192);
+    const __m256i ho = _mm256_set1_epi16(16384), m15 = _mm256_set1_epi16(0x7fff), m31 = _mm256_set1_epi16(31);
+    const __m256i half = _mm256_set1_epi16(8192), one = _mm256_set1_epi16(1);
+    const __m256i ka = _mm256_set1_epi16((short)0x8070), kb = _mm256_set1_epi16(0x0080);
+    const __m256i kc = _mm256_set1_epi16(0x7080), kd = _mm256_set1_epi16((short)0x8000);
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i ax = _mm256_abs_epi16(xv);
+        __m256i lo = _mm256_mullo_epi16(ax, kl);
+        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_mullo_epi16(ax, kh));
+        hi = _mm256_add_epi16(hi, ho);
+        /* j in the low byte: + 0x70 keeps bit 7 clear for j < 16 (0x8070: the high
+           byte's bit 7 set), xor 0x80 flips that for j >= 16; the same in the
+           high byte for the high bytes' planes */
+        __m256i jl = _mm256_and_si256(_mm256_srli_epi16(hi, 10), m31);
+        __m256i ia = _mm256_add_epi16(jl, ka), ib = _mm256_xor_si256(ia, kb);
+        __m256i ja = _mm256_add_epi16(_mm256_slli_epi16(jl, 8), kc), jb = _mm256_xor_si256(ja, kd);
+        __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, 5), _mm256_srli_epi16(lo, 11)), m15);
+        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, pf_cos_q12_q14_lk(c[2], ia, ib, ja, jb)), pf_cos_q12_q14_lk(c[1], ia, ib, ja, jb));
+        __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_cos_q12_q14_lk(c[0], ia, ib, ja, jb));
+        __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(p, kr), half);
+        r = _mm256_sign_epi16(r, _mm256_or_si256(hi, one)); /* negated when h */
+        _mm256_storeu_si256((__m256i *)(y + i), r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_cos_q12_q14(x[i]);
+}
+#endif
+
 /* The constants the body reads (Horner coefficients and multipliers) */
 static const int16_t pf_cos_q12_q14_k[3] = {
     -29722, /* k[0]: KL (as uint16_t): K = KH 2^16 + KL */
@@ -345,8 +402,18 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_cos_q12_q14_array(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_cos_q12_q14_array_avx2(x, y, n);
+        return;
+    }
+#endif
     if (__builtin_cpu_supports("x86-64-v4")) {
         pf_cos_q12_q14_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_cos_q12_q14_array_avx2(x, y, n);
         return;
     }
 #endif
