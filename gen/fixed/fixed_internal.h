@@ -57,9 +57,9 @@ typedef struct {               /* sin, cos */
     int64_t kl, kh, hoff;      /* U = |x| (KH 2^16 + KL) + HOFF 2^16 mod 2^32 */
     int16_t tc0[32], tc1[32], tc2[32]; /* per-segment quadratic, 2^-16 units */
     double terr, tred;         /* pre-rounding error (output lsb), phase error (quarter turns) */
-    /* kind 5 (fast): piecewise linear on 2^fnb segments, at the output's lsb */
-    int fnb;
-    int16_t fc0[64], fc1[64];
+    /* kind 5 (fast): piecewise polynomial of degree ford on 2^fnb segments, at the output's lsb */
+    int fnb, ford;
+    int16_t fc0[64], fc1[64], fc2[64];
     double fR, fA, fworst;     /* the bound R |f| + A (+ 1/2 lsb); largest error / allowed */
 } fx_trig_red;
 
