@@ -379,8 +379,11 @@ static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
  * As kind 4 but only hi = U >> 16 (u to 2^-14 quarter turns, floored: the
  * low word and its three instructions dropped): hi's top bit is the half
  * turn, its next nb bits (4: 16 segments of [0, 2)) the segment j, the
- * rest tau = t 2^-15 in [0, 1).  Per segment a quadratic at the output's
- * lsb, r = C0 + pmulhrsw(tau, C1 + pmulhrsw(tau, C2)): two multiply-highs,
+ * rest tau in [0, 1).  t = hi << nb as an int16_t is one shift: its sign
+ * is j's last bit, so the local variable s = t 2^-15 is tau on an even
+ * segment and tau - 1 on an odd one (each segment's polynomial is fitted
+ * in its own s).  Per segment a quadratic at the output's lsb,
+ * r = C0 + pmulhrsw(s, C1 + pmulhrsw(s, C2)): two multiply-highs,
  * three lookups of 16 entries, the result directly (sin in [0, 1] fits an
  * int16_t at 2^-Eo, Eo <= 14).  16 entries are what one vpshufb reaches:
  * on AVX2 each lookup is two vpshufb (the table's low and high bytes) and
@@ -401,7 +404,7 @@ static void tr5_phase(const fx_gen *G, int nb, int64_t x, int is_cos, tr4_ph *p)
     uint32_t ax = (uint32_t)(x < 0 ? -x : x);
     uint32_t hi = (((ax * (uint32_t)T->kl) >> 16) + ax * (uint32_t)T->kh + (uint32_t)T->hoff) & 0xffffu;
     p->j = (int)((hi >> (15 - nb)) & ((1u << nb) - 1));
-    p->t = (int32_t)(((hi << (nb + 1)) & 0xffffu) >> 1);
+    p->t = (int32_t)(int16_t)(uint16_t)(hi << nb); /* s 2^15: tau, or tau - 1 for odd j */
     p->s = (int)(hi >> 15) ^ (!is_cos && x < 0);
 }
 
@@ -410,8 +413,10 @@ static void tr5_phase(const fx_gen *G, int nb, int64_t x, int is_cos, tr4_ph *p)
    leaves int16_t */
 static int tr5_pre(int ord, const int32_t *c, int32_t t, long double *pre)
 {
+    if (t == -32768 && (c[2] == -32768 || c[1] == -32768)) /* pmulhrsw's one overflow */
+        return 0;
     int32_t q = ord == 2 ? tr4_mulhrs(t, c[2]) + c[1] : c[1];
-    if (q < -32768 || q > 32767)
+    if (q < -32768 || q > 32767 || (t == -32768 && q == -32768))
         return 0;
     int32_t r = tr4_mulhrs(t, q) + c[0];
     if (r < -32768 || r > 32767)
@@ -455,6 +460,10 @@ static int prepare5_nb(fx_gen *G, int is_cos, int nb, int ord)
             a[2] = (d12 - d01) / (tn[2] - tn[0]);
             a[1] = d01 - a[2] * (tn[0] + tn[1]);
             a[0] = yn[0] - tn[0] * (a[1] + a[2] * tn[0]);
+        }
+        if (j & 1) { /* in s = tau - 1: P(s + 1) */
+            a[0] += a[1] + a[2];
+            a[1] += 2 * a[2];
         }
         int32_t b[3] = {(int32_t)llroundl(a[0]), (int32_t)llroundl(a[1]), (int32_t)llroundl(a[2])};
         double best = INFINITY;
@@ -546,23 +555,24 @@ static int prepare5(fx_gen *G, int is_cos)
              "on |x| (sin(-x) = -sin(x), cos(-x) = cos(x), exactly); u = |x| 2/pi in quarter turns, hi = "
              "floor(u 2^14) mod 2^16 = floor(|x| %lld 2^-16) + |x| %lld%s (pmulhuw, pmullw; K = round(2/pi 2^%d) "
              "= %lld 2^16 + %lld, MPFR); |error of u| <= %.3e (K's rounding and the floor); half turn h = bit 15 "
-             "of hi, segment j = bits 14..%d (u mod 2 in [j, j + 1) 2^-%d), tau = the rest, 2^-15, in [0, 1)",
+             "of hi, segment j = bits 14..%d (u mod 2 in [j, j + 1) 2^-%d), tau = the rest, in [0, 1); t = hi << %d "
+             "as int16_t: s = t 2^-15 = tau for even j, tau - 1 for odd j (t's sign is j's last bit)",
              (long long)T->kl, (long long)T->kh, is_cos ? " + 2^14 (cos(x) = sin(pi/2 (u + 1)))" : "", 30 - Ei,
-             (long long)T->kh, (long long)T->kl, T->tred, 15 - nb, nb - 1);
+             (long long)T->kh, (long long)T->kl, T->tred, 15 - nb, nb - 1, nb);
     snprintf(G->alt_domain, sizeof G->alt_domain,
              "sin(pi/2 (j + tau) 2^-%d) on tau in [0, 1) for each of %d segments j of the half turn [0, 2) "
-             "quarter turns (the other half by the sign)",
+             "quarter turns (the other half by the sign), in s = tau (even j) or tau - 1 (odd j)",
              nb - 1, ns);
     if (ord == 2)
         snprintf(G->alt_order, sizeof G->alt_order,
-                 "2 per segment (r = C0 + tau (C1 + tau C2)), three %d-entry tables of int16_t; int16_t words: "
+                 "2 per segment (r = C0 + s (C1 + s C2)), three %d-entry tables of int16_t; int16_t words: "
                  "16-bit lanes",
                  ns);
     else
         snprintf(G->alt_order, sizeof G->alt_order,
-                 "1 per segment (r = C0 + tau C1), two %d-entry tables of int16_t; int16_t words: 16-bit lanes", ns);
+                 "1 per segment (r = C0 + s C1), two %d-entry tables of int16_t; int16_t words: 16-bit lanes", ns);
     snprintf(G->alt_method, sizeof G->alt_method,
-             "per segment: the %s through the %s Chebyshev nodes of [0, 1] (long double), rounded to the "
+             "per segment: the %s through the %s Chebyshev nodes of tau in [0, 1] (long double), in s, rounded to the "
              "output's lsb, then the integers within %s of it with the smallest largest (pre-rounding error + 1/2 "
              "lsb) / max(2^-10 |f|, 4 lsb) over the segment's inputs (every 16-bit input, against sinl/cosl): "
              "%.4f of the bound at most",
@@ -574,14 +584,14 @@ static int prepare5(fx_gen *G, int is_cos)
              ns / 2, Eo);
     if (ord == 2)
         snprintf(G->alt_formats, sizeof G->alt_formats,
-                 "tau int16_t at 2^-15 in [0, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(tau, C2) int16_t at the "
-                 "output's lsb 2^-%d; r = C0 + pmulhrsw(tau, q) (the result's rounding), then negated when h (xor "
+                 "t = s 2^15 int16_t in [-2^15, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(t, C2) int16_t at the "
+                 "output's lsb 2^-%d; r = C0 + pmulhrsw(t, q) (the result's rounding), then negated when h (xor "
                  "x < 0, for sin)",
                  Eo);
     else
         snprintf(G->alt_formats, sizeof G->alt_formats,
-                 "tau int16_t at 2^-15 in [0, 2^15); C0, C1 int16_t at the output's lsb 2^-%d; r = C0 + "
-                 "pmulhrsw(tau, C1) (the one rounding), then negated when h (xor x < 0, for sin)",
+                 "t = s 2^15 int16_t in [-2^15, 2^15); C0, C1 int16_t at the output's lsb 2^-%d; r = C0 + "
+                 "pmulhrsw(t, C1) (the one rounding), then negated when h (xor x < 0, for sin)",
                  Eo);
     snprintf(G->alt_poly, sizeof G->alt_poly,
              "pre-rounding error of the emitted steps <= %.3e |f| + %.4f lsb for every input (all 2^16, against "
@@ -1155,16 +1165,17 @@ static void emit16_5(fx_gen *G, pf_buf *out, int is_cos)
                      "    uint16_t ax = pf_fx_abs16(x); /* |x| */\n"
                      "    uint16_t hi = (uint16_t)(((uint32_t)ax * (uint16_t)%s >> 16) + (uint32_t)ax * (uint16_t)%s%s);\n",
               kl, kh, is_cos ? " + 0x4000u" : "");
-    pf_printf(&body, "    /* segment j = bits 14..%d, tau = the rest (2^-15) */\n"
+    pf_printf(&body, "    /* segment j = bits 14..%d; t = s 2^15, s = tau (the rest) for even j, tau - 1\n"
+                     "       for odd j (t's sign is j's last bit) */\n"
                      "    unsigned j = (unsigned)(hi >> %d) & %du;\n"
-                     "    int16_t t = (int16_t)((uint16_t)((uint32_t)hi << %d) >> 1);\n",
-              15 - nb, 15 - nb, ns - 1, nb + 1);
+                     "    int16_t t = (int16_t)(uint16_t)((uint32_t)hi << %d);\n",
+              15 - nb, 15 - nb, ns - 1, nb);
     if (ord == 2)
-        pf_printf(&body, "    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)%s_c2[j]) + %s_c1[j]); /* C1 + tau C2 */\n"
-                         "    int16_t r = (int16_t)(pf_fx_mulhrs(t, q) + %s_c0[j]); /* C0 + tau q */\n",
+        pf_printf(&body, "    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)%s_c2[j]) + %s_c1[j]); /* C1 + s C2 */\n"
+                         "    int16_t r = (int16_t)(pf_fx_mulhrs(t, q) + %s_c0[j]); /* C0 + s q */\n",
                   N, N, N);
     else
-        pf_printf(&body, "    int16_t r = (int16_t)(pf_fx_mulhrs(t, (int16_t)%s_c1[j]) + %s_c0[j]); /* C0 + tau C1 */\n", N, N);
+        pf_printf(&body, "    int16_t r = (int16_t)(pf_fx_mulhrs(t, (int16_t)%s_c1[j]) + %s_c0[j]); /* C0 + s C1 */\n", N, N);
     if (is_cos)
         pf_put(&body, "    int16_t sg = pf_fx_sgn16((int16_t)hi); /* the half turn */\n");
     else
@@ -1212,8 +1223,8 @@ static void emit16_5(fx_gen *G, pf_buf *out, int is_cos)
                   "        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));\n");
     pf_put(&kern, is_cos ? "        hi = _mm512_add_epi16(hi, ho);\n" : "        (void)ho;\n");
     pf_printf(&kern, "        __m512i j = _mm512_srli_epi16(hi, %d); /* the lookup reads the low %d bits */\n"
-                     "        __m512i t = _mm512_srli_epi16(_mm512_slli_epi16(hi, %d), 1);\n",
-              15 - nb, nb <= 5 ? 5 : 6, nb + 1);
+                     "        __m512i t = _mm512_slli_epi16(hi, %d);\n",
+              15 - nb, nb <= 5 ? 5 : 6, nb);
     if (ord == 2)
         pf_put(&kern, "        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),\n"
                       "                                     _mm512_permutexvar_epi16(j, c1));\n"
@@ -1256,7 +1267,7 @@ static void emit16_5(fx_gen *G, pf_buf *out, int is_cos)
                   cond, N, G->it, G->ot, ord + 1, N, N, ord == 2 ? ", " : "", ord == 2 ? N : "", ord == 2 ? "_c2" : "",
                   ord + 1, ord + 1, ord + 1, ord + 1);
         pf_printf(&kern, "    const __m256i kl = _mm256_set1_epi16(%d), kh = _mm256_set1_epi16(%d), ho = _mm256_set1_epi16(%d);\n"
-                         "    const __m256i ka = _mm256_set1_epi16((short)0x8000), kb = _mm256_set1_epi16(0x0080), m = _mm256_set1_epi16(0x7ff0);\n",
+                         "    const __m256i ka = _mm256_set1_epi16((short)0x8000), kb = _mm256_set1_epi16(0x0080);\n",
                   (int)(int16_t)(uint16_t)T->kl, (int)T->kh, is_cos ? 0x4000 : 0);
         pf_put(&kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
                       "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
@@ -1268,7 +1279,7 @@ static void emit16_5(fx_gen *G, pf_buf *out, int is_cos)
                       "           low one */\n"
                       "        __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);\n"
                       "        __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);\n"
-                      "        __m256i t = _mm256_and_si256(_mm256_slli_epi16(hi, 4), m); /* (hi << 5 mod 2^16) >> 1 */\n");
+                      "        __m256i t = _mm256_slli_epi16(hi, 4);\n");
         const char *lk = "_mm256_or_si256(_mm256_shuffle_epi8(c[%d][0], ia), _mm256_shuffle_epi8(c[%d][1], ib))";
         char l0[160], l1[160], l2[160];
         snprintf(l0, sizeof l0, lk, 0, 0);

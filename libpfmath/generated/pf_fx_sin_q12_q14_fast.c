@@ -8,34 +8,37 @@
  *              turns, hi = floor(u 2^14) mod 2^16 = floor(|x| 35814 2^-16) + |x| 2 (pmulhuw, 
  *              pmullw; K = round(2/pi 2^18) = 2 2^16 + 35814, MPFR); |error of u| <= 6.267e-05 
  *              (K's rounding and the floor); half turn h = bit 15 of hi, segment j = bits 
- *              14..11 (u mod 2 in [j, j + 1) 2^-3), tau = the rest, 2^-15, in [0, 1)
+ *              14..11 (u mod 2 in [j, j + 1) 2^-3), tau = the rest, in [0, 1); t = hi << 4 as 
+ *              int16_t: s = t 2^-15 = tau for even j, tau - 1 for odd j (t's sign is j's last 
+ *              bit)
  * Domain:      sin(pi/2 (j + tau) 2^-3) on tau in [0, 1) for each of 16 segments j of the half 
- *              turn [0, 2) quarter turns (the other half by the sign)
- * Order:       2 per segment (r = C0 + tau (C1 + tau C2)), three 16-entry tables of int16_t; 
+ *              turn [0, 2) quarter turns (the other half by the sign), in s = tau (even j) or 
+ *              tau - 1 (odd j)
+ * Order:       2 per segment (r = C0 + s (C1 + s C2)), three 16-entry tables of int16_t; 
  *              int16_t words: 16-bit lanes
  * Lanes:       every step in 16-bit lanes; the lookups (vpermw, three registers of 16 entries 
  *              twice) in the AVX-512BW loop by intrinsics (x86-64-v4); AVX2 intrinsics 
  *              (x86-64-v3): each lookup two vpshufb (the low and the high bytes) and a vpor; 
  *              the default clone, scalar form: the same steps in plain C (32-bit table loads)
- * Method:      per segment: the quadratic through the three Chebyshev nodes of [0, 1] (long 
- *              double), rounded to the output's lsb, then the integers within (+-4, +-4, +-3) 
- *              of it with the smallest largest (pre-rounding error + 1/2 lsb) / max(2^-10 |f|, 
- *              4 lsb) over the segment's inputs (every 16-bit input, against sinl/cosl): 0.6040 
- *              of the bound at most
+ * Method:      per segment: the quadratic through the three Chebyshev nodes of tau in [0, 1] 
+ *              (long double), in s, rounded to the output's lsb, then the integers within (+-4, 
+ *              +-4, +-3) of it with the smallest largest (pre-rounding error + 1/2 lsb) / 
+ *              max(2^-10 |f|, 4 lsb) over the segment's inputs (every 16-bit input, against 
+ *              sinl/cosl): 0.5763 of the bound at most
  * Constraints: C0[0] = 0 and C0[8] = 2^14: exact at u = 0 and 1 (sin(0) = 0, sin(pi/2) = cos(0) 
  *              = 1); the sign fold makes sin exactly odd and cos exactly even
- * Formats:     tau int16_t at 2^-15 in [0, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(tau, C2) 
- *              int16_t at the output's lsb 2^-14; r = C0 + pmulhrsw(tau, q) (the result's 
+ * Formats:     t = s 2^15 int16_t in [-2^15, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(t, C2) 
+ *              int16_t at the output's lsb 2^-14; r = C0 + pmulhrsw(t, q) (the result's 
  *              rounding), then negated when h (xor x < 0, for sin)
- * Polynomial:  pre-rounding error of the emitted steps <= 1.526e-05 |f| + 1.8936 lsb for every 
+ * Polynomial:  pre-rounding error of the emitted steps <= 3.052e-05 |f| + 1.8254 lsb for every 
  *              input (all 2^16, against sinl/cosl: segment fit, coefficient and inner 
  *              multiply-high roundings, phase)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 1.526e-05 |f(x)| (polynomial 
- *              0.000e+00, arithmetic and reduction 1.526e-05, relative) + 1.8936 LSB 
- *              (arithmetic and reduction, absolute) = 2.6436 LSB at most (|f| <= 1); R and A 
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 3.052e-05 |f(x)| (polynomial 
+ *              0.000e+00, arithmetic and reduction 3.052e-05, relative) + 1.8254 LSB 
+ *              (arithmetic and reduction, absolute) = 2.8254 LSB at most (|f| <= 1); R and A 
  *              taken over every input from the emitted integer steps (the register-table 
  *              kernel)
- * Sweep:       max 2.3497 LSB at x = -25141 (-6.13793945), mean 0.4907 LSB; exhaustive: all 
+ * Sweep:       max 2.2829 LSB at x = -27066 (-6.60791016), mean 0.4858 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
@@ -226,27 +229,28 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* sin in fixed point, in 16-bit lanes, piecewise linear from tables
-   that fit registers.  u = |x| 2/pi counts quarter turns (for cos, u + 1:
-   cos(x) = sin(pi/2 (u + 1))); hi = floor(u 2^14) mod 2^16.  The half turn
-   h = bit 15 (sin(pi/2 (u + 2)) = -sin(pi/2 u)), the segment j = the next
-   bits and tau (2^-15, the position in the segment) the rest give
-   sin(pi/2 u) = +-(C0[j] + tau C1[j]), at the output's lsb.  k[] holds the
-   multipliers; bw changes nothing here. */
+/* sin in fixed point, in 16-bit lanes, piecewise polynomial from
+   tables that fit registers.  u = |x| 2/pi counts quarter turns (for cos,
+   u + 1: cos(x) = sin(pi/2 (u + 1))); hi = floor(u 2^14) mod 2^16.  The
+   half turn h = bit 15 (sin(pi/2 (u + 2)) = -sin(pi/2 u)), the segment j =
+   the next bits and the rest, the position in the segment, give
+   sin(pi/2 u) = +-P_j(s), at the output's lsb (s = t 2^-15, t = hi shifted
+   to the top of an int16_t: tau in [0, 1) on an even segment, tau - 1 on
+   an odd one).  k[] holds the multipliers; bw changes nothing here. */
 /* C0[j], the output's lsb (fitted, see the provenance) */
 static const int32_t pf_sin_q12_q14_fast_c0[16] = {
-    0, 3197, 6270, 9103, 11586, 13623, 15137, 16069,
-    16384, 16069, 15137, 13623, 11586, 9103, 6270, 3196,
+    0, 6271, 6270, 11587, 11586, 15138, 15137, 16384,
+    16384, 15136, 15137, 11584, 11586, 6269, 6270, -1,
 };
 /* C1[j], the output's lsb */
 static const int32_t pf_sin_q12_q14_fast_c1[16] = {
-    3229, 3164, 2983, 2683, 2279, 1794, 1236, 630,
-    -1, -628, -1237, -1797, -2285, -2688, -2986, -3168,
+    3229, 2985, 2983, 2287, 2279, 1239, 1236, -1,
+    -1, -1237, -1237, -2284, -2285, -2980, -2986, -3228,
 };
 /* C2[j], the output's lsb */
 static const int32_t pf_sin_q12_q14_fast_c2[16] = {
-    -31, -90, -150, -200, -241, -280, -304, -315,
-    -314, -305, -278, -241, -200, -146, -89, -29,
+    -31, -89, -150, -197, -241, -276, -304, -316,
+    -314, -304, -278, -245, -200, -146, -89, -31,
 };
 PF_FX_INLINE int16_t pf_sin_q12_q14_fast_inline(int16_t x, const int16_t *k, int bw)
 {
@@ -254,11 +258,12 @@ PF_FX_INLINE int16_t pf_sin_q12_q14_fast_inline(int16_t x, const int16_t *k, int
     /* hi = floor(u 2^14) mod 2^16, u = |x| 2/pi in quarter turns */
     uint16_t ax = pf_fx_abs16(x); /* |x| */
     uint16_t hi = (uint16_t)(((uint32_t)ax * (uint16_t)k[0] >> 16) + (uint32_t)ax * (uint16_t)k[1]);
-    /* segment j = bits 14..11, tau = the rest (2^-15) */
+    /* segment j = bits 14..11; t = s 2^15, s = tau (the rest) for even j, tau - 1
+       for odd j (t's sign is j's last bit) */
     unsigned j = (unsigned)(hi >> 11) & 15u;
-    int16_t t = (int16_t)((uint16_t)((uint32_t)hi << 5) >> 1);
-    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)pf_sin_q12_q14_fast_c2[j]) + pf_sin_q12_q14_fast_c1[j]); /* C1 + tau C2 */
-    int16_t r = (int16_t)(pf_fx_mulhrs(t, q) + pf_sin_q12_q14_fast_c0[j]); /* C0 + tau q */
+    int16_t t = (int16_t)(uint16_t)((uint32_t)hi << 4);
+    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)pf_sin_q12_q14_fast_c2[j]) + pf_sin_q12_q14_fast_c1[j]); /* C1 + s C2 */
+    int16_t r = (int16_t)(pf_fx_mulhrs(t, q) + pf_sin_q12_q14_fast_c0[j]); /* C0 + s q */
     int16_t sg = pf_fx_sgn16((int16_t)(hi ^ (uint16_t)x)); /* the half turn, and x < 0 */
     return (int16_t)((r ^ sg) - sg);
 }
@@ -290,7 +295,7 @@ static void pf_sin_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *res
         __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
         (void)ho;
         __m512i j = _mm512_srli_epi16(hi, 11); /* the lookup reads the low 5 bits */
-        __m512i t = _mm512_srli_epi16(_mm512_slli_epi16(hi, 5), 1);
+        __m512i t = _mm512_slli_epi16(hi, 4);
         __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),
                                      _mm512_permutexvar_epi16(j, c1));
         __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
@@ -323,7 +328,7 @@ static void pf_sin_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *r
         for (int p = 0; p < 2; p++)
             c[a][p] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[a][p]));
     const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2), ho = _mm256_set1_epi16(0);
-    const __m256i ka = _mm256_set1_epi16((short)0x8000), kb = _mm256_set1_epi16(0x0080), m = _mm256_set1_epi16(0x7ff0);
+    const __m256i ka = _mm256_set1_epi16((short)0x8000), kb = _mm256_set1_epi16(0x0080);
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
         __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
@@ -335,7 +340,7 @@ static void pf_sin_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *r
            low one */
         __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);
         __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);
-        __m256i t = _mm256_and_si256(_mm256_slli_epi16(hi, 4), m); /* (hi << 5 mod 2^16) >> 1 */
+        __m256i t = _mm256_slli_epi16(hi, 4);
         __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, _mm256_or_si256(_mm256_shuffle_epi8(c[2][0], ia), _mm256_shuffle_epi8(c[2][1], ib))),
                                      _mm256_or_si256(_mm256_shuffle_epi8(c[1][0], ia), _mm256_shuffle_epi8(c[1][1], ib)));
         __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q),
