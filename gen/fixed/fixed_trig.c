@@ -641,8 +641,8 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
     /* fast sin: the 16-entry quadratic tables (kind 5), else the Horner
        kernel (kind 4's 32-entry tables take 0.32 ns/elem on AVX2, Horner
        0.16).  Fast cos keeps the Horner kernel: cos is even, so its Horner
-       loop has no sign step, and on AVX2 it measured 0.14 ns/elem against
-       0.15 for kind 5 (24 vector instructions per 16 lanes, 9 of them the
+       loop has no sign step, and on AVX2 it measured 0.132 ns/elem against
+       0.137 for kind 5 (23 vector instructions per 16 lanes, 9 of them the
        three lookups); with AVX-512 kind 5 would be 0.09 against 0.12 */
     if (G->W == 16 && kind4_ok(G) && !G->exact && !is_cos && prepare5(G, is_cos) == 0)
         return 0;
