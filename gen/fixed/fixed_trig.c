@@ -190,9 +190,10 @@ static int prepare3(fx_gen *G, double Xmax, int is_cos, double L)
 
 /* ---- 16-bit lanes, the register-table kernel (kind 4) ----
  *
- * For int16_t inputs and int16_t outputs with 1..14 fraction bits, fast and
- * exact alike.  u = |x| 2/pi in quarter turns is U = |x| K mod 2^32 at
- * 2^-30, K = round(2/pi 2^(30-Ei)) = KH 2^16 + KL: lo = |x| KL mod 2^16
+ * For int16_t inputs and int16_t outputs with 1..14 fraction bits, the
+ * exact variant (the fast one: kind 5, or Horner).  u = |x| 2/pi in
+ * quarter turns is U = |x| K mod 2^32 at 2^-30, K = round(2/pi 2^(30-Ei))
+ * = KH 2^16 + KL: lo = |x| KL mod 2^16
  * (pmullw) and hi = floor(|x| KL 2^-16) + |x| KH + HOFF (pmulhuw, pmullw),
  * both exact, the only error |x| |K - 2/pi 2^(30-Ei)| 2^-30.  hi's top bit
  * is the half turn (sin(pi/2 (u + 2)) = -sin(pi/2 u)), its next five the
@@ -201,7 +202,9 @@ static int prepare3(fx_gen *G, double Xmax, int is_cos, double L)
  * segment a quadratic P_j(tau) = C0 + tau (C1 + tau C2) in 2^-16 units,
  * offset by 1/2 (P + 2^15 = sin 2^16, so [0, 1) fits an int16_t): two
  * rounding multiply-highs (pmulhrsw), the three coefficients from 32-entry
- * tables, one zmm register each (vpermw).  Result round((P + 2^15)
+ * tables, one zmm register each (vpermw); on AVX2 four registers each,
+ * the low and high bytes of entries 0..15 and 16..31, a lookup four
+ * vpshufb merged by vpor (see emit16_4).  Result round((P + 2^15)
  * 2^(Eo-16)) = pmulhrsw(P, 2^(Eo-1)) + 2^(Eo-1), then the sign: the half
  * turn's, and for sin x's.
  * Coefficients: Chebyshev interpolation of sin(pi/2 (j + tau)/16) at three
