@@ -63,8 +63,9 @@ static void test_sin_example(void **st)
     snprintf(cmdline, sizeof cmdline, " * Regenerate:  pfmathgen %s -o %s\n", args, out);
     assert_non_null(strstr(src, cmdline));
     assert_non_null(strstr(src, "sin for fixed<15,12> -> fixed<15,14> (int16_t -> int16_t), exact variant"));
-    /* the register-table kernel (fixed_trig.c, kind 4): 32 segments */
-    assert_non_null(strstr(src, " * Domain:      sin(pi/2 (j + tau)/16) on tau in [0, 1)"));
+    /* the register-table kernel (fixed_trig.c, kind 4): 16 or 32 segments */
+    assert_non_null(strstr(src, " * Domain:      sin(pi/2 (j + tau) 2^-"));
+    assert_non_null(strstr(src, "on tau in [0, 1)"));
     assert_non_null(strstr(src, " * Method:      per segment"));
     assert_non_null(strstr(src, " * Constraints: "));
     assert_non_null(strstr(src, " * Formats:     "));
@@ -219,13 +220,14 @@ static void test_fast_variant(void **st)
         k = strstr(R.out, "\"kernel\": \"");
         if (k)
             snprintf(ke, sizeof ke, "%.*s", (int)strcspn(k + 11, "\""), k + 11);
-        if (oe < 0 && ke[0]) { /* exact: sin's register tables, quadratics per segment */
+        if (oe < 0 && ke[0]) { /* exact: sin's register tables, a polynomial per segment */
             print_message("  exact kernel: %s\n", ke);
-            assert_non_null(strstr(ke, "2 per segment"));
-            if (of < 0 && kf[0]) { /* fast: tables too, fewer entries */
+            assert_non_null(strstr(ke, " per segment"));
+            if (of < 0 && kf[0]) { /* fast: tables too, fewer entries or a lower degree */
                 print_message("  fast kernel: %s\n", kf);
-                assert_non_null(strstr(kf, "per segment"));
-                assert_true(entries(kf) > 0 && entries(kf) < entries(ke));
+                assert_non_null(strstr(kf, " per segment"));
+                assert_true(entries(kf) > 0 && entries(kf) <= entries(ke));
+                assert_true(entries(kf) < entries(ke) || atoi(kf) < atoi(ke));
             } else
                 assert_true(of > 0);
         } else

@@ -78,7 +78,8 @@ static const fx_case cases[] = {
     {"cos", "fixed<15,9>", "fixed<15,13>", 0, 16},      /*   kinds 4, 5; fast cos: Horner), other */
     {"sin", "fixed<15,3>", "fixed<11,10>", 0, 16},      /*   exponents, |x| up to 4096 */
     {"sin", "fixed<15,9>", "fixed<15,13>", 0, 16},      /*   fast sin (kind 5) at Eo = 13 */
-    {"cos", "fixed<15,10>", "fixed<15,12>", 1, 16},     /*   exact cos (kind 4) at Eo = 12 */
+    {"cos", "fixed<15,10>", "fixed<15,12>", 1, 16},     /*   exact cos (kind 4: cubics, 16 segments) */
+    {"sin", "fixed<15,9>", "fixed<15,14>", 1, 16},      /*   exact sin (kind 4: quadratics, 32) */
     {"exp", "fixed<15,7>", "ufixed<16,4>", 1, 16},      /* exact table kernel, other shifts */
     {"exp2", "fixed<15,6>", "ufixed<16,2>", 1, 16},     /* exact table kernel: j is x's low bits */
 };

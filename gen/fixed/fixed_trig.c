@@ -240,15 +240,23 @@ static void tr4_phase(const fx_gen *G, int64_t x, int is_cos, tr4_ph *p)
     uint32_t pl = ax * (uint32_t)T->kl;
     uint32_t lo = pl & 0xffffu;
     uint32_t hi = ((pl >> 16) + ax * (uint32_t)T->kh + (uint32_t)T->hoff) & 0xffffu;
-    p->j = (int)((hi >> 10) & 31u);
-    p->t = (int32_t)(((hi << 5) | (lo >> 11)) & 0x7fffu);
+    if (T->tns == 16) {
+        p->j = (int)((hi >> 11) & 15u);
+        p->t = (int32_t)(((hi << 4) | (lo >> 12)) & 0x7fffu);
+    } else {
+        p->j = (int)((hi >> 10) & 31u);
+        p->t = (int32_t)(((hi << 5) | (lo >> 11)) & 0x7fffu);
+    }
     p->s = (int)(hi >> 15) ^ (!is_cos && x < 0);
 }
 
-/* P for segment coefficients c[3] at t; 0 when a step leaves int16_t */
-static int tr4_p(const int32_t *c, int32_t t, int32_t *p)
+/* P for segment coefficients c[ord + 1] at t; 0 when a step leaves int16_t */
+static int tr4_p(int ord, const int32_t *c, int32_t t, int32_t *p)
 {
-    int32_t q = tr4_mulhrs(t, c[2]) + c[1];
+    int32_t q = ord == 3 ? tr4_mulhrs(t, c[3]) + c[2] : c[2];
+    if (q < -32768 || q > 32767)
+        return 0;
+    q = tr4_mulhrs(t, q) + c[1];
     if (q < -32768 || q > 32767)
         return 0;
     *p = tr4_mulhrs(t, q) + c[0];
@@ -263,17 +271,14 @@ static long double tr4_target(const fx_gen *G, int64_t x, int is_cos, int s)
     return ldexpl(s ? -f : f, G->out.exp);
 }
 
-static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
+/* the fit of kind 4 on ns segments with polynomials of degree ord (16
+   and 3, or 32 and 2); its largest pre-rounding error in T->terr */
+static int prepare4_n(fx_gen *G, int is_cos, int ns, int ord, char *err, size_t errlen)
 {
     fx_trig_red *T = &G->trig;
-    int Ei = G->in.exp, Eo = G->out.exp;
-    uint64_t K = two_over_pi_bits(30 - Ei);
-    if (K >= ((uint64_t)1 << 32) || K < ((uint64_t)1 << 15))
-        return -2;
-    T->kh = (int64_t)(K >> 16);
-    T->kl = (int64_t)(K & 0xffffu);
-    T->hoff = is_cos ? 0x4000 : 0;
-    T->tred = 32768.0 * two_over_pi_frac(30 - Ei) * 0x1p-30;
+    int Eo = G->out.exp;
+    T->tns = ns;
+    T->tord = ord;
     /* the inputs of each segment */
     static int32_t ts[32][65536];
     static long double ys[32][65536];
@@ -288,32 +293,40 @@ static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
     }
     long double sc = ldexpl(1, Eo - 16);
     double worst = 0;
-    for (int j = 0; j < 32; j++) {
-        /* Chebyshev nodes of [0, 1]: the quadratic through them */
-        long double tn[3], yn[3];
-        for (int k = 0; k < 3; k++) {
-            tn[k] = 0.5L + 0.5L * cosl((2 * k + 1) * 3.14159265358979323846264338327950288L / 6);
-            yn[k] = sinl(1.57079632679489661923132169163975144L * (j + tn[k]) / 16) * 65536 - 32768;
+    int w3 = ord == 3 ? 2 : 0, w2 = 3, w1 = ord == 3 ? 3 : 4, w0 = ord == 3 ? 3 : 4; /* the search's half-widths */
+    for (int j = 0; j < ns; j++) {
+        /* Chebyshev nodes of [0, 1]: the polynomial through them (Newton's
+           divided differences, then the monomial form) */
+        long double tn[4], yn[4], dd[4], a[4] = {0, 0, 0, 0};
+        for (int k = 0; k <= ord; k++) {
+            tn[k] = 0.5L + 0.5L * cosl((2 * k + 1) * 3.14159265358979323846264338327950288L / (2 * (ord + 1)));
+            yn[k] = sinl(1.57079632679489661923132169163975144L * (j + tn[k]) * 2 / ns) * 65536 - 32768;
+            dd[k] = yn[k];
         }
-        /* Newton form -> monomial */
-        long double d01 = (yn[1] - yn[0]) / (tn[1] - tn[0]), d12 = (yn[2] - yn[1]) / (tn[2] - tn[1]);
-        long double a2 = (d12 - d01) / (tn[2] - tn[0]);
-        long double a1 = d01 - a2 * (tn[0] + tn[1]);
-        long double a0 = yn[0] - tn[0] * (a1 + a2 * tn[0]);
-        int32_t b0 = (int32_t)llroundl(a0), b1 = (int32_t)llroundl(a1), b2 = (int32_t)llroundl(a2);
+        for (int l = 1; l <= ord; l++)
+            for (int k = ord; k >= l; k--)
+                dd[k] = (dd[k] - dd[k - 1]) / (tn[k] - tn[k - l]);
+        for (int k = ord; k >= 0; k--) { /* a(t) = a(t) (t - tn[k]) + dd[k] */
+            for (int l = ord; l >= 1; l--)
+                a[l] = a[l - 1] - tn[k] * a[l];
+            a[0] = dd[k] - tn[k] * a[0];
+        }
+        int32_t b0 = (int32_t)llroundl(a[0]), b1 = (int32_t)llroundl(a[1]), b2 = (int32_t)llroundl(a[2]);
+        int32_t b3 = (int32_t)llroundl(a[3]);
         double best = INFINITY;
-        int32_t bc[3] = {0, 0, 0};
-        for (int32_t d2 = -3; d2 <= 3; d2++)
-            for (int32_t d1 = -4; d1 <= 4; d1++)
-                for (int32_t d0 = -4; d0 <= 4; d0++) {
-                    int32_t c[3] = {b0 + d0, b1 + d1, b2 + d2};
+        int32_t bc[4] = {0, 0, 0, 0};
+        for (int32_t d3 = -w3; d3 <= w3; d3++)
+        for (int32_t d2 = -w2; d2 <= w2; d2++)
+            for (int32_t d1 = -w1; d1 <= w1; d1++)
+                for (int32_t d0 = -w0; d0 <= w0; d0++) {
+                    int32_t c[4] = {b0 + d0, b1 + d1, b2 + d2, b3 + d3};
                     if (c[0] < -32768 || c[0] > 32767 || c[1] < -32768 || c[1] > 32767 || c[2] < -32768 ||
-                        c[2] > 32767)
+                        c[2] > 32767 || c[3] < -32768 || c[3] > 32767)
                         continue;
                     double e = 0;
                     for (int i = 0; i < cnt[j] && e < best; i++) {
                         int32_t p;
-                        if (!tr4_p(c, ts[j][i], &p)) {
+                        if (!tr4_p(ord, c, ts[j][i], &p)) {
                             e = INFINITY;
                             break;
                         }
@@ -322,7 +335,7 @@ static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
                     }
                     if (e < best) {
                         best = e;
-                        bc[0] = c[0], bc[1] = c[1], bc[2] = c[2];
+                        bc[0] = c[0], bc[1] = c[1], bc[2] = c[2], bc[3] = c[3];
                     }
                 }
         if (!(best < INFINITY)) {
@@ -332,9 +345,32 @@ static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
         T->tc0[j] = (int16_t)bc[0];
         T->tc1[j] = (int16_t)bc[1];
         T->tc2[j] = (int16_t)bc[2];
+        T->tc3[j] = (int16_t)bc[3];
         worst = best > worst ? best : worst;
     }
     T->terr = worst * (1 + 1e-9) + 1e-9; /* long double's own error: far below */
+    return 0;
+}
+
+static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
+{
+    fx_trig_red *T = &G->trig;
+    int Ei = G->in.exp, Eo = G->out.exp;
+    uint64_t K = two_over_pi_bits(30 - Ei);
+    if (K >= ((uint64_t)1 << 32) || K < ((uint64_t)1 << 15))
+        return -2;
+    T->kh = (int64_t)(K >> 16);
+    T->kl = (int64_t)(K & 0xffffu);
+    T->hoff = is_cos ? 0x4000 : 0;
+    T->tred = 32768.0 * two_over_pi_frac(30 - Ei) * 0x1p-30;
+    /* cubics on 16 segments where they are within 1 lsb (on AVX2 a 16-entry
+       lookup is two vpshufb, a 32-entry one four), else quadratics on 32 */
+    int rc = prepare4_n(G, is_cos, 16, 3, err, errlen);
+    if (rc != 0 || !(T->terr + 0.5 < 1 - 1e-6))
+        rc = prepare4_n(G, is_cos, 32, 2, err, errlen);
+    if (rc != 0)
+        return rc;
+    int ns = T->tns, ord = T->tord, nb = ns == 16 ? 4 : 5;
     G->kind = 4;
     G->dred = T->tred;
     G->fmax = 1;
@@ -342,27 +378,46 @@ static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
              "on |x| (sin(-x) = -sin(x), cos(-x) = cos(x), exactly); u = |x| 2/pi in quarter turns, U = u 2^30 mod "
              "2^32 = |x| K%s, K = round(2/pi 2^%d) = %lld = %lld 2^16 + %lld (MPFR), as two 16-bit words: lo = |x| "
              "%lld mod 2^16 (pmullw), hi = floor(|x| %lld 2^-16) + |x| %lld%s (pmulhuw, pmullw), exact; |error of u| "
-             "<= %.3e; half turn h = bit 31 of U, segment j = bits 30..26 (u mod 2 in [j/16, (j+1)/16)), tau = "
-             "bits 25..11 2^-15 in [0, 1) (the rest truncated, < 2^-19 quarter turns)",
+             "<= %.3e; half turn h = bit 31 of U, segment j = bits 30..%d (u mod 2 in [j, j + 1) 2^-%d), tau = "
+             "bits %d..%d 2^-15 in [0, 1) (the rest truncated, < 2^-%d quarter turns)",
              is_cos ? " + 2^30 (cos(x) = sin(pi/2 (u + 1)))" : "", 30 - Ei, (long long)K, (long long)T->kh,
              (long long)T->kl, (long long)T->kl, (long long)T->kl, (long long)T->kh, is_cos ? " + 2^14" : "",
-             T->tred);
+             T->tred, 31 - nb, nb - 1, 30 - nb, 16 - nb, 14 + nb);
     snprintf(G->alt_domain, sizeof G->alt_domain,
-             "sin(pi/2 (j + tau)/16) on tau in [0, 1) for each of 32 segments j of the half turn [0, 2) quarter "
-             "turns (the other half by the sign)");
-    snprintf(G->alt_order, sizeof G->alt_order,
-             "2 per segment (P_j(tau) = C0 + tau (C1 + tau C2)), three 32-entry tables of int16_t; int16_t "
-             "words: 16-bit lanes");
+             "sin(pi/2 (j + tau) 2^-%d) on tau in [0, 1) for each of %d segments j of the half turn [0, 2) quarter "
+             "turns (the other half by the sign)",
+             nb - 1, ns);
+    if (ord == 3)
+        snprintf(G->alt_order, sizeof G->alt_order,
+                 "3 per segment (P_j(tau) = C0 + tau (C1 + tau (C2 + tau C3))), four %d-entry tables of int16_t; "
+                 "int16_t words: 16-bit lanes",
+                 ns);
+    else
+        snprintf(G->alt_order, sizeof G->alt_order,
+                 "2 per segment (P_j(tau) = C0 + tau (C1 + tau C2)), three %d-entry tables of int16_t; int16_t "
+                 "words: 16-bit lanes",
+                 ns);
     snprintf(G->alt_method, sizeof G->alt_method,
-             "per segment: the quadratic through the three Chebyshev nodes of [0, 1] (long double), rounded to "
-             "2^-16, then the integers within (+-4, +-4, +-3) of it with the smallest largest error of the emitted "
-             "steps over the segment's inputs (every 16-bit input, against sinl/cosl), no step leaving int16_t");
+             "per segment: the %s through the %s Chebyshev nodes of [0, 1] (long double), rounded to 2^-16, then "
+             "the integers within %s of it with the smallest largest error of the emitted steps over the segment's "
+             "inputs (every 16-bit input, against sinl/cosl), no step leaving int16_t%s",
+             ord == 3 ? "cubic" : "quadratic", ord == 3 ? "four" : "three",
+             ord == 3 ? "(+-3, +-3, +-3, +-2)" : "(+-4, +-4, +-3)",
+             ord == 3 ? "; cubics on 16 segments where their bound is below 1 lsb, else quadratics on 32" : "");
     snprintf(G->alt_con, sizeof G->alt_con, "none (the sign fold makes sin exactly odd and cos exactly even)");
-    snprintf(G->alt_formats, sizeof G->alt_formats,
-             "tau int16_t at 2^-15 in [0, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(tau, C2) int16_t at 2^-16; P = "
-             "C0 + pmulhrsw(tau, q) int16_t at 2^-16 offset by 1/2 (sin = (P + 2^15) 2^-16); result "
-             "pmulhrsw(P, 2^%d) + 2^%d = round(sin 2^%d), ties up, then negated when h (xor x < 0, for sin)",
-             Eo - 1, Eo - 1, Eo);
+    if (ord == 3)
+        snprintf(G->alt_formats, sizeof G->alt_formats,
+                 "tau int16_t at 2^-15 in [0, 2^15); C0..C3, q3 = C2 + pmulhrsw(tau, C3) and q = C1 + "
+                 "pmulhrsw(tau, q3) int16_t at 2^-16; P = C0 + pmulhrsw(tau, q) int16_t at 2^-16 offset by 1/2 "
+                 "(sin = (P + 2^15) 2^-16); result pmulhrsw(P, 2^%d) + 2^%d = round(sin 2^%d), ties up, then "
+                 "negated when h (xor x < 0, for sin)",
+                 Eo - 1, Eo - 1, Eo);
+    else
+        snprintf(G->alt_formats, sizeof G->alt_formats,
+                 "tau int16_t at 2^-15 in [0, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(tau, C2) int16_t at 2^-16; P = "
+                 "C0 + pmulhrsw(tau, q) int16_t at 2^-16 offset by 1/2 (sin = (P + 2^15) 2^-16); result "
+                 "pmulhrsw(P, 2^%d) + 2^%d = round(sin 2^%d), ties up, then negated when h (xor x < 0, for sin)",
+                 Eo - 1, Eo - 1, Eo);
     snprintf(G->alt_poly, sizeof G->alt_poly,
              "largest pre-rounding error of the emitted steps %.4f lsb (all 2^16 inputs, against sinl/cosl: "
              "segment fit, coefficient and multiply-high roundings, phase)",
@@ -373,7 +428,8 @@ static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
              "flags");
     snprintf(G->bound_note, sizeof G->bound_note,
              "taken over every input from the emitted integer steps (the register-table kernel)");
-    snprintf(G->order_text, sizeof G->order_text, "int16_t words: 16-bit lanes, three 32-entry tables");
+    snprintf(G->order_text, sizeof G->order_text, "int16_t words: 16-bit lanes, %s %d-entry tables",
+             ord == 3 ? "four" : "three", ns);
     return 0;
 }
 
@@ -982,14 +1038,15 @@ static void emit16_3(fx_gen *G, pf_buf *body, int is_cos)
              "|v| P, so no step fits 16-bit words");
 }
 
-/* kind 4 (see above): the plain-C steps (scalar form, other clones) and
-   the AVX-512BW loop with the tables in registers (vpermw) */
-static void tr4_table(pf_buf *b, const char *name, const char *suf, const int16_t *v, const char *what)
+/* kind 4 (see above): the plain-C steps (scalar form, other clones), the
+   AVX-512BW loop with the tables in registers (vpermw) and the AVX2 loop
+   (vpshufb on the tables' byte planes) */
+static void tr4_table(pf_buf *b, const char *name, const char *suf, const int16_t *v, int n, const char *what)
 {
     /* 32-bit entries: the plain-C lookups vectorize as 32-bit gathers; the
        AVX-512 loop narrows them once to one register */
-    pf_printf(b, "/* %s */\nstatic const int32_t %s_%s[32] = {", what, name, suf);
-    for (int i = 0; i < 32; i++)
+    pf_printf(b, "/* %s */\nstatic const int32_t %s_%s[%d] = {", what, name, suf, n);
+    for (int i = 0; i < n; i++)
         pf_printf(b, "%s%d,", i % 8 ? " " : "\n    ", v[i]);
     pf_put(b, "\n};\n");
 }
@@ -998,11 +1055,13 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
 {
     const fx_trig_red *T = &G->trig;
     const char *N = G->name;
-    int Eo = G->out.exp;
+    int Eo = G->out.exp, ns = T->tns, ord = T->tord, nb = ns == 16 ? 4 : 5, nt = ord + 1;
     pf_buf body = {0}, tabs = {0}, kern = {0};
-    tr4_table(&tabs, N, "c0", T->tc0, "C0[j]: P_j(0) - 1/2, 2^-16 units (fitted, see the provenance)");
-    tr4_table(&tabs, N, "c1", T->tc1, "C1[j], 2^-16 units");
-    tr4_table(&tabs, N, "c2", T->tc2, "C2[j], 2^-16 units");
+    tr4_table(&tabs, N, "c0", T->tc0, ns, "C0[j]: P_j(0) - 1/2, 2^-16 units (fitted, see the provenance)");
+    tr4_table(&tabs, N, "c1", T->tc1, ns, "C1[j], 2^-16 units");
+    tr4_table(&tabs, N, "c2", T->tc2, ns, "C2[j], 2^-16 units");
+    if (ord == 3)
+        tr4_table(&tabs, N, "c3", T->tc3, ns, "C3[j], 2^-16 units");
     const char *kl = fx_k16(G, (int16_t)(uint16_t)T->kl, "KL (as uint16_t): K = KH 2^16 + KL");
     const char *kh = fx_k16(G, T->kh, "KH");
     char w[64];
@@ -1014,14 +1073,22 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
                      "    uint16_t lo = (uint16_t)pl;\n"
                      "    uint16_t hi = (uint16_t)((pl >> 16) + (uint32_t)ax * (uint16_t)%s%s);\n",
               kl, kh, is_cos ? " + 0x4000u" : "");
-    pf_put(&body, "    /* segment j = bits 30..26, tau = bits 25..11 (2^-15) */\n"
-                  "    unsigned j = (unsigned)(hi >> 10) & 31u;\n"
-                  "    int16_t t = (int16_t)((((uint32_t)hi << 5) | ((uint32_t)lo >> 11)) & 0x7fffu);\n");
-    pf_printf(&body, "    /* P = C0 + tau (C1 + tau C2), 2^-16 units offset by 1/2 */\n"
-                     "    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)%s_c2[j]) + %s_c1[j]);\n"
-                     "    int16_t p = (int16_t)(pf_fx_mulhrs(t, q) + %s_c0[j]);\n"
+    pf_printf(&body, "    /* segment j = bits 30..%d, tau = bits %d..%d (2^-15) */\n"
+                     "    unsigned j = (unsigned)(hi >> %d) & %du;\n"
+                     "    int16_t t = (int16_t)((((uint32_t)hi << %d) | ((uint32_t)lo >> %d)) & 0x7fffu);\n",
+              31 - nb, 30 - nb, 16 - nb, 15 - nb, ns - 1, nb, 16 - nb);
+    if (ord == 3)
+        pf_printf(&body, "    /* P = C0 + tau (C1 + tau (C2 + tau C3)), 2^-16 units offset by 1/2 */\n"
+                         "    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)%s_c3[j]) + %s_c2[j]);\n"
+                         "    q = (int16_t)(pf_fx_mulhrs(t, q) + %s_c1[j]);\n",
+                  N, N, N);
+    else
+        pf_printf(&body, "    /* P = C0 + tau (C1 + tau C2), 2^-16 units offset by 1/2 */\n"
+                         "    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)%s_c2[j]) + %s_c1[j]);\n",
+                  N, N);
+    pf_printf(&body, "    int16_t p = (int16_t)(pf_fx_mulhrs(t, q) + %s_c0[j]);\n"
                      "    int16_t r = (int16_t)(pf_fx_mulhrs(p, %s) + %d); /* round((P + 2^15) 2^%d) */\n",
-              N, N, N, kr, 1 << (Eo - 1), Eo - 16);
+              N, kr, 1 << (Eo - 1), Eo - 16);
     if (is_cos)
         pf_put(&body, "    int16_t sg = pf_fx_sgn16((int16_t)hi); /* the half turn */\n");
     else
@@ -1034,16 +1101,25 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
               "   with x86-64-v4 (see its dispatch), the rest of the array and the other\n"
               "   clones use the scalar steps above.  The same values (pfmathgen sweeps the\n"
               "   array form on its machine against the scalar one). */\n%s#include <immintrin.h>\n"
-              "extern %s %s(%s x); /* the scalar form, for the last n %% 32 */\n"
-              "/* 32 table entries as 16-bit words, for vpermw */\n"
-              "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16(const int32_t *t)\n{\n"
-              "    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),\n"
-              "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n"
-              "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
-              "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
-              cond, G->ot, N, G->it, N, N, G->it, G->ot);
-    pf_printf(&kern, "    const __m512i c0 = %s_w16(%s_c0), c1 = %s_w16(%s_c1), c2 = %s_w16(%s_c2);\n", N, N, N, N, N,
-              N);
+              "extern %s %s(%s x); /* the scalar form, for the last n %% 32 */\n",
+              cond, G->ot, N, G->it);
+    if (ns == 16)
+        pf_printf(&kern, "/* the 16 entries as 16-bit words, twice (vpermw reads 5 index bits) */\n"
+                         "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16(const int32_t *t)\n{\n"
+                         "    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));\n}\n",
+                  N);
+    else
+        pf_printf(&kern, "/* 32 table entries as 16-bit words, for vpermw */\n"
+                         "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16(const int32_t *t)\n{\n"
+                         "    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),\n"
+                         "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n",
+                  N);
+    pf_printf(&kern, "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
+                     "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+                     "    const __m512i c0 = %s_w16(%s_c0), c1 = %s_w16(%s_c1), c2 = %s_w16(%s_c2);\n",
+              N, G->it, G->ot, N, N, N, N, N, N);
+    if (ord == 3)
+        pf_printf(&kern, "    const __m512i c3 = %s_w16(%s_c3);\n", N, N);
     pf_printf(&kern, "    const __m512i kl = _mm512_set1_epi16(%d), kh = _mm512_set1_epi16(%d), kr = _mm512_set1_epi16(%d);\n"
                      "    const __m512i ho = _mm512_set1_epi16(%d), m15 = _mm512_set1_epi16(0x7fff);\n",
               (int)(int16_t)(uint16_t)T->kl, (int)T->kh, 1 << (Eo - 1), is_cos ? 0x4000 : 0);
@@ -1057,12 +1133,18 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
         pf_put(&kern, "        hi = _mm512_add_epi16(hi, ho);\n");
     else
         pf_put(&kern, "        (void)ho;\n");
-    pf_put(&kern, "        __m512i j = _mm512_srli_epi16(hi, 10); /* vpermw reads the low 5 bits */\n"
-                  "        /* (hi << 5 | lo >> 11) & 0x7fff: one vpternlog */\n"
-                  "        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 5), _mm512_srli_epi16(lo, 11), m15, 0xa8);\n"
-                  "        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),\n"
-                  "                                     _mm512_permutexvar_epi16(j, c1));\n"
-                  "        __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));\n"
+    pf_printf(&kern, "        __m512i j = _mm512_srli_epi16(hi, %d); /* vpermw reads the low 5 bits */\n"
+                     "        /* (hi << %d | lo >> %d) & 0x7fff: one vpternlog */\n"
+                     "        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, %d), _mm512_srli_epi16(lo, %d), m15, 0xa8);\n",
+              15 - nb, nb, 16 - nb, nb, 16 - nb);
+    if (ord == 3)
+        pf_put(&kern, "        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),\n"
+                      "                                     _mm512_permutexvar_epi16(j, c2));\n"
+                      "        q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));\n");
+    else
+        pf_put(&kern, "        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),\n"
+                      "                                     _mm512_permutexvar_epi16(j, c1));\n");
+    pf_put(&kern, "        __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));\n"
                   "        __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);\n");
     if (is_cos)
         pf_put(&kern, "        __mmask32 neg = _mm512_movepi16_mask(hi);\n");
@@ -1071,68 +1153,113 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
     pf_printf(&kern, "        r = _mm512_mask_sub_epi16(r, neg, zero, r);\n"
                      "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
               N);
-    /* AVX2 (16 lanes): no vpermw.  Each 32-entry table is held as byte
-       planes, its low and its high bytes, 16 entries per register (vpshufb
-       reads 4 index bits per 128-bit lane and zeroes a byte whose index has
-       bit 7 set): four vpshufb whose indices zero all but the right plane
-       and half, merged by three vpor */
+    /* AVX2 (16 lanes): no vpermw.  Each table is held as byte planes, its
+       low and its high bytes, 16 entries per register (vpshufb reads 4
+       index bits per 128-bit lane and zeroes a byte whose index has bit 7
+       set): a lookup is two vpshufb (16 entries) or four (32), whose
+       indices zero all but the right plane and half, merged by vpor */
     pf_printf(&kern,
               "\n\n/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: each table is\n"
-              "   four registers, its low and its high bytes for j < 16 and j >= 16 (byte\n"
-              "   planes); a lookup is four vpshufb whose indices have bit 7 set (the\n"
-              "   byte zeroed) where the plane or the half is not theirs, merged by vpor.\n"
-              "   The sign by vpsignw.  The same values. */\n%s"
-              "__attribute__((target(\"arch=x86-64-v3\"))) static inline __m256i %s_lk(const __m256i *p, __m256i ia,\n"
-              "                                                                    __m256i ib, __m256i ja, __m256i jb)\n{\n"
-              "    return _mm256_or_si256(_mm256_or_si256(_mm256_shuffle_epi8(p[0], ia), _mm256_shuffle_epi8(p[1], ib)),\n"
-              "                           _mm256_or_si256(_mm256_shuffle_epi8(p[2], ja), _mm256_shuffle_epi8(p[3], jb)));\n}\n"
+              "   its low and its high bytes (byte planes) in %s registers; a lookup is %s\n"
+              "   vpshufb whose indices have bit 7 set (the byte zeroed) where the plane%s\n"
+              "   is not theirs, merged by vpor.  The sign by vpsignw.  The same values. */\n%s",
+              ns == 16 ? "two" : "four (j < 16, j >= 16)", ns == 16 ? "two" : "four",
+              ns == 16 ? "" : " or the half", cond);
+    if (ns == 16)
+        pf_printf(&kern, "__attribute__((target(\"arch=x86-64-v3\"))) static inline __m256i %s_lk(const __m256i *p, __m256i ia,\n"
+                         "                                                                    __m256i ib)\n{\n"
+                         "    return _mm256_or_si256(_mm256_shuffle_epi8(p[0], ia), _mm256_shuffle_epi8(p[1], ib));\n}\n",
+                  N);
+    else
+        pf_printf(&kern, "__attribute__((target(\"arch=x86-64-v3\"))) static inline __m256i %s_lk(const __m256i *p, __m256i ia,\n"
+                         "                                                                    __m256i ib, __m256i ja, __m256i jb)\n{\n"
+                         "    return _mm256_or_si256(_mm256_or_si256(_mm256_shuffle_epi8(p[0], ia), _mm256_shuffle_epi8(p[1], ib)),\n"
+                         "                           _mm256_or_si256(_mm256_shuffle_epi8(p[2], ja), _mm256_shuffle_epi8(p[3], jb)));\n}\n",
+                  N);
+    pf_printf(&kern,
               "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
               "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
-              "    const int32_t *tab[3] = {%s_c0, %s_c1, %s_c2};\n"
-              "    uint8_t b[3][4][16]; /* per table: low bytes of 0..15, 16..31, high bytes of 0..15, 16..31 */\n"
-              "    for (int a = 0; a < 3; a++)\n"
-              "        for (int k = 0; k < 32; k++) {\n"
-              "            b[a][k >> 4][k & 15] = (uint8_t)(uint32_t)tab[a][k];\n"
-              "            b[a][2 + (k >> 4)][k & 15] = (uint8_t)((uint32_t)tab[a][k] >> 8);\n"
-              "        }\n"
-              "    __m256i c[3][4];\n"
-              "    for (int a = 0; a < 3; a++)\n"
-              "        for (int p = 0; p < 4; p++)\n"
-              "            c[a][p] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[a][p]));\n",
-              cond, N, N, G->it, G->ot, N, N, N);
+              "    const int32_t *tab[%d] = {%s_c0, %s_c1, %s_c2%s%s%s};\n",
+              N, G->it, G->ot, nt, N, N, N, ord == 3 ? ", " : "", ord == 3 ? N : "", ord == 3 ? "_c3" : "");
+    if (ns == 16)
+        pf_printf(&kern, "    uint8_t b[%d][2][16]; /* per table: the low bytes, the high bytes */\n"
+                         "    for (int a = 0; a < %d; a++)\n"
+                         "        for (int k = 0; k < 16; k++) {\n"
+                         "            b[a][0][k] = (uint8_t)(uint32_t)tab[a][k];\n"
+                         "            b[a][1][k] = (uint8_t)((uint32_t)tab[a][k] >> 8);\n"
+                         "        }\n"
+                         "    __m256i c[%d][2];\n"
+                         "    for (int a = 0; a < %d; a++)\n"
+                         "        for (int p = 0; p < 2; p++)\n"
+                         "            c[a][p] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[a][p]));\n",
+                  nt, nt, nt, nt);
+    else
+        pf_printf(&kern, "    uint8_t b[%d][4][16]; /* per table: low bytes of 0..15, 16..31, high bytes of 0..15, 16..31 */\n"
+                         "    for (int a = 0; a < %d; a++)\n"
+                         "        for (int k = 0; k < 32; k++) {\n"
+                         "            b[a][k >> 4][k & 15] = (uint8_t)(uint32_t)tab[a][k];\n"
+                         "            b[a][2 + (k >> 4)][k & 15] = (uint8_t)((uint32_t)tab[a][k] >> 8);\n"
+                         "        }\n"
+                         "    __m256i c[%d][4];\n"
+                         "    for (int a = 0; a < %d; a++)\n"
+                         "        for (int p = 0; p < 4; p++)\n"
+                         "            c[a][p] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[a][p]));\n",
+                  nt, nt, nt, nt);
     pf_printf(&kern, "    const __m256i kl = _mm256_set1_epi16(%d), kh = _mm256_set1_epi16(%d), kr = _mm256_set1_epi16(%d);\n"
-                     "    const __m256i ho = _mm256_set1_epi16(%d), m15 = _mm256_set1_epi16(0x7fff), m31 = _mm256_set1_epi16(31);\n"
+                     "    const __m256i ho = _mm256_set1_epi16(%d), m15 = _mm256_set1_epi16(0x7fff);\n"
                      "    const __m256i half = _mm256_set1_epi16(%d), one = _mm256_set1_epi16(1);\n",
               (int)(int16_t)(uint16_t)T->kl, (int)T->kh, 1 << (Eo - 1), is_cos ? 0x4000 : 0, 1 << (Eo - 1));
-    pf_put(&kern, "    const __m256i ka = _mm256_set1_epi16((short)0x8070), kb = _mm256_set1_epi16(0x0080);\n"
-                  "    const __m256i kc = _mm256_set1_epi16(0x7080), kd = _mm256_set1_epi16((short)0x8000);\n"
-                  "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
+    if (ns == 16)
+        pf_put(&kern, "    const __m256i ka = _mm256_set1_epi16((short)0x8000), kb = _mm256_set1_epi16(0x0080);\n");
+    else
+        pf_put(&kern, "    const __m256i m31 = _mm256_set1_epi16(31), ka = _mm256_set1_epi16((short)0x8070);\n"
+                      "    const __m256i kb = _mm256_set1_epi16(0x0080), kc = _mm256_set1_epi16(0x7080), kd = _mm256_set1_epi16((short)0x8000);\n");
+    pf_put(&kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
                   "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
                   "        __m256i ax = _mm256_abs_epi16(xv);\n"
                   "        __m256i lo = _mm256_mullo_epi16(ax, kl);\n"
                   "        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_mullo_epi16(ax, kh));\n");
     pf_put(&kern, is_cos ? "        hi = _mm256_add_epi16(hi, ho);\n" : "        (void)ho;\n");
-    pf_put(&kern, "        /* j in the low byte: + 0x70 keeps bit 7 clear for j < 16 (0x8070: the high\n"
-                  "           byte's bit 7 set), xor 0x80 flips that for j >= 16; the same in the\n"
-                  "           high byte for the high bytes' planes */\n"
-                  "        __m256i jl = _mm256_and_si256(_mm256_srli_epi16(hi, 10), m31);\n"
-                  "        __m256i ia = _mm256_add_epi16(jl, ka), ib = _mm256_xor_si256(ia, kb);\n"
-                  "        __m256i ja = _mm256_add_epi16(_mm256_slli_epi16(jl, 8), kc), jb = _mm256_xor_si256(ja, kd);\n"
-                  "        __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, 5), _mm256_srli_epi16(lo, 11)), m15);\n");
-    pf_printf(&kern, "        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, %s_lk(c[2], ia, ib, ja, jb)), %s_lk(c[1], ia, ib, ja, jb));\n"
-                     "        __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), %s_lk(c[0], ia, ib, ja, jb));\n"
+    const char *ix;
+    if (ns == 16) {
+        pf_put(&kern, "        /* hi >> 11 = h 16 + j in the low byte (vpshufb reads bits 3..0, bit 7 clear),\n"
+                      "           0x80 in the high byte; ib: hi >> 3, the same in the high byte, 0x80 in the\n"
+                      "           low one */\n"
+                      "        __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);\n"
+                      "        __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);\n");
+        ix = "ia, ib";
+    } else {
+        pf_put(&kern, "        /* j in the low byte: + 0x70 keeps bit 7 clear for j < 16 (0x8070: the high\n"
+                      "           byte's bit 7 set), xor 0x80 flips that for j >= 16; the same in the\n"
+                      "           high byte for the high bytes' planes */\n"
+                      "        __m256i jl = _mm256_and_si256(_mm256_srli_epi16(hi, 10), m31);\n"
+                      "        __m256i ia = _mm256_add_epi16(jl, ka), ib = _mm256_xor_si256(ia, kb);\n"
+                      "        __m256i ja = _mm256_add_epi16(_mm256_slli_epi16(jl, 8), kc), jb = _mm256_xor_si256(ja, kd);\n");
+        ix = "ia, ib, ja, jb";
+    }
+    pf_printf(&kern, "        __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, %d), _mm256_srli_epi16(lo, %d)), m15);\n",
+              nb, 16 - nb);
+    if (ord == 3)
+        pf_printf(&kern, "        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, %s_lk(c[3], %s)), %s_lk(c[2], %s));\n"
+                         "        q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), %s_lk(c[1], %s));\n",
+                  N, ix, N, ix, N, ix);
+    else
+        pf_printf(&kern, "        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, %s_lk(c[2], %s)), %s_lk(c[1], %s));\n",
+                  N, ix, N, ix);
+    pf_printf(&kern, "        __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), %s_lk(c[0], %s));\n"
                      "        __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(p, kr), half);\n",
-              N, N, N);
+              N, ix);
     pf_put(&kern, is_cos ? "        r = _mm256_sign_epi16(r, _mm256_or_si256(hi, one)); /* negated when h */\n"
                          : "        r = _mm256_sign_epi16(r, _mm256_or_si256(_mm256_xor_si256(hi, xv), one)); /* negated when h xor x < 0 */\n");
     pf_printf(&kern, "        _mm256_storeu_si256((__m256i *)(y + i), r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
               N);
     G->bw16 = 3;
     snprintf(G->wide_text, sizeof G->wide_text,
-             "every step in 16-bit lanes; the lookups (vpermw, three registers of 32 entries) in the AVX-512BW "
-             "loop by intrinsics (x86-64-v4); AVX2 intrinsics (x86-64-v3): each lookup four vpshufb on byte "
+             "every step in 16-bit lanes; the lookups (vpermw, %s registers of %s) in the AVX-512BW "
+             "loop by intrinsics (x86-64-v4); AVX2 intrinsics (x86-64-v3): each lookup %s vpshufb on byte "
              "planes merged by vpor; the default clone, scalar form: the same steps in plain C (32-bit table "
-             "loads)");
+             "loads)",
+             ord == 3 ? "four" : "three", ns == 16 ? "16 entries twice" : "32 entries", ns == 16 ? "two" : "four");
     const char *kv[] = {"FUNC", is_cos ? "cos" : "sin", "NAME", N, "IT", G->it, "OT", G->ot, "BODY", body.s,
                         "TABLES", tabs.s, "KERNEL", kern.s, NULL};
     pf_subst(out, pf_template("fx_sincos16t.c"), kv);

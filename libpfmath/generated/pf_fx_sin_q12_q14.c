@@ -8,32 +8,33 @@
  *              turns, U = u 2^30 mod 2^32 = |x| K, K = round(2/pi 2^18) = 166886 = 2 2^16 + 
  *              35814 (MPFR), as two 16-bit words: lo = |x| 35814 mod 2^16 (pmullw), hi = 
  *              floor(|x| 35814 2^-16) + |x| 2 (pmulhuw, pmullw), exact; |error of u| <= 
- *              1.636e-06; half turn h = bit 31 of U, segment j = bits 30..26 (u mod 2 in [j/16, 
- *              (j+1)/16)), tau = bits 25..11 2^-15 in [0, 1) (the rest truncated, < 2^-19 
+ *              1.636e-06; half turn h = bit 31 of U, segment j = bits 30..27 (u mod 2 in [j, j 
+ *              + 1) 2^-3), tau = bits 26..12 2^-15 in [0, 1) (the rest truncated, < 2^-18 
  *              quarter turns)
- * Domain:      sin(pi/2 (j + tau)/16) on tau in [0, 1) for each of 32 segments j of the half 
+ * Domain:      sin(pi/2 (j + tau) 2^-3) on tau in [0, 1) for each of 16 segments j of the half 
  *              turn [0, 2) quarter turns (the other half by the sign)
- * Order:       2 per segment (P_j(tau) = C0 + tau (C1 + tau C2)), three 32-entry tables of 
- *              int16_t; int16_t words: 16-bit lanes
- * Lanes:       every step in 16-bit lanes; the lookups (vpermw, three registers of 32 entries) 
- *              in the AVX-512BW loop by intrinsics (x86-64-v4); AVX2 intrinsics (x86-64-v3): 
- *              each lookup four vpshufb on byte planes merged by vpor; the default clone, 
- *              scalar form: the same steps in plain C (32-bit table loads)
- * Method:      per segment: the quadratic through the three Chebyshev nodes of [0, 1] (long 
- *              double), rounded to 2^-16, then the integers within (+-4, +-4, +-3) of it with 
- *              the smallest largest error of the emitted steps over the segment's inputs (every 
- *              16-bit input, against sinl/cosl), no step leaving int16_t
+ * Order:       3 per segment (P_j(tau) = C0 + tau (C1 + tau (C2 + tau C3))), four 16-entry 
+ *              tables of int16_t; int16_t words: 16-bit lanes
+ * Lanes:       every step in 16-bit lanes; the lookups (vpermw, four registers of 16 entries 
+ *              twice) in the AVX-512BW loop by intrinsics (x86-64-v4); AVX2 intrinsics 
+ *              (x86-64-v3): each lookup two vpshufb on byte planes merged by vpor; the default 
+ *              clone, scalar form: the same steps in plain C (32-bit table loads)
+ * Method:      per segment: the cubic through the four Chebyshev nodes of [0, 1] (long double), 
+ *              rounded to 2^-16, then the integers within (+-3, +-3, +-3, +-2) of it with the 
+ *              smallest largest error of the emitted steps over the segment's inputs (every 
+ *              16-bit input, against sinl/cosl), no step leaving int16_t; cubics on 16 segments 
+ *              where their bound is below 1 lsb, else quadratics on 32
  * Constraints: none (the sign fold makes sin exactly odd and cos exactly even)
- * Formats:     tau int16_t at 2^-15 in [0, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(tau, C2) 
- *              int16_t at 2^-16; P = C0 + pmulhrsw(tau, q) int16_t at 2^-16 offset by 1/2 (sin 
- *              = (P + 2^15) 2^-16); result pmulhrsw(P, 2^13) + 2^13 = round(sin 2^14), ties up, 
- *              then negated when h (xor x < 0, for sin)
- * Polynomial:  largest pre-rounding error of the emitted steps 0.4308 lsb (all 2^16 inputs, 
+ * Formats:     tau int16_t at 2^-15 in [0, 2^15); C0..C3, q3 = C2 + pmulhrsw(tau, C3) and q = 
+ *              C1 + pmulhrsw(tau, q3) int16_t at 2^-16; P = C0 + pmulhrsw(tau, q) int16_t at 
+ *              2^-16 offset by 1/2 (sin = (P + 2^15) 2^-16); result pmulhrsw(P, 2^13) + 2^13 = 
+ *              round(sin 2^14), ties up, then negated when h (xor x < 0, for sin)
+ * Polynomial:  largest pre-rounding error of the emitted steps 0.4712 lsb (all 2^16 inputs, 
  *              against sinl/cosl: segment fit, coefficient and multiply-high roundings, phase)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.4308 LSB (polynomial 0.0000, 
- *              arithmetic and reduction 0.4308) = 0.9308 LSB; taken over every input from the 
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.4712 LSB (polynomial 0.0000, 
+ *              arithmetic and reduction 0.4712) = 0.9712 LSB; taken over every input from the 
  *              emitted integer steps (the register-table kernel)
- * Sweep:       max 0.8095 LSB at x = -6027 (-1.47143555), mean 0.2713 LSB; exhaustive: all 
+ * Sweep:       max 0.9370 LSB at x = -5823 (-1.42163086), mean 0.2767 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
@@ -227,31 +228,31 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 /* sin in fixed point, in 16-bit lanes, from tables that fit registers.
    u = |x| 2/pi counts quarter turns (for cos, u + 1: cos(x) = sin(pi/2
    (u + 1))); U = u 2^30 mod 2^32 is held as two 16-bit words hi:lo.  The
-   half turn h = bit 31 (sin(pi/2 (u + 2)) = -sin(pi/2 u)), the segment j =
-   bits 30..26 (u mod 2 in [j/16, (j+1)/16)) and tau = bits 25..11 (2^-15,
-   the position in the segment) give sin(pi/2 u) = +-P_j(tau), a quadratic
-   per segment from three 32-entry tables (one register each for vpermw).
-   k[] holds the multipliers; bw changes nothing here. */
+   half turn h = bit 31 (sin(pi/2 (u + 2)) = -sin(pi/2 u)), the segment j
+   (the next bits: u mod 2 in [j, j + 1) times the segment width) and tau
+   (the bits below, 2^-15, the position in the segment) give sin(pi/2 u) =
+   +-P_j(tau), a polynomial per segment from tables of 16 or 32 entries
+   (one register each for vpermw; see the provenance).  k[] holds the
+   multipliers; bw changes nothing here. */
 /* C0[j]: P_j(0) - 1/2, 2^-16 units (fitted, see the provenance) */
-static const int32_t pf_sin_q12_q14_c0[32] = {
-    -32768, -26345, -19983, -13744, -7689, -1875, 3642, 8807,
-    13573, 17892, 21723, 25030, 27779, 29946, 31509, 32453,
-    32767, 32453, 31509, 29946, 27779, 25030, 21723, 17892,
-    13573, 8808, 3642, -1875, -7688, -13744, -19983, -26344,
+static const int32_t pf_sin_q12_q14_c0[16] = {
+    -32768, -19983, -7688, 3642, 13573, 21723, 27779, 31510,
+    32767, 31509, 27779, 21723, 13573, 3641, -7689, -19982,
 };
 /* C1[j], 2^-16 units */
-static const int32_t pf_sin_q12_q14_c1[32] = {
-    6440, 6410, 6318, 6163, 5952, 5682, 5354, 4981,
-    4554, 4087, 3579, 3036, 2466, 1869, 1255, 632,
-    3, -635, -1258, -1868, -2462, -3037, -3578, -4087,
-    -4554, -4981, -5355, -5678, -5952, -6162, -6314, -6411,
+static const int32_t pf_sin_q12_q14_c1[16] = {
+    12867, 12623, 11888, 10699, 9101, 7152, 4927, 2511,
+    4, -2510, -4923, -7148, -9100, -10697, -11888, -12624,
 };
 /* C2[j], 2^-16 units */
-static const int32_t pf_sin_q12_q14_c2[32] = {
-    -16, -47, -79, -107, -137, -165, -188, -215,
-    -235, -256, -272, -287, -299, -306, -311, -318,
-    -318, -309, -305, -299, -288, -270, -253, -232,
-    -212, -185, -162, -136, -104, -77, -48, -13,
+static const int32_t pf_sin_q12_q14_c2[16] = {
+    3, -248, -483, -702, -897, -1055, -1175, -1244,
+    -1271, -1243, -1172, -1055, -896, -704, -483, -244,
+};
+/* C3[j], 2^-16 units */
+static const int32_t pf_sin_q12_q14_c3[16] = {
+    -84, -80, -75, -66, -54, -41, -22, -10,
+    9, 23, 39, 53, 65, 71, 77, 82,
 };
 PF_FX_INLINE int16_t pf_sin_q12_q14_inline(int16_t x, const int16_t *k, int bw)
 {
@@ -261,11 +262,12 @@ PF_FX_INLINE int16_t pf_sin_q12_q14_inline(int16_t x, const int16_t *k, int bw)
     uint32_t pl = (uint32_t)ax * (uint16_t)k[0];
     uint16_t lo = (uint16_t)pl;
     uint16_t hi = (uint16_t)((pl >> 16) + (uint32_t)ax * (uint16_t)k[1]);
-    /* segment j = bits 30..26, tau = bits 25..11 (2^-15) */
-    unsigned j = (unsigned)(hi >> 10) & 31u;
-    int16_t t = (int16_t)((((uint32_t)hi << 5) | ((uint32_t)lo >> 11)) & 0x7fffu);
-    /* P = C0 + tau (C1 + tau C2), 2^-16 units offset by 1/2 */
-    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)pf_sin_q12_q14_c2[j]) + pf_sin_q12_q14_c1[j]);
+    /* segment j = bits 30..27, tau = bits 26..12 (2^-15) */
+    unsigned j = (unsigned)(hi >> 11) & 15u;
+    int16_t t = (int16_t)((((uint32_t)hi << 4) | ((uint32_t)lo >> 12)) & 0x7fffu);
+    /* P = C0 + tau (C1 + tau (C2 + tau C3)), 2^-16 units offset by 1/2 */
+    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)pf_sin_q12_q14_c3[j]) + pf_sin_q12_q14_c2[j]);
+    q = (int16_t)(pf_fx_mulhrs(t, q) + pf_sin_q12_q14_c1[j]);
     int16_t p = (int16_t)(pf_fx_mulhrs(t, q) + pf_sin_q12_q14_c0[j]);
     int16_t r = (int16_t)(pf_fx_mulhrs(p, k[2]) + 8192); /* round((P + 2^15) 2^-2) */
     int16_t sg = pf_fx_sgn16((int16_t)(hi ^ (uint16_t)x)); /* the half turn, and x < 0 */
@@ -280,16 +282,16 @@ PF_FX_INLINE int16_t pf_sin_q12_q14_inline(int16_t x, const int16_t *k, int bw)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
 extern int16_t pf_sin_q12_q14(int16_t x); /* the scalar form, for the last n % 32 */
-/* 32 table entries as 16-bit words, for vpermw */
+/* the 16 entries as 16-bit words, twice (vpermw reads 5 index bits) */
 __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_sin_q12_q14_w16(const int32_t *t)
 {
-    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
-                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
+    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
 }
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_sin_q12_q14_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
     const __m512i c0 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c0), c1 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c1), c2 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c2);
+    const __m512i c3 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c3);
     const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2), kr = _mm512_set1_epi16(8192);
     const __m512i ho = _mm512_set1_epi16(0), m15 = _mm512_set1_epi16(0x7fff);
     const __m512i half = _mm512_set1_epi16(8192), zero = _mm512_setzero_si512();
@@ -300,11 +302,12 @@ static void pf_sin_q12_q14_array_bw(const int16_t *restrict x, int16_t *restrict
         __m512i lo = _mm512_mullo_epi16(ax, kl);
         __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
         (void)ho;
-        __m512i j = _mm512_srli_epi16(hi, 10); /* vpermw reads the low 5 bits */
-        /* (hi << 5 | lo >> 11) & 0x7fff: one vpternlog */
-        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 5), _mm512_srli_epi16(lo, 11), m15, 0xa8);
-        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),
-                                     _mm512_permutexvar_epi16(j, c1));
+        __m512i j = _mm512_srli_epi16(hi, 11); /* vpermw reads the low 5 bits */
+        /* (hi << 4 | lo >> 12) & 0x7fff: one vpternlog */
+        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 4), _mm512_srli_epi16(lo, 12), m15, 0xa8);
+        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),
+                                     _mm512_permutexvar_epi16(j, c2));
+        q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));
         __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
         __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
         __mmask32 neg = _mm512_movepi16_mask(_mm512_xor_si512(hi, xv));
@@ -317,36 +320,33 @@ static void pf_sin_q12_q14_array_bw(const int16_t *restrict x, int16_t *restrict
 #endif
 
 /* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: each table is
-   four registers, its low and its high bytes for j < 16 and j >= 16 (byte
-   planes); a lookup is four vpshufb whose indices have bit 7 set (the
-   byte zeroed) where the plane or the half is not theirs, merged by vpor.
-   The sign by vpsignw.  The same values. */
+   its low and its high bytes (byte planes) in two registers; a lookup is two
+   vpshufb whose indices have bit 7 set (the byte zeroed) where the plane
+   is not theirs, merged by vpor.  The sign by vpsignw.  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"))) static inline __m256i pf_sin_q12_q14_lk(const __m256i *p, __m256i ia,
-                                                                    __m256i ib, __m256i ja, __m256i jb)
+                                                                    __m256i ib)
 {
-    return _mm256_or_si256(_mm256_or_si256(_mm256_shuffle_epi8(p[0], ia), _mm256_shuffle_epi8(p[1], ib)),
-                           _mm256_or_si256(_mm256_shuffle_epi8(p[2], ja), _mm256_shuffle_epi8(p[3], jb)));
+    return _mm256_or_si256(_mm256_shuffle_epi8(p[0], ia), _mm256_shuffle_epi8(p[1], ib));
 }
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_sin_q12_q14_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    const int32_t *tab[3] = {pf_sin_q12_q14_c0, pf_sin_q12_q14_c1, pf_sin_q12_q14_c2};
-    uint8_t b[3][4][16]; /* per table: low bytes of 0..15, 16..31, high bytes of 0..15, 16..31 */
-    for (int a = 0; a < 3; a++)
-        for (int k = 0; k < 32; k++) {
-            b[a][k >> 4][k & 15] = (uint8_t)(uint32_t)tab[a][k];
-            b[a][2 + (k >> 4)][k & 15] = (uint8_t)((uint32_t)tab[a][k] >> 8);
+    const int32_t *tab[4] = {pf_sin_q12_q14_c0, pf_sin_q12_q14_c1, pf_sin_q12_q14_c2, pf_sin_q12_q14_c3};
+    uint8_t b[4][2][16]; /* per table: the low bytes, the high bytes */
+    for (int a = 0; a < 4; a++)
+        for (int k = 0; k < 16; k++) {
+            b[a][0][k] = (uint8_t)(uint32_t)tab[a][k];
+            b[a][1][k] = (uint8_t)((uint32_t)tab[a][k] >> 8);
         }
-    __m256i c[3][4];
-    for (int a = 0; a < 3; a++)
-        for (int p = 0; p < 4; p++)
+    __m256i c[4][2];
+    for (int a = 0; a < 4; a++)
+        for (int p = 0; p < 2; p++)
             c[a][p] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[a][p]));
     const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2), kr = _mm256_set1_epi16(8192);
-    const __m256i ho = _mm256_set1_epi16(0), m15 = _mm256_set1_epi16(0x7fff), m31 = _mm256_set1_epi16(31);
+    const __m256i ho = _mm256_set1_epi16(0), m15 = _mm256_set1_epi16(0x7fff);
     const __m256i half = _mm256_set1_epi16(8192), one = _mm256_set1_epi16(1);
-    const __m256i ka = _mm256_set1_epi16((short)0x8070), kb = _mm256_set1_epi16(0x0080);
-    const __m256i kc = _mm256_set1_epi16(0x7080), kd = _mm256_set1_epi16((short)0x8000);
+    const __m256i ka = _mm256_set1_epi16((short)0x8000), kb = _mm256_set1_epi16(0x0080);
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
         __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
@@ -354,15 +354,15 @@ static void pf_sin_q12_q14_array_avx2(const int16_t *restrict x, int16_t *restri
         __m256i lo = _mm256_mullo_epi16(ax, kl);
         __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_mullo_epi16(ax, kh));
         (void)ho;
-        /* j in the low byte: + 0x70 keeps bit 7 clear for j < 16 (0x8070: the high
-           byte's bit 7 set), xor 0x80 flips that for j >= 16; the same in the
-           high byte for the high bytes' planes */
-        __m256i jl = _mm256_and_si256(_mm256_srli_epi16(hi, 10), m31);
-        __m256i ia = _mm256_add_epi16(jl, ka), ib = _mm256_xor_si256(ia, kb);
-        __m256i ja = _mm256_add_epi16(_mm256_slli_epi16(jl, 8), kc), jb = _mm256_xor_si256(ja, kd);
-        __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, 5), _mm256_srli_epi16(lo, 11)), m15);
-        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, pf_sin_q12_q14_lk(c[2], ia, ib, ja, jb)), pf_sin_q12_q14_lk(c[1], ia, ib, ja, jb));
-        __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_sin_q12_q14_lk(c[0], ia, ib, ja, jb));
+        /* hi >> 11 = h 16 + j in the low byte (vpshufb reads bits 3..0, bit 7 clear),
+           0x80 in the high byte; ib: hi >> 3, the same in the high byte, 0x80 in the
+           low one */
+        __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);
+        __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);
+        __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, 4), _mm256_srli_epi16(lo, 12)), m15);
+        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, pf_sin_q12_q14_lk(c[3], ia, ib)), pf_sin_q12_q14_lk(c[2], ia, ib));
+        q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_sin_q12_q14_lk(c[1], ia, ib));
+        __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_sin_q12_q14_lk(c[0], ia, ib));
         __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(p, kr), half);
         r = _mm256_sign_epi16(r, _mm256_or_si256(_mm256_xor_si256(hi, xv), one)); /* negated when h xor x < 0 */
         _mm256_storeu_si256((__m256i *)(y + i), r);
