@@ -197,18 +197,22 @@ static int prepare3(fx_gen *G, double Xmax, int is_cos, double L)
  * (pmullw) and hi = floor(|x| KL 2^-16) + |x| KH + HOFF (pmulhuw, pmullw),
  * both exact, the only error |x| |K - 2/pi 2^(30-Ei)| 2^-30.  hi's top bit
  * is the half turn (sin(pi/2 (u + 2)) = -sin(pi/2 u)), its next five the
- * segment j of [0, 2) (width 1/16), and t = bits 25..11 of U the position
- * in it (tau = t 2^-15 in [0, 1), the rest of u truncated: < 2^-19).  Per
- * segment a quadratic P_j(tau) = C0 + tau (C1 + tau C2) in 2^-16 units,
- * offset by 1/2 (P + 2^15 = sin 2^16, so [0, 1) fits an int16_t): two
- * rounding multiply-highs (pmulhrsw), the three coefficients from 32-entry
- * tables, one zmm register each (vpermw); on AVX2 four registers each,
- * the low and high bytes of entries 0..15 and 16..31, a lookup four
- * vpshufb merged by vpor (see emit16_4).  Result round((P + 2^15)
+ * segment j of [0, 2) (16 of width 1/8: its next four bits; or 32 of
+ * width 1/16: five), and the 15 bits of U below it the position in it
+ * (tau = t 2^-15 in [0, 1), the rest of u truncated: < 2^-18 or 2^-19).
+ * Per segment a cubic P_j(tau) = C0 + tau (C1 + tau (C2 + tau C3)) (16
+ * segments) or a quadratic (32) in 2^-16 units, offset by 1/2 (P + 2^15 =
+ * sin 2^16, so [0, 1) fits an int16_t): rounding multiply-highs
+ * (pmulhrsw), the coefficients from tables of 16 or 32 entries, one zmm
+ * register each (vpermw); on AVX2 the low and high bytes of 16 entries per
+ * register, a lookup two vpshufb merged by vpor (four, and three vpor, for
+ * 32 entries; see emit16_4).  The cubics are taken where their bound is
+ * below 1 lsb (every default pair; on AVX2 they take 0.23 ns/elem, the
+ * quadratics 0.32), else the quadratics.  Result round((P + 2^15)
  * 2^(Eo-16)) = pmulhrsw(P, 2^(Eo-1)) + 2^(Eo-1), then the sign: the half
  * turn's, and for sin x's.
- * Coefficients: Chebyshev interpolation of sin(pi/2 (j + tau)/16) at three
- * nodes, rounded, then the integers within a few units of it whose emitted
+ * Coefficients: Chebyshev interpolation of sin(pi/2 (j + tau) 2/ns) at
+ * ord + 1 nodes, rounded, then the integers within a few units of it whose emitted
  * steps give the smallest largest error over the segment's inputs (every
  * 16-bit input falls in one segment: the search sees them all) against
  * sinl/cosl (long double, error far below 2^-40); no step may leave int16_t.
@@ -698,8 +702,8 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int is_cos)
     G->alt_formats[0] = G->order_text[0] = G->alt_arith[0] = 0;
     G->alt_domain[0] = G->alt_order[0] = G->alt_method[0] = G->alt_con[0] = G->alt_poly[0] = G->bound_note[0] = 0;
     /* fast sin: the 16-entry quadratic tables (kind 5), else the Horner
-       kernel (kind 4's 32-entry tables take 0.32 ns/elem on AVX2, Horner
-       0.16).  Fast cos keeps the Horner kernel: cos is even, so its Horner
+       kernel (kind 4, the exact variant's tables, takes 0.23 ns/elem on
+       AVX2, Horner 0.16).  Fast cos keeps the Horner kernel: cos is even, so its Horner
        loop has no sign step, and on AVX2 it measured 0.132 ns/elem against
        0.137 for kind 5 (23 vector instructions per 16 lanes, 9 of them the
        three lookups); with AVX-512 kind 5 would be 0.09 against 0.12 */
