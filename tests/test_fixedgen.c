@@ -63,8 +63,10 @@ static void test_sin_example(void **st)
     snprintf(cmdline, sizeof cmdline, " * Regenerate:  pfmathgen %s -o %s\n", args, out);
     assert_non_null(strstr(src, cmdline));
     assert_non_null(strstr(src, "sin for fixed<15,12> -> fixed<15,14> (int16_t -> int16_t), exact variant"));
-    assert_non_null(strstr(src, " * Domain:      sin(pi/2 t) on t in [0, 1]"));
-    assert_non_null(strstr(src, " * Method:      minimax absolute error"));
+    /* the register-table kernel (fixed_trig.c, kind 4): 16 or 32 segments */
+    assert_non_null(strstr(src, " * Domain:      sin(pi/2 (j + tau) 2^-"));
+    assert_non_null(strstr(src, "on tau in [0, 1)"));
+    assert_non_null(strstr(src, " * Method:      per segment"));
     assert_non_null(strstr(src, " * Constraints: "));
     assert_non_null(strstr(src, " * Formats:     "));
     assert_non_null(strstr(src, " * Sweep:       max 0."));
@@ -182,6 +184,15 @@ static int json_int(const char *s, const char *key)
     return p ? atoi(p + strlen(key)) : -1;
 }
 
+/* n of a kernel text's "n-entry tables" (0 if none) */
+static int entries(const char *k)
+{
+    const char *e = strstr(k, "-entry");
+    while (e && e > k && e[-1] >= '0' && e[-1] <= '9')
+        e--;
+    return e ? atoi(e) : 0;
+}
+
 static void test_fast_variant(void **st)
 {
     (void)st;
@@ -196,12 +207,32 @@ static void test_fast_variant(void **st)
         int of = json_int(R.out, "\"order\": ");
         assert_int_equal(json_int(R.out, "\"over_fast\": "), 0);
         assert_non_null(strstr(R.out, "\"exhaustive\": true"));
+        /* a kernel without one polynomial (sin's register tables): its text */
+        char kf[400] = "";
+        const char *k = strstr(R.out, "\"kernel\": \"");
+        if (k)
+            snprintf(kf, sizeof kf, "%.*s", (int)strcspn(k + 11, "\""), k + 11);
         snprintf(a, sizeof a, "%s --json", types[i]);
         tu_runs("pfmathgen", a, &R);
         assert_int_equal(R.status, 0);
         int oe = json_int(R.out, "\"order\": ");
         print_message("%s: fast order %d, exact order %d\n", types[i], of, oe);
-        assert_true(of > 0 && of < oe);
+        char ke[400] = "";
+        k = strstr(R.out, "\"kernel\": \"");
+        if (k)
+            snprintf(ke, sizeof ke, "%.*s", (int)strcspn(k + 11, "\""), k + 11);
+        if (oe < 0 && ke[0]) { /* exact: sin's register tables, a polynomial per segment */
+            print_message("  exact kernel: %s\n", ke);
+            assert_non_null(strstr(ke, " per segment"));
+            if (of < 0 && kf[0]) { /* fast: tables too, fewer entries or a lower degree */
+                print_message("  fast kernel: %s\n", kf);
+                assert_non_null(strstr(kf, " per segment"));
+                assert_true(entries(kf) > 0 && entries(kf) <= entries(ke));
+                assert_true(entries(kf) < entries(ke) || atoi(kf) < atoi(ke));
+            } else
+                assert_true(of > 0);
+        } else
+            assert_true(of > 0 && of < oe);
     }
 }
 

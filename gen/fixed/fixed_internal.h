@@ -53,6 +53,15 @@ typedef struct {               /* sin, cos */
     int64_t th, tl;            /* kind 3, 32-bit lanes: z = x TH (+ (x TL) >> 16) mod 2^32 */
     int two;                   /* kind 3: the TL product is used */
     int ey;                    /* kind 3: y = s T(s) in 2^-ey units */
+    /* kind 4, 16-bit lanes, the register-table kernel (fixed_trig.c) */
+    int64_t kl, kh, hoff;      /* U = |x| (KH 2^16 + KL) + HOFF 2^16 mod 2^32 */
+    int16_t tc0[32], tc1[32], tc2[32], tc3[32]; /* per-segment polynomial, 2^-16 units */
+    int tns, tord;             /* kind 4: 16 segments of cubics or 32 of quadratics */
+    double terr, tred;         /* pre-rounding error (output lsb), phase error (quarter turns) */
+    /* kind 5 (fast): piecewise polynomial of degree ford on 2^fnb segments, at the output's lsb */
+    int fnb, ford;
+    int16_t fc0[64], fc1[64], fc2[64];
+    double fR, fA, fworst;     /* the bound R |f| + A (+ 1/2 lsb); largest error / allowed */
 } fx_trig_red;
 
 typedef struct {               /* exp, exp2 */

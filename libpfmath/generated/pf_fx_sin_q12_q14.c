@@ -4,43 +4,44 @@
  * Regenerate:  pfmathgen --func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' -o libpfmath/generated/pf_fx_sin_q12_q14.c
  * Input:       int16_t x, value x 2^-12 in [-8, 7.99975586]
  * Output:      int16_t y, value y 2^-14 in [-2, 1.99993896]
- * Reduction:   u = x 2/pi mod 4 in 2^-30 units, a uint32_t: z = x 166886 + 0xc0000000, 166886 = 
- *              round(2/pi 2^18) mod 2^32 (bits of 2/pi that only add multiples of 4 dropped, 
- *              MPFR; one 32x32 -> 32-bit product); phase w = (u + 1) mod 4; fold to |v| in [0, 
- *              1] (v = w - 1 or 3 - w, 2^-30 units) and the sign of v, exactly; error of v <= 
- *              1.636e-06
- * Domain:      sin(pi/2 t) on t in [0, 1] (odd polynomial t P(t^2))
- * Order:       7 (4 fixed-point coefficients; int32_t words: 32-bit lanes, 32x32 -> 32-bit 
- *              products)
- * Lanes:       every step in 32-bit lanes (16 per AVX-512 vector), each product a 32x32 -> 
- *              32-bit low half (vpmulld) that cannot wrap, no 64-bit lane: the exact bound 
- *              needs about 20 fraction bits of the phase (16-bit lanes hold 14, whose rounding 
- *              alone is a quarter lsb here) and about 33 bits for |v| P, so no step fits 16-bit 
- *              words
- * Method:      minimax absolute error (nlopt SLSQP, epigraph form, from the least-squares fit), 
- *              coefficients rounded to their formats, from the 32-bit-lane kernel's own rule 
- *              (fixed_trig.c, fit16: bounds of the partial sums of the real, then of the 
- *              rounded, coefficients) by pin-and-refit
- * Constraints: none
- * Formats:     |v| in 2^-30 units split as vh 2^-15 + vl 2^-30; s = v^2 to 2^-30, then s16 = s 
- *              rounded to 2^-16 (|error| <= 7.631e-06); c1 ufixed<32,31>, c3 fixed<15,15>, c5 
- *              fixed<15,18>, c7 fixed<15,22> (T's Horner in s16, each step floored to its 
- *              coefficient's lsb); y = s T fixed<15,18>; P = c1 + c3 s16 + s16 y summed at 
- *              2^-31 in a uint32_t, every product of two operands whose bounds keep it below 
- *              2^31 (signed) or 2^32 (unsigned): no wrap; P16 = round(P 2^16) (its 2^-17 folded 
- *              into c1); |v| P = vh P16 + floor(vl P16 2^-15) at 2^-31 in a uint32_t; 
- *              arithmetic error <= 2.143e-05
- * Polynomial:  max absolute error 9.276e-07 (2^-20.04) at t = 0.723522427
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.4085 LSB (polynomial 0.0152, 
- *              arithmetic and reduction 0.3933) = 0.9085 LSB
- * Sweep:       max 0.7221 LSB at x = -19551 (-4.77319336), mean 0.2514 LSB; exhaustive: all 
+ * Reduction:   on |x| (sin(-x) = -sin(x), cos(-x) = cos(x), exactly); u = |x| 2/pi in quarter 
+ *              turns, U = u 2^30 mod 2^32 = |x| K, K = round(2/pi 2^18) = 166886 = 2 2^16 + 
+ *              35814 (MPFR), as two 16-bit words: lo = |x| 35814 mod 2^16 (pmullw), hi = 
+ *              floor(|x| 35814 2^-16) + |x| 2 (pmulhuw, pmullw), exact; |error of u| <= 
+ *              1.636e-06; half turn h = bit 31 of U, segment j = bits 30..27 (u mod 2 in [j, j 
+ *              + 1) 2^-3), tau = bits 26..12 2^-15 in [0, 1) (the rest truncated, < 2^-18 
+ *              quarter turns)
+ * Domain:      sin(pi/2 (j + tau) 2^-3) on tau in [0, 1) for each of 16 segments j of the half 
+ *              turn [0, 2) quarter turns (the other half by the sign)
+ * Order:       3 per segment (P_j(tau) = C0 + tau (C1 + tau (C2 + tau C3))), four 16-entry 
+ *              tables of int16_t; int16_t words: 16-bit lanes
+ * Lanes:       every step in 16-bit lanes; the lookups (vpermw, four registers of 16 entries 
+ *              twice) in the AVX-512BW loop by intrinsics (x86-64-v4); AVX2 intrinsics 
+ *              (x86-64-v3): each lookup two vpshufb on byte planes merged by vpor; the default 
+ *              clone, scalar form: the same steps in plain C (32-bit table loads)
+ * Method:      per segment: the cubic through the four Chebyshev nodes of [0, 1] (long double), 
+ *              rounded to 2^-16, then the integers within (+-3, +-3, +-3, +-2) of it with the 
+ *              smallest largest error of the emitted steps over the segment's inputs (every 
+ *              16-bit input, against sinl/cosl), no step leaving int16_t; cubics on 16 segments 
+ *              where their bound is below 1 lsb, else quadratics on 32
+ * Constraints: none (the sign fold makes sin exactly odd and cos exactly even)
+ * Formats:     tau int16_t at 2^-15 in [0, 2^15); C0..C3, q3 = C2 + pmulhrsw(tau, C3) and q = 
+ *              C1 + pmulhrsw(tau, q3) int16_t at 2^-16; P = C0 + pmulhrsw(tau, q) int16_t at 
+ *              2^-16 offset by 1/2 (sin = (P + 2^15) 2^-16); result pmulhrsw(P, 2^13) + 2^13 = 
+ *              round(sin 2^14), ties up, then negated when h (xor x < 0, for sin)
+ * Polynomial:  largest pre-rounding error of the emitted steps 0.4712 lsb (all 2^16 inputs, 
+ *              against sinl/cosl: segment fit, coefficient and multiply-high roundings, phase)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.4712 LSB (polynomial 0.0000, 
+ *              arithmetic and reduction 0.4712) = 0.9712 LSB; taken over every input from the 
+ *              emitted integer steps (the register-table kernel)
+ * Sweep:       max 0.9370 LSB at x = -5823 (-1.42163086), mean 0.2767 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
  * Target:      exact: below 1 LSB of the output for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); roundings to nearest with ties 
- *              up, and floors where the error bound counts a whole lsb; bit-identical under any 
- *              compiler flags
+ * Arithmetic:  integers only (no floating point, no <math.h>); the phase exact but for K's 
+ *              rounding, tau truncated, the multiply-highs and the result rounded to nearest, 
+ *              ties up; bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -224,68 +225,158 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-
-/* 32-bit lane helpers of the exact sin/cos kernel (gen/fixed/fixed_trig.c, kind 3).
-   GCC and Clang define >> of a negative int as arithmetic (floor); other
-   compilers get the same values from unsigned arithmetic. */
-
-/* floor(z / 2^d), 1 <= d <= 31 */
-PF_FX_INLINE int32_t pf_fx_sra32(int32_t z, int d)
-{
-#if defined(__GNUC__)
-    return z >> d;
-#else
-    return (int32_t)(((uint32_t)z + 0x80000000u) >> d) - (int32_t)(0x80000000u >> d);
-#endif
-}
-
-/* |u read as an int32_t| as a uint32_t (2^31 for 0x80000000): the smaller
-   of u and 2^32 - u, two vector instructions (vpsubd, vpminud) where the
-   signed forms cost a compare and a masked subtract, or abs(INT32_MIN) */
-PF_FX_INLINE uint32_t pf_fx_uabs32(uint32_t u)
-{
-    uint32_t m = 0u - u;
-    return u < m ? u : m;
-}
-/* sin in fixed point, in 32-bit lanes.  u = x 2/pi counts quarter turns;
-   the phase w = (u + 1) mod 4 is a uint32_t with 30 fraction bits, and
-   sin(x) = sin(pi/2 (w - 1)).  Fold: v = w - 1 on [0, 2), 3 - w on
-   [2, 4) (sin(pi/2 v) = sin(pi/2 (2 - v))), so v is in [-1, 1] and
-   sin(x) = sin(pi/2 v) = v P(v^2).  k[] holds the constants; bw (the AVX-512BW form, see
-   fx_tail16.c.in) changes nothing here. */
+/* sin in fixed point, in 16-bit lanes, from tables that fit registers.
+   u = |x| 2/pi counts quarter turns (for cos, u + 1: cos(x) = sin(pi/2
+   (u + 1))); U = u 2^30 mod 2^32 is held as two 16-bit words hi:lo.  The
+   half turn h = bit 31 (sin(pi/2 (u + 2)) = -sin(pi/2 u)), the segment j
+   (the next bits: u mod 2 in [j, j + 1) times the segment width) and tau
+   (the bits below, 2^-15, the position in the segment) give sin(pi/2 u) =
+   +-P_j(tau), a polynomial per segment from tables of 16 or 32 entries
+   (one register each for vpermw; see the provenance).  k[] holds the
+   multipliers; bw changes nothing here. */
+/* C0[j]: P_j(0) - 1/2, 2^-16 units (fitted, see the provenance) */
+static const int32_t pf_sin_q12_q14_c0[16] = {
+    -32768, -19983, -7688, 3642, 13573, 21723, 27779, 31510,
+    32767, 31509, 27779, 21723, 13573, 3641, -7689, -19982,
+};
+/* C1[j], 2^-16 units */
+static const int32_t pf_sin_q12_q14_c1[16] = {
+    12867, 12623, 11888, 10699, 9101, 7152, 4927, 2511,
+    4, -2510, -4923, -7148, -9100, -10697, -11888, -12624,
+};
+/* C2[j], 2^-16 units */
+static const int32_t pf_sin_q12_q14_c2[16] = {
+    3, -248, -483, -702, -897, -1055, -1175, -1244,
+    -1271, -1243, -1172, -1055, -896, -704, -483, -244,
+};
+/* C3[j], 2^-16 units */
+static const int32_t pf_sin_q12_q14_c3[16] = {
+    -84, -80, -75, -66, -54, -41, -22, -10,
+    9, 23, 39, 53, 65, 71, 77, 82,
+};
 PF_FX_INLINE int16_t pf_sin_q12_q14_inline(int16_t x, const int16_t *k, int bw)
 {
     (void)bw;
-    /* phase: z = w - 2 = (u + 1) mod 4 - 2, u = x 2/pi in 2^-30 units (mod 2^32) */
-    int32_t xi = x;
-    uint32_t z = (uint32_t)xi * 166886u + 0xc0000000u;
-    /* fold: v = 1 - |w - 2| in [-1, 1], 2^-30 units (mod 2^32); a = |v|, the sign of v kept in b */
-    uint32_t b = 0x40000000u - pf_fx_uabs32(z);
-    uint32_t a = pf_fx_uabs32(b); /* |v| in [0, 2^30] */
-    /* s = v^2: a = vh 2^15 + vl, s = vh^2 + floor(vh vl 2^-14) in 2^-30 units (vl^2 dropped) */
-    uint32_t vh = a >> 15, vl = a & 0x7fffu; /* vh <= 2^15, vl < 2^15 */
-    uint32_t s = vh * vh + ((vh * vl) >> 14);
-    int32_t s16 = (int32_t)((s + 0x2000u) >> 14); /* s rounded to 2^-16, <= 2^16 */
-    /* T(s) = c5 + c7 s + ...: Horner in s16, each step floored to its coefficient's lsb */
-    int32_t q = k[0]; /* c7 = -0.0043511390686, 2^-22 units */
-    q = pf_fx_sra32(q * s16, 20) + k[1]; /* c5 = 0.0794639587402, 2^-18 units */
-    int32_t y = pf_fx_sra32(q * s16, 16); /* s T, 2^-18 units */
-    /* P = c1 + c3 s + s y at 2^-31, in [1, 2), plus 2^-17 (P16's rounding): modular uint32_t sums */
-    uint32_t p = 3373264395u /* c1 = 1.57079101121, + 0x4000 */ + (uint32_t)(k[2] * s16) /* c3 = -0.645904541016 */
-               + (uint32_t)pf_fx_sra32(y * s16, 3);
-    uint32_t p16 = p >> 15; /* P rounded to 2^-16, < 2^16.66 */
-    /* |v| P at 2^-31, <= 2^31 (1 + its error): vh p16 and vl p16 < 2^15 2^16.66 */
-    uint32_t r31 = vh * p16 + ((vl * p16) >> 15);
-    uint32_t r = (r31 + 0x10000u) >> 17; /* rounded once to the output's lsb */
-    int32_t rs = b >= 0x80000000u ? -(int32_t)r : (int32_t)r; /* the sign of v */
-    return (int16_t)rs;
+    /* U = |x| K mod 2^32 (u 2^30, u = |x| 2/pi) as hi 2^16 + lo, exact */
+    uint16_t ax = pf_fx_abs16(x); /* |x| */
+    uint32_t pl = (uint32_t)ax * (uint16_t)k[0];
+    uint16_t lo = (uint16_t)pl;
+    uint16_t hi = (uint16_t)((pl >> 16) + (uint32_t)ax * (uint16_t)k[1]);
+    /* segment j = bits 30..27, tau = bits 26..12 (2^-15) */
+    unsigned j = (unsigned)(hi >> 11) & 15u;
+    int16_t t = (int16_t)((((uint32_t)hi << 4) | ((uint32_t)lo >> 12)) & 0x7fffu);
+    /* P = C0 + tau (C1 + tau (C2 + tau C3)), 2^-16 units offset by 1/2 */
+    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)pf_sin_q12_q14_c3[j]) + pf_sin_q12_q14_c2[j]);
+    q = (int16_t)(pf_fx_mulhrs(t, q) + pf_sin_q12_q14_c1[j]);
+    int16_t p = (int16_t)(pf_fx_mulhrs(t, q) + pf_sin_q12_q14_c0[j]);
+    int16_t r = (int16_t)(pf_fx_mulhrs(p, k[2]) + 8192); /* round((P + 2^15) 2^-2) */
+    int16_t sg = pf_fx_sgn16((int16_t)(hi ^ (uint16_t)x)); /* the half turn, and x < 0 */
+    return (int16_t)((r ^ sg) - sg);
 }
+
+/* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn
+   the table lookups into vpermw: the array form runs this loop on a CPU
+   with x86-64-v4 (see its dispatch), the rest of the array and the other
+   clones use the scalar steps above.  The same values (pfmathgen sweeps the
+   array form on its machine against the scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#include <immintrin.h>
+extern int16_t pf_sin_q12_q14(int16_t x); /* the scalar form, for the last n % 32 */
+/* the 16 entries as 16-bit words, twice (vpermw reads 5 index bits) */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_sin_q12_q14_w16(const int32_t *t)
+{
+    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
+}
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_sin_q12_q14_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    const __m512i c0 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c0), c1 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c1), c2 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c2);
+    const __m512i c3 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c3);
+    const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2), kr = _mm512_set1_epi16(8192);
+    const __m512i ho = _mm512_set1_epi16(0), m15 = _mm512_set1_epi16(0x7fff);
+    const __m512i half = _mm512_set1_epi16(8192), zero = _mm512_setzero_si512();
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        __m512i xv = _mm512_loadu_si512(x + i);
+        __m512i ax = _mm512_abs_epi16(xv);
+        __m512i lo = _mm512_mullo_epi16(ax, kl);
+        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
+        (void)ho;
+        __m512i j = _mm512_srli_epi16(hi, 11); /* vpermw reads the low 5 bits */
+        /* (hi << 4 | lo >> 12) & 0x7fff: one vpternlog */
+        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 4), _mm512_srli_epi16(lo, 12), m15, 0xa8);
+        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),
+                                     _mm512_permutexvar_epi16(j, c2));
+        q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));
+        __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
+        __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
+        __mmask32 neg = _mm512_movepi16_mask(_mm512_xor_si512(hi, xv));
+        r = _mm512_mask_sub_epi16(r, neg, zero, r);
+        _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_sin_q12_q14(x[i]);
+}
+#endif
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: each table is
+   its low and its high bytes (byte planes) in two registers; a lookup is two
+   vpshufb whose indices have bit 7 set (the byte zeroed) where the plane
+   is not theirs, merged by vpor.  The sign by vpsignw.  The same values. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+__attribute__((target("arch=x86-64-v3"))) static inline __m256i pf_sin_q12_q14_lk(const __m256i *p, __m256i ia,
+                                                                    __m256i ib)
+{
+    return _mm256_or_si256(_mm256_shuffle_epi8(p[0], ia), _mm256_shuffle_epi8(p[1], ib));
+}
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_sin_q12_q14_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    const int32_t *tab[4] = {pf_sin_q12_q14_c0, pf_sin_q12_q14_c1, pf_sin_q12_q14_c2, pf_sin_q12_q14_c3};
+    uint8_t b[4][2][16]; /* per table: the low bytes, the high bytes */
+    for (int a = 0; a < 4; a++)
+        for (int k = 0; k < 16; k++) {
+            b[a][0][k] = (uint8_t)(uint32_t)tab[a][k];
+            b[a][1][k] = (uint8_t)((uint32_t)tab[a][k] >> 8);
+        }
+    __m256i c[4][2];
+    for (int a = 0; a < 4; a++)
+        for (int p = 0; p < 2; p++)
+            c[a][p] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[a][p]));
+    const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2), kr = _mm256_set1_epi16(8192);
+    const __m256i ho = _mm256_set1_epi16(0), m15 = _mm256_set1_epi16(0x7fff);
+    const __m256i half = _mm256_set1_epi16(8192), one = _mm256_set1_epi16(1);
+    const __m256i ka = _mm256_set1_epi16((short)0x8000), kb = _mm256_set1_epi16(0x0080);
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i ax = _mm256_abs_epi16(xv);
+        __m256i lo = _mm256_mullo_epi16(ax, kl);
+        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_mullo_epi16(ax, kh));
+        (void)ho;
+        /* hi >> 11 = h 16 + j in the low byte (vpshufb reads bits 3..0, bit 7 clear),
+           0x80 in the high byte; ib: hi >> 3, the same in the high byte, 0x80 in the
+           low one */
+        __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);
+        __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);
+        __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, 4), _mm256_srli_epi16(lo, 12)), m15);
+        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, pf_sin_q12_q14_lk(c[3], ia, ib)), pf_sin_q12_q14_lk(c[2], ia, ib));
+        q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_sin_q12_q14_lk(c[1], ia, ib));
+        __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_sin_q12_q14_lk(c[0], ia, ib));
+        __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(p, kr), half);
+        r = _mm256_sign_epi16(r, _mm256_or_si256(_mm256_xor_si256(hi, xv), one)); /* negated when h xor x < 0 */
+        _mm256_storeu_si256((__m256i *)(y + i), r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_sin_q12_q14(x[i]);
+}
+#endif
 
 /* The constants the body reads (Horner coefficients and multipliers) */
 static const int16_t pf_sin_q12_q14_k[3] = {
-    -18250, /* k[0]: c7 = -0.0043511390686 */
-    20831,  /* k[1]: c5 = 0.0794639587402 */
-    -21165, /* k[2]: c3 = -0.645904541016 */
+    -29722, /* k[0]: KL (as uint16_t): K = KH 2^16 + KL */
+    2,      /* k[1]: KH */
+    8192,   /* k[2]: 2^13: the result's rounding multiply-high */
 };
 
 int16_t pf_sin_q12_q14(int16_t x)
@@ -293,18 +384,39 @@ int16_t pf_sin_q12_q14(int16_t x)
     return pf_sin_q12_q14_inline(x, pf_sin_q12_q14_k, 0);
 }
 
-/* Array form in 32-bit lanes, 16-bit loads and stores:
-   every step in int32_t words with 32x32 -> 32-bit
-   products (vpmulld).  The constants come through a
-   pointer that an empty asm hides from GCC, as in the 16-bit kernels.
-   Built for a baseline without AVX2, it gets one clone per x86-64 level
-   and the widest the CPU has is picked at load time (x86-64-v4: 16
-   lanes, v3: 8, the default: 4); every clone computes the same bits. */
+/* Array form in 16-bit lanes.  The constants come through a pointer that an
+   empty asm hides from GCC: GCC 12 rewrites a product by a known constant
+   into shifts and adds before it looks for the rounding multiply-high, and
+   it drops the narrowing to 16 bits (so finds no pmulhrsw either) when it
+   can bound both operands and prove the product fits; the body therefore
+   feeds pf_fx_mulhrs only loads, constants, its own results and values
+   multiplied by a constant of k[] (a pmullw).  The values are the same, so
+   the scalar and array forms compute the same bits.  Built for a baseline
+   without AVX2, it gets one clone per x86-64 level and the widest the CPU
+   has is picked at load time (x86-64-v4: 32 lanes, v3: 16, the default:
+   8, with pmulhrsw emulated by SSE2 multiplies); integers only, so every
+   clone computes the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_sin_q12_q14_array(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_sin_q12_q14_array_avx2(x, y, n);
+        return;
+    }
+#endif
+    if (__builtin_cpu_supports("x86-64-v4")) {
+        pf_sin_q12_q14_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_sin_q12_q14_array_avx2(x, y, n);
+        return;
+    }
+#endif
     const int16_t *k = pf_sin_q12_q14_k;
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
