@@ -189,6 +189,33 @@ static double ulp_f(double v)
 }
 #define H(v) (0.5 * ulp_f(v))
 
+/* subinterval i's table entries and r range, as the emitted tables hold them */
+typedef struct {
+    float c, lo;          /* INVC, LLO */
+    double ra, rb;        /* r over the subinterval */
+    double hi, full;      /* LHI, -log_b(INVC) */
+} sub_entry;
+static sub_entry sub_of(uint32_t off, int i, int is_log2)
+{
+    sub_entry e;
+    e.c = invcf_of(off, i);
+    rf_range(off, i, &e.ra, &e.rb);
+    logc_split(e.c, is_log2, &e.hi, &e.lo, &e.full);
+    return e;
+}
+
+/* q = c_order r^(order-lo) + ... + c_lo by fmaf Horner at r, and the bound
+   on its rounding errors: half an ulp a step, carried through */
+static void horner_err(const fit_poly *p, int order, int lo, double r, double *qv, double *qe)
+{
+    double q = (double)p->c[order], eq = 0;
+    for (int m = order - 1; m >= lo; m--) {
+        q = q * r + (double)p->c[m];
+        eq = eq * fabs(r) + H(fabs(q) + eq);
+    }
+    *qv = q, *qe = eq;
+}
+
 static int model_common(const fit_poly *p, int order, pf_scheme *sc, int is_log2)
 {
     if (order < 2 || p->c[0] != 0) {
@@ -201,17 +228,12 @@ static int model_common(const fit_poly *p, int order, pf_scheme *sc, int is_log2
     int worst_k = 0, worst_i = 0;
     const int ng = 512;
     for (int i = 0; i < NT; i++) {
-        double ra, rb, hi, full;
-        float lo, c = invcf_of(off, i);
-        rf_range(off, i, &ra, &rb);
-        logc_split(c, is_log2, &hi, &lo, &full);
+        sub_entry se = sub_of(off, i, is_log2);
+        double ra = se.ra, rb = se.rb, hi = se.hi, full = se.full;
+        float lo = se.lo, c = se.c;
         for (int j = 0; j <= ng; j++) {
-            double r = ra + (rb - ra) * j / ng;
-            double q = (double)p->c[order], eq = 0;
-            for (int m = order - 1; m >= 1; m--) {
-                q = q * r + (double)p->c[m];
-                eq = eq * fabs(r) + H(fabs(q) + eq);
-            }
+            double r = ra + (rb - ra) * j / ng, q, eq;
+            horner_err(p, order, 1, r, &q, &eq);
             /* INVC = 1: r = z - 1 is exact (Sterbenz) */
             double g = log1p(r) * PS, er = c == 1.0f ? 0 : H(r) * PS / (1 - fabs(r));
             for (int k = -149; k <= 128; k++) {
@@ -275,10 +297,9 @@ static int model_comp(const fit_poly *p, int order, pf_scheme *sc, int is_log2)
     int worst_k = 0, worst_i = 0;
     const int ng = 512;
     for (int i = 0; i < NT; i++) {
-        double ra, rb, hi, full;
-        float lo, c = invcf_of(off, i);
-        rf_range(off, i, &ra, &rb);
-        logc_split(c, is_log2, &hi, &lo, &full);
+        sub_entry se = sub_of(off, i, is_log2);
+        double ra = se.ra, rb = se.rb, hi = se.hi, full = se.full;
+        float lo = se.lo, c = se.c;
         /* the fast two-sum at k = 0: |LHI| >= |a| (a = r, or r LH rounded) */
         double amax = fmax(fabs(ra), fabs(rb)) * PS * (1 + 0x1p-23);
         if (hi != 0 && fabs(hi) < amax) {
@@ -291,12 +312,8 @@ static int model_comp(const fit_poly *p, int order, pf_scheme *sc, int is_log2)
         /* |plo| <= half an ulp of p = z INVC rounded (p within |r| of 1) */
         double plo = c == 1.0f ? 0 : H(1 + fmax(fabs(ra), fabs(rb)));
         for (int j = 0; j <= ng; j++) {
-            double r = ra + (rb - ra) * j / ng;
-            double q = (double)p->c[order], eq = 0;
-            for (int m = order - 1; m >= 2; m--) {
-                q = q * r + (double)p->c[m];
-                eq = eq * fabs(r) + H(fabs(q) + eq);
-            }
+            double r = ra + (rb - ra) * j / ng, q, eq;
+            horner_err(p, order, 2, r, &q, &eq);
             double r2 = r * r, g = log1p(r) * PS, tg = is_log2 ? g - r * PS : g;
             double epl = (plo * plo + plo * r2 / (1 - fabs(r))) * PS + H(plo) * PS; /* pl: approximation, rounding */
             double ea = is_log2 ? fabs(r) * 0x1p-49 + H(fabs(r) * 0x1p-26) : 0; /* 1/ln2's split, r LL */
