@@ -12,10 +12,20 @@
 
 static tu_run_result R;
 
+/* the tests' files, in a directory of this run's own (mkdtemp in main), so
+   that two runs at once (two clones' make test) do not share paths */
+static char tdir[] = "/tmp/pf-cli-XXXXXX";
+static const char *tpath(char *buf, size_t n, const char *name)
+{
+    snprintf(buf, n, "%s/%s", tdir, name);
+    return buf;
+}
+
 /* args: NULL-terminated; run without a shell, with -o FILE appended */
 static void expect_usage_error_v(const char *const *args)
 {
-    const char *out = "/tmp/pfmathgen-cli-test.c";
+    char ob[64];
+    const char *out = tpath(ob, sizeof ob, "pfmathgen-cli-test.c");
     unlink(out);
     const char *v[40];
     int n = 0;
@@ -114,24 +124,28 @@ static void test_deterministic(void **st)
 {
     (void)st;
     size_t n1, n2;
-    tu_runl(&R, "pfmathgen", "--func", "log", "--order", "10", "-o", "/tmp/pf-det-a.c", NULL);
+    char pa[64], pb[64], cmd[160];
+    tpath(pa, sizeof pa, "pf-det-a.c");
+    tpath(pb, sizeof pb, "pf-det-b.c");
+    tu_runl(&R, "pfmathgen", "--func", "log", "--order", "10", "-o", pa, NULL);
     assert_int_equal(R.status, 0);
-    rename("/tmp/pf-det-a.c", "/tmp/pf-det-b.c");
-    tu_runl(&R, "pfmathgen", "--func", "log", "--order", "10", "-o", "/tmp/pf-det-a.c", NULL);
+    rename(pa, pb);
+    tu_runl(&R, "pfmathgen", "--func", "log", "--order", "10", "-o", pa, NULL);
     assert_int_equal(R.status, 0);
-    char *a = tu_slurp("/tmp/pf-det-a.c", &n1), *b = tu_slurp("/tmp/pf-det-b.c", &n2);
+    char *a = tu_slurp(pa, &n1), *b = tu_slurp(pb, &n2);
     assert_non_null(a);
     assert_non_null(b);
     assert_int_equal(n1, n2);
     assert_memory_equal(a, b, n1);
-    assert_non_null(strstr(a, "pfmathgen --func log --order 10 -o /tmp/pf-det-a.c"));
+    snprintf(cmd, sizeof cmd, "pfmathgen --func log --order 10 -o %s", pa);
+    assert_non_null(strstr(a, cmd));
     assert_non_null(strstr(a, "Order:       10"));
     assert_non_null(strstr(a, "Constraints: p(0) = 0, p'(0) = 1"));
     assert_non_null(strstr(a, "Max relative error"));
     assert_non_null(strstr(a, "Sweep:"));
     assert_non_null(strstr(a, "0x1p+0f,")); /* c1 = 1 in hex-float */
-    unlink("/tmp/pf-det-a.c");
-    unlink("/tmp/pf-det-b.c");
+    unlink(pa);
+    unlink(pb);
     free(a);
     free(b);
 }
@@ -193,6 +207,10 @@ static void test_target_fixed(void **st)
 
 int main(void)
 {
+    if (!mkdtemp(tdir)) {
+        perror("mkdtemp");
+        return 1;
+    }
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_repeated_options),
@@ -202,5 +220,7 @@ int main(void)
         cmocka_unit_test(test_json),
         cmocka_unit_test(test_target_fixed),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    int rc = cmocka_run_group_tests(tests, NULL, NULL);
+    rmdir(tdir);
+    return rc;
 }
