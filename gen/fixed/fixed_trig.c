@@ -1048,7 +1048,7 @@ static void emit16_3(fx_gen *G, pf_buf *body, int is_cos)
 static void tr4_table(pf_buf *b, const char *name, const char *suf, const int16_t *v, int n, const char *what)
 {
     /* 32-bit entries: the plain-C lookups vectorize as 32-bit gathers; the
-       AVX-512 loop narrows them once to one register */
+       AVX-512 loop narrows them once to one register (kinds 4 and 5) */
     pf_printf(b, "/* %s */\nstatic const int32_t %s_%s[%d] = {", what, name, suf, n);
     for (int i = 0; i < n; i++)
         pf_printf(b, "%s%d,", i % 8 ? " " : "\n    ", v[i]);
@@ -1275,13 +1275,6 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
 /* kind 5 (fast, see above): plain-C steps, the AVX-512BW loop (vpermw for
    16 or 32 entries, vpermi2w for 64) and, for 16 entries, the AVX2 loop
    (two vpshufb per lookup) */
-static void tr5_table(pf_buf *b, const char *name, const char *suf, const int16_t *v, int n, const char *what)
-{
-    pf_printf(b, "/* %s */\nstatic const int32_t %s_%s[%d] = {", what, name, suf, n);
-    for (int i = 0; i < n; i++)
-        pf_printf(b, "%s%d,", i % 8 ? " " : "\n    ", v[i]);
-    pf_put(b, "\n};\n");
-}
 
 static void emit16_5(fx_gen *G, pf_buf *out, int is_cos)
 {
@@ -1289,10 +1282,10 @@ static void emit16_5(fx_gen *G, pf_buf *out, int is_cos)
     const char *N = G->name;
     int nb = T->fnb, ns = 1 << nb, ord = T->ford;
     pf_buf body = {0}, tabs = {0}, kern = {0};
-    tr5_table(&tabs, N, "c0", T->fc0, ns, "C0[j], the output's lsb (fitted, see the provenance)");
-    tr5_table(&tabs, N, "c1", T->fc1, ns, "C1[j], the output's lsb");
+    tr4_table(&tabs, N, "c0", T->fc0, ns, "C0[j], the output's lsb (fitted, see the provenance)");
+    tr4_table(&tabs, N, "c1", T->fc1, ns, "C1[j], the output's lsb");
     if (ord == 2)
-        tr5_table(&tabs, N, "c2", T->fc2, ns, "C2[j], the output's lsb");
+        tr4_table(&tabs, N, "c2", T->fc2, ns, "C2[j], the output's lsb");
     const char *kl = fx_k16(G, (int16_t)(uint16_t)T->kl, "KL (as uint16_t): K = KH 2^16 + KL");
     const char *kh = fx_k16(G, T->kh, "KH");
     pf_printf(&body, "    /* hi = floor(u 2^14) mod 2^16, u = |x| 2/pi in quarter turns */\n"
