@@ -393,6 +393,22 @@ static void tab_table(pf_buf *b, const char *name, const char *suf, const uint16
 /* signed 16-bit literal of the same bits, for _mm512_set1_epi16 */
 static long long s16(int64_t v) { return (long long)(int16_t)(uint16_t)v; }
 
+/* the AVX-512 exact loops' head: the clamp constants where the kernel
+   clamps, the loop over 32 words and x loaded and clamped as xc */
+static void bw_clamp_head(pf_buf *kern, const fx_exp_red *X)
+{
+    if (X->loclamp)
+        pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
+    if (X->sat)
+        pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
+    pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
+                 "        __m512i xc = _mm512_loadu_si512(x + i);\n");
+    if (X->loclamp)
+        pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
+    if (X->sat)
+        pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
+}
+
 static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int base2)
 {
     const fx_exp_red *X = &G->exp;
@@ -530,16 +546,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                         "    const __m512i te0 = %s_w16(%s_ter), te1 = %s_w16(%s_ter + 32);\n"
                         "    const __m512i cb = _mm512_set1_epi16(%lld); /* CB = (tcc + 1 - K0) 2^%d - 1 */\n",
                   N, N, N, N, N, N, N, N, N, N, s16(CB), Ei);
-        if (X->loclamp)
-            pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
-        if (X->sat)
-            pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
-        pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
-                     "        __m512i xc = _mm512_loadu_si512(x + i);\n");
-        if (X->loclamp)
-            pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
-        if (X->sat)
-            pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
+        bw_clamp_head(kern, X);
         pf_printf(kern, "        __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^%d - 1 - (tb mod 2^%d) */\n"
                         "        __m512i hn = _mm512_srli_epi16(tn, %d), e = _mm512_permutex2var_epi16(te0, tn, te1);\n"
                         "        __m512i a = _mm512_permutexvar_epi16(hn, ta);\n"
@@ -590,16 +597,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
             pf_printf(kern, "    const __m512i off = _mm512_set1_epi16(%lld), l1 = _mm512_set1_epi16(%lld), l2 = _mm512_set1_epi16(%lld),\n"
                             "                  cl = _mm512_set1_epi16(%lld), one = _mm512_set1_epi16(1);\n",
                       s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl));
-        if (X->loclamp)
-            pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
-        if (X->sat)
-            pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
-        pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
-                     "        __m512i xc = _mm512_loadu_si512(x + i);\n");
-        if (X->loclamp)
-            pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
-        if (X->sat)
-            pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
+        bw_clamp_head(kern, X);
         if (base2 && X->tet && Ei - J == 6)
             pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
                             "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutex2var_epi16(te0, tb, te1);\n",
