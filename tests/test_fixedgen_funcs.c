@@ -12,6 +12,7 @@
 #include <cmocka.h>
 
 #include "compile.h"
+#include "tu_compile.h"
 #include "fixed_internal.h"
 #include "fixedgen.h"
 #include "pffixed.h"
@@ -123,12 +124,8 @@ static uint64_t avx2_loop_mismatches(const char *src, size_t len, const fx_gen *
         free(y);
         return diff;
     }
-    static const char def[] = "#define PF_FX_TEST_AVX2 1\n";
-    char *s2 = malloc(sizeof def + len), err[800];
-    assert_non_null(s2);
-    memcpy(s2, def, sizeof def - 1);
-    memcpy(s2 + sizeof def - 1, src, len);
-    void *h = pf_compile_load(s2, sizeof def - 1 + len, err, sizeof err);
+    char err[800];
+    void *h = tu_compile_load_def("#define PF_FX_TEST_AVX2 1\n", src, len, err, sizeof err);
     if (!h)
         print_message("%s\n", err);
     assert_non_null(h);
@@ -146,7 +143,6 @@ static uint64_t avx2_loop_mismatches(const char *src, size_t len, const fx_gen *
     free(x);
     free(y);
     dlclose(h);
-    free(s2);
     return diff;
 }
 
@@ -210,32 +206,6 @@ static int run_case(const fx_case *c, double *max_err)
     }
     ok = ok && avx2_loop_mismatches(src, len, G, &fn) == 0;
     *max_err = s.max_err;
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-    /* a kernel with an AVX2 loop of its own (<name>_array_avx2): built again
-       with PF_FX_TEST_AVX2, which makes its array form take that loop on a
-       CPU with AVX2: every input equal to the scalar form */
-    if (strstr(src, "_array_avx2(") && __builtin_cpu_supports("avx2")) {
-        static const char def[] = "#define PF_FX_TEST_AVX2 1\n";
-        char *s2 = malloc(sizeof def + len);
-        assert_non_null(s2);
-        memcpy(s2, def, sizeof def - 1);
-        memcpy(s2 + sizeof def - 1, src, len);
-        void *h2 = pf_compile_load(s2, sizeof def - 1 + len, err, sizeof err);
-        if (!h2)
-            print_message("%s\n", err);
-        assert_non_null(h2);
-        pf_fx_fn f2 = {dlsym(h2, G->name), dlsym(h2, an), fn.in, fn.out};
-        assert_non_null(f2.array);
-        pf_fx_stats s2s;
-        pf_fx_stats_init(&s2s);
-        pf_fx_sweep_range(&s2s, G->fn->ref, &f2, lo, hi, 1, 0);
-        print_message("  AVX2 loop: %llu of %llu inputs differ from the scalar form\n",
-                      (unsigned long long)s2s.mismatch, (unsigned long long)s2s.count);
-        ok = ok && s2s.count == (uint64_t)(hi - lo + 1) && s2s.mismatch == 0;
-        dlclose(h2);
-        free(s2);
-    }
-#endif
     dlclose(h);
     free(src);
     free(G);

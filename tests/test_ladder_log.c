@@ -20,6 +20,7 @@
 #include <cmocka.h>
 
 #include "compile.h"
+#include "tu_compile.h"
 #include "generate.h"
 #include "pfref.h"
 #include "sweep.h"
@@ -102,13 +103,7 @@ static void check(const char *func, const char *variant, int order, double U)
     /* the float table rows carry their own AVX2 loop, which the ifunc skips
        on an AVX-512 CPU: built again with PF_LOGTF_TEST_V3 it takes it */
     if (strstr(r.csrc, "PF_LOGTF_TEST_V3") && __builtin_cpu_supports("x86-64-v3")) {
-        static const char def[] = "#define PF_LOGTF_TEST_V3 1\n";
-        char *src = malloc(sizeof def + r.clen);
-        assert_non_null(src);
-        memcpy(src, def, sizeof def - 1);
-        memcpy(src + sizeof def - 1, r.csrc, r.clen);
-        void *h3 = pf_compile_load(src, sizeof def - 1 + r.clen, err, sizeof err);
-        free(src);
+        void *h3 = tu_compile_load_def("#define PF_LOGTF_TEST_V3 1\n", r.csrc, r.clen, err, sizeof err);
         if (!h3)
             fail_msg("%s", err);
         pf_fn1 s3;
