@@ -19,17 +19,18 @@ static float asf(uint32_t u) { float f; memcpy(&f, &u, 4); return f; }
 
 static void *emit_and_load(const char *args, const char *sym, void **fn)
 {
-    char a[512], err[512];
-    snprintf(a, sizeof a, "%s -o /tmp/pf-test-log.c", args);
+    char a[512], err[512], path[96];
+    tu_scratch(path, "log.c");
+    snprintf(a, sizeof a, "%s -o %s", args, path);
     tu_run_result *r = malloc(sizeof *r);
     tu_runs("pfmathgen", a, r);
     assert_int_equal(r->status, 0);
     free(r);
-    void *h = pf_compile_load_file("/tmp/pf-test-log.c", err, sizeof err);
+    void *h = pf_compile_load_file(path, err, sizeof err);
     if (!h)
         print_message("%s\n", err);
     assert_non_null(h);
-    unlink("/tmp/pf-test-log.c");
+    unlink(path);
     *fn = dlsym(h, sym);
     assert_non_null(*fn);
     return h;

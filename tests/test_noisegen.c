@@ -182,6 +182,17 @@ static void check_period(void *h, const char *name, int n, const pf_type *in, co
     }
 }
 
+/* a file NAME in this run's scratch directory (tu_exec.h); four paths live
+ * at once, enough for one call's arguments */
+static const char *nzp(const char *name)
+{
+    static char pool[4][96];
+    static unsigned k;
+    char *b = pool[k++ % 4];
+    snprintf(b, sizeof pool[0], "%s/nzg-%s", tu_scratch_dir(), name);
+    return b;
+}
+
 typedef struct {
     const char *in, *out;
     int npts;
@@ -190,13 +201,13 @@ typedef struct {
 static void run_pair(const pair *p, const char *funcs, int seed)
 {
     pf_type in, out;
-    char err[200], args[512], c[64], so[64], name[160];
+    char err[200], args[512], c[96], so[96], name[160];
     assert_int_equal(pf_type_parse(p->in, &in, err, sizeof err), 0);
     assert_int_equal(pf_type_parse(p->out, &out, err, sizeof err), 0);
     static int run; /* a fresh .so path per run: dlopen caches by path */
     run++;
-    snprintf(c, sizeof c, "/tmp/pf-nzg-%d-%d.c", (int)getpid(), run);
-    snprintf(so, sizeof so, "/tmp/pf-nzg-%d-%d.so", (int)getpid(), run);
+    snprintf(c, sizeof c, "%s/nzg-%d.c", tu_scratch_dir(), run);
+    snprintf(so, sizeof so, "%s/nzg-%d.so", tu_scratch_dir(), run);
     snprintf(args, sizeof args, "--func %s --type '%s' --out-type '%s' --name nz%s", funcs, p->in, p->out,
              seed ? " --seed 7" : "");
     assert_int_equal(gen(args, c), 0);
@@ -253,18 +264,18 @@ static void test_seed(void **st)
     run_pair(&p, "noise3", 1);
     /* a different lattice from the default: the tables differ */
     assert_int_equal(gen("--func noise3 --type 'fixed<15,8>' --out-type 'fixed<15,14>' --seed 7 --no-sweep",
-                         "/tmp/pf-nzg-s1.c"),
+                         nzp("s1.c")),
                      0);
-    assert_int_equal(gen("--func noise3 --type 'fixed<15,8>' --out-type 'fixed<15,14>' --no-sweep", "/tmp/pf-nzg-s0.c"), 0);
-    char *a = tu_slurp("/tmp/pf-nzg-s1.c", NULL), *b = tu_slurp("/tmp/pf-nzg-s0.c", NULL);
+    assert_int_equal(gen("--func noise3 --type 'fixed<15,8>' --out-type 'fixed<15,14>' --no-sweep", nzp("s0.c")), 0);
+    char *a = tu_slurp(nzp("s1.c"), NULL), *b = tu_slurp(nzp("s0.c"), NULL);
     char *ta = strstr(a, "pf_nz_hash[512]"), *tb = strstr(b, "pf_nz_hash[512]");
     assert_non_null(ta);
     assert_non_null(tb);
     assert_true(strcmp(ta, tb) != 0);
     free(a);
     free(b);
-    unlink("/tmp/pf-nzg-s0.c");
-    unlink("/tmp/pf-nzg-s1.c");
+    unlink(nzp("s0.c"));
+    unlink(nzp("s1.c"));
 }
 
 /* Q16.16 -> Q15: within 1 LSB of the library's pf_noiseN_q15 (both are
@@ -272,9 +283,9 @@ static void test_seed(void **st)
 static void test_library_q15(void **st)
 {
     (void)st;
-    assert_int_equal(gen("--func noise --type 'fixed<31,16>' --out-type 'fixed<15,15>'", "/tmp/pf-nzg-lib.c"), 0);
-    void *h = load("/tmp/pf-nzg-lib.c", "/tmp/pf-nzg-lib.so", "-O2");
-    void *h0 = load("/tmp/pf-nzg-lib.c", "/tmp/pf-nzg-lib0.so", "-O0 -fno-inline");
+    assert_int_equal(gen("--func noise --type 'fixed<31,16>' --out-type 'fixed<15,15>'", nzp("lib.c")), 0);
+    void *h = load(nzp("lib.c"), nzp("lib.so"), "-O2");
+    void *h0 = load(nzp("lib.c"), nzp("lib0.so"), "-O0 -fno-inline");
     int16_t (*g4)(int32_t, int32_t, int32_t, int32_t) =
         (int16_t(*)(int32_t, int32_t, int32_t, int32_t))dlsym(h0, "pf_noise4_q16_q15");
     int16_t (*g2)(int32_t, int32_t) = (int16_t(*)(int32_t, int32_t))dlsym(h0, "pf_noise2_q16_q15");
@@ -314,9 +325,9 @@ static void test_library_q15(void **st)
         assert_true(worst[n] <= 1);
     dlclose(h);
     dlclose(h0);
-    unlink("/tmp/pf-nzg-lib.c");
-    unlink("/tmp/pf-nzg-lib.so");
-    unlink("/tmp/pf-nzg-lib0.so");
+    unlink(nzp("lib.c"));
+    unlink(nzp("lib.so"));
+    unlink(nzp("lib0.so"));
 }
 
 static void test_deterministic(void **st)
@@ -324,10 +335,10 @@ static void test_deterministic(void **st)
     (void)st;
     const char *args = "--func noise2 --type 'fixed<15,12>' --out-type 'fixed<15,14>'";
     /* the same command (its -o is in the provenance) */
-    assert_int_equal(gen(args, "/tmp/pf-nzg-d1.c"), 0);
-    char *a = tu_slurp("/tmp/pf-nzg-d1.c", NULL);
-    assert_int_equal(gen(args, "/tmp/pf-nzg-d1.c"), 0);
-    char *b = tu_slurp("/tmp/pf-nzg-d1.c", NULL);
+    assert_int_equal(gen(args, nzp("d1.c")), 0);
+    char *a = tu_slurp(nzp("d1.c"), NULL);
+    assert_int_equal(gen(args, nzp("d1.c")), 0);
+    char *b = tu_slurp(nzp("d1.c"), NULL);
     assert_non_null(a);
     assert_non_null(b);
     assert_string_equal(a, b);
@@ -341,7 +352,7 @@ static void test_deterministic(void **st)
     free(code);
     free(a);
     free(b);
-    unlink("/tmp/pf-nzg-d1.c");
+    unlink(nzp("d1.c"));
 }
 
 static void test_cli_errors(void **st)
@@ -367,14 +378,14 @@ static void test_cli_errors(void **st)
         {"--func noise3 --type 'fixed<31,16>' --bogus", "unknown option"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        const char *path = "/tmp/pf-nzg-bad.c";
+        const char *path = nzp("bad.c");
         int st2 = gen(bad[i].args, path);
         if (st2 != 2 || tu_count_lines(R.err) != 1 || !strstr(R.err, bad[i].want))
             fail_msg("'%s': exit %d, stderr '%s' (want one line with '%s')", bad[i].args, st2, R.err, bad[i].want);
         assert_int_not_equal(access(path, F_OK), 0);
     }
     /* the impossible request says how far off it is */
-    gen("--func noise4 --type 'fixed<31,16>' --out-type 'fixed<31,31>'", "/tmp/pf-nzg-bad.c");
+    gen("--func noise4 --type 'fixed<31,16>' --out-type 'fixed<31,31>'", nzp("bad.c"));
     assert_non_null(strstr(R.err, "2^-32"));
     /* --help lists noise */
     tu_runs("pfmathgen", "--func noise3 --type 'fixed<31,16>' --help", &R);

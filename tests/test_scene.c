@@ -377,19 +377,22 @@ static void test_bad_scenes(void **st)
                          "sin exact fixed<15 fixed<15,14>\n", "sin exact float float\nsin exact float float\n",
                          "# nothing\n", "noise3 fast fixed<15,12> fixed<15,14>\n", "noise3 float float\n",
                          "noise fixed<15,12> fixed<15,14>\n", "noise2 exact fixed<15,0> fixed<15,14>\n"};
+    char scene[96], out[96];
+    tu_scratch(scene, "bad.scene");
+    tu_scratch(out, "bad-out");
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        FILE *f = fopen("/tmp/pf-bad.scene", "w");
+        FILE *f = fopen(scene, "w");
         fputs(bad[i], f);
         fclose(f);
-        tu_rm_tree("/tmp/pf-bad-out");
+        tu_rm_tree(out);
         tu_run_result *r = malloc(sizeof *r);
-        tu_runl(r, "pfmathgen", "--scene", "/tmp/pf-bad.scene", "-o", "/tmp/pf-bad-out", NULL);
+        tu_runl(r, "pfmathgen", "--scene", scene, "-o", out, NULL);
         assert_int_equal(r->status, 2);
         assert_int_equal(tu_count_lines(r->err), 1);
-        assert_int_not_equal(access("/tmp/pf-bad-out", F_OK), 0);
+        assert_int_not_equal(access(out, F_OK), 0);
         free(r);
     }
-    unlink("/tmp/pf-bad.scene");
+    unlink(scene);
 }
 
 int main(void)

@@ -191,4 +191,28 @@ static inline int tu_rm_tree(const char *dir)
     return nftw(dir, tu_rm_cb, 16, FTW_DEPTH | FTW_PHYS);
 }
 
+/* This process's scratch directory (mkdtemp on first use, removed at exit):
+ * fixed /tmp names collided when two `make test` runs (two clones) ran at
+ * once.  tu_scratch(buf, name) writes the path of NAME inside it. */
+static inline void tu_scratch_rm(void);
+static inline const char *tu_scratch_dir(void)
+{
+    static char d[] = "/tmp/pf-test-XXXXXX";
+    static int made;
+    if (!made) {
+        if (!mkdtemp(d)) {
+            perror("mkdtemp");
+            exit(1);
+        }
+        made = 1;
+        atexit(tu_scratch_rm);
+    }
+    return d;
+}
+static inline void tu_scratch_rm(void)
+{
+    tu_rm_tree(tu_scratch_dir());
+}
+#define tu_scratch(buf, name) (snprintf((buf), sizeof(buf), "%s/%s", tu_scratch_dir(), (name)), (buf))
+
 #endif
