@@ -62,6 +62,8 @@ typedef struct {               /* sin, cos */
     int fnb, ford;
     int16_t fc0[64], fc1[64], fc2[64];
     double fR, fA, fworst;     /* the bound R |f| + A (+ 1/2 lsb); largest error / allowed */
+    /* kind 6 (fast): one odd quintic on the folded quarter turn, p = C1 - s (C3 - s C5) */
+    int32_t pc1, pc3, pc5;
 } fx_trig_red;
 
 typedef struct {               /* exp, exp2 */
