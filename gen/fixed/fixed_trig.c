@@ -1270,14 +1270,14 @@ static void emit16_6(fx_gen *G, pf_buf *out, int is_cos)
                       is_cos ? "" : ", the sign by vpsignw", cond);
         else
             pf_printf(&kern,
-                      "\n\n/* AVX-512BW: the same steps on 32 lanes, with intrinsics (GCC does not find\n"
-                      "   the unsigned multiply-highs in the plain C): the array form runs this loop\n"
-                      "   on a CPU with x86-64-v4 (see its dispatch), the AVX2 one below on x86-64-v3;\n"
-                      "   the rest of the array and the other clones use the scalar steps above.  The\n"
-                      "   same values (pfmathgen sweeps the array form on its machine against the\n"
-                      "   scalar one). */\n%s#include <immintrin.h>\n"
+                      "\n\n/* AVX-512BW: the same steps on 32 lanes, with intrinsics, so that the\n"
+                      "   instructions are these whatever GCC would make of the plain C%s\n"
+                      "   array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the\n"
+                      "   AVX2 one below on x86-64-v3; the rest of the array and the other clones use\n"
+                      "   the scalar steps above.  The same values (pfmathgen sweeps the array form on\n"
+                      "   its machine against the scalar one). */\n%s#include <immintrin.h>\n"
                       "extern %s %s(%s x); /* the scalar form, for the last n %% 32 */\n",
-                      cond, G->ot, N, G->it);
+                      is_cos ? ": the" : " (the sign\n   by a masked subtract): the", cond, G->ot, N, G->it);
         pf_printf(&kern, "__attribute__((target(\"arch=x86-64-%s\"), noinline))\n"
                          "static void %s_array_%s(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
                   v ? "v3" : "v4", N, v ? "avx2" : "bw", G->it, G->ot);

@@ -251,12 +251,13 @@ PF_FX_INLINE int16_t pf_sin_q12_q14_fast_inline(int16_t x, const int16_t *k, int
     return (int16_t)((r ^ sg) - sg);
 }
 
-/* AVX-512BW: the same steps on 32 lanes, with intrinsics (GCC does not find
-   the unsigned multiply-highs in the plain C): the array form runs this loop
-   on a CPU with x86-64-v4 (see its dispatch), the AVX2 one below on x86-64-v3;
-   the rest of the array and the other clones use the scalar steps above.  The
-   same values (pfmathgen sweeps the array form on its machine against the
-   scalar one). */
+/* AVX-512BW: the same steps on 32 lanes, with intrinsics, so that the
+   instructions are these whatever GCC would make of the plain C (the sign
+   by a masked subtract): the
+   array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the
+   AVX2 one below on x86-64-v3; the rest of the array and the other clones use
+   the scalar steps above.  The same values (pfmathgen sweeps the array form on
+   its machine against the scalar one). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
 extern int16_t pf_sin_q12_q14_fast(int16_t x); /* the scalar form, for the last n % 32 */
