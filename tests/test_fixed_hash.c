@@ -337,7 +337,7 @@ static void test_lanes16(void **st)
                 continue;
             }
             n16++;
-            /* a register-table kernel (sin/cos kinds 4, 5: vpermw/vpermi2w) runs
+            /* a register-table kernel (exact sin/cos, kind 4: vpermw/vpermi2w) runs
                its AVX-512BW loop by intrinsics, which the library's baseline
                build dispatches to: that loop (-O3, no -march) must hold one
                zmm vpmulhrsw per pf_fx_mulhrs; its plain-C form (other

@@ -79,9 +79,9 @@ static const fx_case cases[] = {
     {"sqrt", "ufixed<8,3>", "ufixed<8,6>", 0, 16},      /* 8-bit */
     {"sqrt", "ufixed<16,-2>", "ufixed<16,4>", 0, 16},   /* negative exponent */
     {"sin", "fixed<15,13>", "fixed<15,12>", 1, 16},     /* register-table kernels (fixed_trig.c */
-    {"cos", "fixed<15,9>", "fixed<15,13>", 0, 16},      /*   kinds 4, 5; fast cos: Horner), other */
+    {"cos", "fixed<15,9>", "fixed<15,13>", 0, 16},      /*   kind 4; fast: one quintic, kind 6), other */
     {"sin", "fixed<15,3>", "fixed<11,10>", 0, 16},      /*   exponents, |x| up to 4096 */
-    {"sin", "fixed<15,9>", "fixed<15,13>", 0, 16},      /*   fast sin (kind 5) at Eo = 13 */
+    {"sin", "fixed<15,9>", "fixed<15,13>", 0, 16},      /*   fast sin (kind 6) at Eo = 13 */
     {"cos", "fixed<15,10>", "fixed<15,12>", 1, 16},     /*   exact cos (kind 4: cubics, 16 segments) */
     {"sin", "fixed<15,9>", "fixed<15,14>", 1, 16},      /*   exact sin (kind 4: quadratics, 32) */
     {"exp", "fixed<15,7>", "ufixed<16,4>", 1, 16},      /* exact table kernel, other shifts */

@@ -58,9 +58,8 @@ typedef struct {               /* sin, cos */
     int16_t tc0[32], tc1[32], tc2[32], tc3[32]; /* per-segment polynomial, 2^-16 units */
     int tns, tord;             /* kind 4: 16 segments of cubics or 32 of quadratics */
     double terr, tred;         /* pre-rounding error (output lsb), phase error (quarter turns) */
-    /* kind 5 (fast): piecewise polynomial of degree ford on 2^fnb segments, at the output's lsb */
-    int fnb, ford;
-    int16_t fc0[64], fc1[64], fc2[64];
+    /* kind 6 (fast): one odd quintic on the folded quarter turn, p = C1 - s (C3 - s C5) */
+    int32_t pc1, pc3, pc5;
     double fR, fA, fworst;     /* the bound R |f| + A (+ 1/2 lsb); largest error / allowed */
 } fx_trig_red;
 

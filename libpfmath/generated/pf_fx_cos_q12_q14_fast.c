@@ -5,34 +5,45 @@
  * Input:       int16_t x, value x 2^-12 in [-8, 7.99975586]
  * Output:      int16_t y, value y 2^-14 in [-2, 1.99993896]
  * Reduction:   on |x| (sin(-x) = -sin(x), cos(-x) = cos(x), exactly); u = |x| 2/pi in quarter 
- *              turns, 2^-14 units, modulo 4 in a uint16_t: w = |x| 3 + round(|x| -14861 2^-15) 
- *              + 2 2^14 (2^(30-12)/pi = 3 2^15 + -14861, MPFR; the product by 3 taken mod 2^16, 
- *              the other by the rounding multiply-high); fold to v in [-1, 1] (v = w - 1 or 3 - 
- *              w, 2^-14 units), +-1 held as +-(1 - 2^-14) (sin is flat there: it moves the 
- *              result by < 5e-9), doubled to 2^-15 units; error of v <= 3.215e-05
- * Domain:      sin(pi/2 t) on t in [0, 1] (odd polynomial t P(t^2))
- * Order:       5 (3 fixed-point coefficients; int16_t words: 16-bit lanes)
- * Lanes:       every step in 16-bit lanes
- * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded 
- *              to the lsb of their Horner step (bit-width analysis) by pin-and-refit
- * Constraints: none
- * Formats:     x unsigned fixed<15,15> in int16_t; p2 fixed<15,15>, p1 fixed<15,15>, p0 
- *              fixed<15,14> (x rounded to 2^-14); steps p = pf_fx_mulhrs(p, x) + c, the 
- *              rounding multiply-high round(p x 2^-15) (pmulhrsw), formats from 
- *              pf_bw_horner_word (bound on each |p_k| plus the rounding errors before it); 
- *              Horner rounding error <= 6.542e-05
- * Polynomial:  max relative error 2.441e-04 (2^-12.00) at t = 1
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.441e-04 |f(x)| (polynomial 
- *              2.441e-04, arithmetic and reduction 0.000e+00, relative) + 2.0970 LSB 
- *              (arithmetic and reduction, absolute) = 6.5970 LSB at most (|f| <= 1)
- * Sweep:       max 4.3034 LSB at x = -25711 (-6.27709961), mean 0.7812 LSB; exhaustive: all 
+ *              turns, hi = floor(u 2^14) mod 2^16 = floor(|x| 35814 2^-16) + |x| 2 (pmulhuw, 
+ *              pmullw; K = round(2/pi 2^18) = 2 2^16 + 35814, MPFR); |error of u| <= 6.267e-05 
+ *              (K's rounding and the floor); fold: v = 1 - |hi| (hi as int16_t, 2^-14 units; 
+ *              cos(pi/2 u) = sin(pi/2 (1 - |u|)) on u in [-2, 2)), z = 2 v saturated to int16_t 
+ *              (t = 1 held as 1 - 2^-15), t = z 2^-15 in [-1, 1)
+ * Domain:      sin(pi/2 t) = t P(t^2) on t in [-1, 1] quarter turns (odd polynomial, one for 
+ *              the whole turn)
+ * Order:       5 (P(s) = C1 - s (C3 - s C5), s = t^2: three fixed-point coefficients, no 
+ *              tables); int16_t words: 16-bit lanes
+ * Lanes:       every step in 16-bit lanes; the AVX-512BW (x86-64-v4) and AVX2 (x86-64-v3) loops 
+ *              by intrinsics (pmulhuw, pmulhrsw), 13 (AVX2) or 14 (AVX-512: |x| as an unsigned 
+ *              min(x, -x), as vpabsw shares the multipliers' pipes on Zen 4) vector 
+ *              instructions per vector; the default clone, scalar form: the same steps in plain 
+ *              C
+ * Method:      P through the three Chebyshev nodes of s in [0, 1] (long double), scaled and 
+ *              rounded, then the integers within (+-6, +-6, +-4) of it with the smallest 
+ *              largest (pre-rounding error + 1/2 lsb) / max(2^-10 |f|, 4 lsb) over every 16-bit 
+ *              input (the emitted steps against sinl/cosl): 0.5462 of the bound at most
+ * Constraints: none (the fold on |x| makes sin exactly odd and cos exactly even)
+ * Formats:     z = t 2^15 int16_t; s = pmulhrsw(z, z) = t^2 2^15 read as uint16_t in [0, 2^15]; 
+ *              C5 = 4776, C3 = 21079 and q = C3 - pmulhuw(s, C5) uint16_t (q = -(c3 + c5 t^2) 
+ *              2^15); C1 = 25735 and p = C1 - pmulhuw(s, q) int16_t at the output's lsb 2^-14 
+ *              (p = P(t^2) 2^14); r = pmulhrsw(z, p) (the result's rounding)
+ * Polynomial:  pre-rounding error of the emitted steps <= 2.747e-04 |f| + 1.5767 lsb for every 
+ *              input (all 2^16, against sinl/cosl: the fit, the coefficients' and 
+ *              multiply-highs' roundings, the phase)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.747e-04 |f(x)| (polynomial 
+ *              0.000e+00, arithmetic and reduction 2.747e-04, relative) + 1.5767 LSB 
+ *              (arithmetic and reduction, absolute) = 6.5767 LSB at most (|f| <= 1); R and A 
+ *              taken over every input from the emitted integer steps (the one-polynomial 
+ *              kernel)
+ * Sweep:       max 6.2830 LSB at x = -25760 (-6.2890625), mean 1.6806 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
- * Arithmetic:  integers only (no floating point, no <math.h>); every rounding to nearest, ties 
- *              up (the rounding multiply-high's rule; the error bound needs only half an lsb 
- *              per rounding); bit-identical under any compiler flags
+ * Arithmetic:  integers only (no floating point, no <math.h>); the phase floored to 2^-14 
+ *              quarter turns, the unsigned multiply-highs floored, the rounding multiply-highs 
+ *              to nearest, ties up; bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -216,43 +227,100 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* cos in fixed point, in 16-bit lanes.  u = x 2/pi counts quarter turns;
-   the phase w = (u + 2) mod 4 is a uint16_t with 14 fraction bits, and
-   cos(x) = sin(pi/2 (w - 1)).  Fold: v = w - 1 on [0, 2), 3 - w on
-   [2, 4) (sin(pi/2 v) = sin(pi/2 (2 - v))), so v is in [-1, 1] and
-   cos(x) = sin(pi/2 v) = v P(v^2).  k[] holds the constants; bw (the AVX-512BW form, see
-   fx_tail16.c.in) changes nothing here. */
+/* cos in fixed point, in 16-bit lanes, one polynomial and no tables.
+   u = |x| 2/pi counts quarter turns; hi = floor(u 2^14) mod 2^16 holds a
+   whole turn.  A fold takes it to t = z 2^-15 in [-1, 1] with
+   cos(x) = +-sin(pi/2 t) = +-t P(t^2), P(s) = C1 - s (C3 - s C5) from
+   unsigned multiply-highs (s = t^2 2^15 reaches 2^15, which only an
+   unsigned word holds).  k[] holds the constants; bw changes nothing
+   here. */
 PF_FX_INLINE int16_t pf_cos_q12_q14_fast_inline(int16_t x, const int16_t *k, int bw)
 {
     (void)bw;
-    /* phase w = (u + 2) mod 4, 2^-14 units */
+    /* hi = floor(u 2^14) mod 2^16, u = |x| 2/pi in quarter turns */
     uint16_t ax = pf_fx_abs16(x); /* |x| */
-    uint16_t w = (uint16_t)((uint32_t)ax * (uint16_t)k[0] + (uint16_t)pf_fx_mulhrs((int16_t)ax, k[1]) + 0x8000u);
-    w = (uint16_t)(ax == 32768u ? w + 2 * k[1] : w);
-    /* fold: v = w - 1 on [0, 2), 3 - w on [2, 4), in [-1, 1] (2^-14), then 2^-15 units */
-    uint16_t aw = pf_fx_abs16((int16_t)(w ^ 0x8000u)); /* |w - 2| in [0, 2] */
-    aw = (uint16_t)(aw < 1u ? 1u : aw > 32767u ? 32767u : aw); /* +-1 held below */
-    int16_t vc = (int16_t)(0x4000 - (int32_t)aw); /* 1 - |w - 2| = v */
-    int16_t v = (int16_t)(vc * k[2]); /* 2^-15 units */
-    int16_t s = pf_fx_mulhrs(v, v); /* v^2 in [0, 1), 2^-15 units */
-    /* P(s) ~ sin(pi/2 t) / t with t^2 = s: Horner in 16-bit words, one rounding per step */
-    int16_t s1 = pf_fx_mulhrs(s, k[3]); /* s rounded to 2^-14 */
-    int16_t p = k[4]; /* c5 = 0.0733032226562 */
-    p = (int16_t)(pf_fx_mulhrs(p, s) + k[5]); /* c3 = -0.643737792969, 2^-15 units */
-    p = (int16_t)(pf_fx_mulhrs(p, s1) + k[6]); /* c1 = 1.57067871094, 2^-14 units */
-    int16_t r = pf_fx_mulhrs(v, p); /* v P, rounded once to the output's lsb */
+    uint16_t hi = (uint16_t)(((uint32_t)ax * (uint16_t)k[0] >> 16) + (uint32_t)ax * (uint16_t)k[1]);
+    /* v = 1 - |hi| (2^-14 units): cos(pi/2 u) = sin(pi/2 v); z = 2 v, t = 1 held below
+       (vpaddsw) */
+    int16_t v = (int16_t)(uint16_t)(0x4000u - pf_fx_abs16((int16_t)hi));
+    int16_t z = (int16_t)(uint16_t)((uint32_t)(uint16_t)v * 2u - (uint32_t)(v == 0x4000));
+    /* s = t^2 2^15 in [0, 2^15] (pmulhrsw read as unsigned); p = P(s) at the output's lsb */
+    uint16_t s = (uint16_t)(((((int32_t)z * z) >> 14) + 1) >> 1); /* z z >= 0 */
+    uint16_t q = (uint16_t)((uint16_t)k[3] - (uint16_t)(((uint32_t)s * (uint16_t)k[4]) >> 16));
+    int16_t p = (int16_t)(uint16_t)((uint16_t)k[2] - (uint16_t)(((uint32_t)s * q) >> 16));
+    int16_t r = pf_fx_mulhrs(z, p); /* t P(t^2), rounded once */
     return (int16_t)r;
 }
 
+/* AVX-512BW: the same steps on 32 lanes, with intrinsics, so that the
+   instructions are these whatever GCC would make of the plain C: the
+   array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the
+   AVX2 one below on x86-64-v3; the rest of the array and the other clones use
+   the scalar steps above.  The same values (pfmathgen sweeps the array form on
+   its machine against the scalar one). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#include <immintrin.h>
+extern int16_t pf_cos_q12_q14_fast(int16_t x); /* the scalar form, for the last n % 32 */
+__attribute__((target("arch=x86-64-v4"), noinline))
+static void pf_cos_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2);
+    const __m512i c1 = _mm512_set1_epi16(25735), c3 = _mm512_set1_epi16(21079), c5 = _mm512_set1_epi16(4776);
+    const __m512i one = _mm512_set1_epi16(0x4000);
+    (void)kh;
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32) {
+        __m512i xv = _mm512_loadu_si512(x + i);
+        __m512i ax = _mm512_min_epu16(xv, _mm512_sub_epi16(_mm512_setzero_si512(), xv)); /* |x| */
+        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_add_epi16(ax, ax));
+        __m512i z = _mm512_sub_epi16(one, _mm512_abs_epi16(hi));
+        z = _mm512_adds_epi16(z, z);
+        __m512i s = _mm512_mulhrs_epi16(z, z);
+        __m512i q = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s, c5));
+        __m512i p = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s, q));
+        __m512i r = _mm512_mulhrs_epi16(z, p);
+        _mm512_storeu_si512(y + i, r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_cos_q12_q14_fast(x[i]);
+}
+#endif
+
+/* AVX2 (x86-64-v3): the same steps on 16 lanes.  The same
+   values. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+__attribute__((target("arch=x86-64-v3"), noinline))
+static void pf_cos_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
+{
+    const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2);
+    const __m256i c1 = _mm256_set1_epi16(25735), c3 = _mm256_set1_epi16(21079), c5 = _mm256_set1_epi16(4776);
+    const __m256i one = _mm256_set1_epi16(0x4000);
+    (void)kh;
+    size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i ax = _mm256_abs_epi16(xv);
+        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_add_epi16(ax, ax));
+        __m256i z = _mm256_sub_epi16(one, _mm256_abs_epi16(hi));
+        z = _mm256_adds_epi16(z, z);
+        __m256i s = _mm256_mulhrs_epi16(z, z);
+        __m256i q = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s, c5));
+        __m256i p = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s, q));
+        __m256i r = _mm256_mulhrs_epi16(z, p);
+        _mm256_storeu_si256((__m256i *)(y + i), r);
+    }
+    for (; i < n; i++)
+        y[i] = pf_cos_q12_q14_fast(x[i]);
+}
+#endif
+
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_cos_q12_q14_fast_k[7] = {
-    3,      /* k[0]: A (as uint16_t): |x| 2^(15-Ei)/pi = |x| (A + B 2^-15) */
-    -14861, /* k[1]: B */
-    2,      /* k[2]: 2 (see the array form) */
-    16384,  /* k[3]: 2^14: s rounded to 14 fraction bits */
-    2402,   /* k[4]: c5 = 0.0733032226562 */
-    -21094, /* k[5]: c3 = -0.643737792969 */
-    25734,  /* k[6]: c1 = 1.57067871094 */
+static const int16_t pf_cos_q12_q14_fast_k[5] = {
+    -29722, /* k[0]: KL (as uint16_t): K = KH 2^16 + KL */
+    2,      /* k[1]: KH */
+    25735,  /* k[2]: C1 = P(0) 2^Eo: p = C1 - s q 2^-16 */
+    21079,  /* k[3]: C3 (as uint16_t): q = C3 - s C5 2^-16 */
+    4776,   /* k[4]: C5 (as uint16_t) */
 };
 
 int16_t pf_cos_q12_q14_fast(int16_t x)
@@ -277,6 +345,22 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_cos_q12_q14_fast_array(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
+    if (__builtin_cpu_supports("avx2")) {
+        pf_cos_q12_q14_fast_array_avx2(x, y, n);
+        return;
+    }
+#endif
+    if (__builtin_cpu_supports("x86-64-v4")) {
+        pf_cos_q12_q14_fast_array_bw(x, y, n);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        pf_cos_q12_q14_fast_array_avx2(x, y, n);
+        return;
+    }
+#endif
     const int16_t *k = pf_cos_q12_q14_fast_k;
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));

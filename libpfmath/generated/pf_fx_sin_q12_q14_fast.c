@@ -7,45 +7,42 @@
  * Reduction:   on |x| (sin(-x) = -sin(x), cos(-x) = cos(x), exactly); u = |x| 2/pi in quarter 
  *              turns, hi = floor(u 2^14) mod 2^16 = floor(|x| 35814 2^-16) + |x| 2 (pmulhuw, 
  *              pmullw; K = round(2/pi 2^18) = 2 2^16 + 35814, MPFR); |error of u| <= 6.267e-05 
- *              (K's rounding and the floor); half turn h = bit 15 of hi, segment j = bits 
- *              14..11 (u mod 2 in [j, j + 1) 2^-3), tau = the rest, in [0, 1); t = hi << 4 as 
- *              int16_t: s = t 2^-15 = tau for even j, tau - 1 for odd j (t's sign is j's last 
- *              bit)
- * Domain:      sin(pi/2 (j + tau) 2^-3) on tau in [0, 1) for each of 16 segments j of the half 
- *              turn [0, 2) quarter turns (the other half by the sign), in s = tau (even j) or 
- *              tau - 1 (odd j)
- * Order:       2 per segment (r = C0 + s (C1 + s C2)), three 16-entry tables of int16_t; 
- *              int16_t words: 16-bit lanes
- * Lanes:       every step in 16-bit lanes; the lookups (vpermw, three registers of 16 entries 
- *              twice) in the AVX-512BW loop by intrinsics (x86-64-v4); AVX2 intrinsics 
- *              (x86-64-v3): each lookup two vpshufb (the low and the high bytes) and a vpor; 
- *              the default clone, scalar form: the same steps in plain C (32-bit table loads)
- * Method:      per segment: the quadratic through the three Chebyshev nodes of tau in [0, 1] 
- *              (long double), in s, rounded to the output's lsb, then the integers within (+-4, 
- *              +-4, +-3) of it with the smallest largest (pre-rounding error + 1/2 lsb) / 
- *              max(2^-10 |f|, 4 lsb) over the segment's inputs (every 16-bit input, against 
- *              sinl/cosl): 0.5763 of the bound at most
- * Constraints: C0[0] = 0 and C0[8] = 2^14: exact at u = 0 and 1 (sin(0) = 0, sin(pi/2) = cos(0) 
- *              = 1); the sign fold makes sin exactly odd and cos exactly even
- * Formats:     t = s 2^15 int16_t in [-2^15, 2^15); C0, C1, C2 and q = C1 + pmulhrsw(t, C2) 
- *              int16_t at the output's lsb 2^-14; r = C0 + pmulhrsw(t, q) (the result's 
- *              rounding), then negated when h (xor x < 0, for sin)
- * Polynomial:  pre-rounding error of the emitted steps <= 3.052e-05 |f| + 1.8254 lsb for every 
- *              input (all 2^16, against sinl/cosl: segment fit, coefficient and inner 
- *              multiply-high roundings, phase)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 3.052e-05 |f(x)| (polynomial 
- *              0.000e+00, arithmetic and reduction 3.052e-05, relative) + 1.8254 LSB 
- *              (arithmetic and reduction, absolute) = 2.8254 LSB at most (|f| <= 1); R and A 
- *              taken over every input from the emitted integer steps (the register-table 
+ *              (K's rounding and the floor); fold: z = hi << 1 as int16_t, t = z 2^-15 = u mod 
+ *              2 in [-1, 1); sin(pi/2 u) = sin(pi/2 t) when bits 15 and 14 of hi agree, else 
+ *              -sin(pi/2 t); negated again when x < 0
+ * Domain:      sin(pi/2 t) = t P(t^2) on t in [-1, 1] quarter turns (odd polynomial, one for 
+ *              the whole turn)
+ * Order:       5 (P(s) = C1 - s (C3 - s C5), s = t^2: three fixed-point coefficients, no 
+ *              tables); int16_t words: 16-bit lanes
+ * Lanes:       every step in 16-bit lanes; the AVX-512BW (x86-64-v4) and AVX2 (x86-64-v3) loops 
+ *              by intrinsics (pmulhuw, pmulhrsw), 14 vector instructions per vector; the 
+ *              default clone, scalar form: the same steps in plain C
+ * Method:      P through the three Chebyshev nodes of s in [0, 1] (long double), scaled and 
+ *              rounded, then the integers within (+-6, +-6, +-4) of it with the smallest 
+ *              largest (pre-rounding error + 1/2 lsb) / max(2^-10 |f|, 4 lsb) over every 16-bit 
+ *              input (the emitted steps against sinl/cosl): 0.5403 of the bound at most
+ * Constraints: none (the fold on |x| makes sin exactly odd and cos exactly even)
+ * Formats:     z = t 2^15 int16_t; s = pmulhrsw(z, z) = t^2 2^15 read as uint16_t in [0, 2^15]; 
+ *              C5 = 4776, C3 = 21082 and q = C3 - pmulhuw(s, C5) uint16_t (q = -(c3 + c5 t^2) 
+ *              2^15); C1 = 25735 and p = C1 - pmulhuw(s, q) int16_t at the output's lsb 2^-14 
+ *              (p = P(t^2) 2^14); r = pmulhrsw(z, p) (the result's rounding), then negated as 
+ *              the fold says
+ * Polynomial:  pre-rounding error of the emitted steps <= 1.678e-04 |f| + 1.6139 lsb for every 
+ *              input (all 2^16, against sinl/cosl: the fit, the coefficients' and 
+ *              multiply-highs' roundings, the phase)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 1.678e-04 |f(x)| (polynomial 
+ *              0.000e+00, arithmetic and reduction 1.678e-04, relative) + 1.6139 LSB 
+ *              (arithmetic and reduction, absolute) = 4.8639 LSB at most (|f| <= 1); R and A 
+ *              taken over every input from the emitted integer steps (the one-polynomial 
  *              kernel)
- * Sweep:       max 2.2829 LSB at x = -27066 (-6.60791016), mean 0.4858 LSB; exhaustive: all 
+ * Sweep:       max 4.5675 LSB at x = -32204 (-7.86230469), mean 1.2460 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
  * Arithmetic:  integers only (no floating point, no <math.h>); the phase floored to 2^-14 
- *              quarter turns, the multiply-highs rounded to nearest, ties up; bit-identical 
- *              under any compiler flags
+ *              quarter turns, the unsigned multiply-highs floored, the rounding multiply-highs 
+ *              to nearest, ties up; bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -229,77 +226,59 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* sin in fixed point, in 16-bit lanes, piecewise polynomial from
-   tables that fit registers.  u = |x| 2/pi counts quarter turns (for cos,
-   u + 1: cos(x) = sin(pi/2 (u + 1))); hi = floor(u 2^14) mod 2^16.  The
-   half turn h = bit 15 (sin(pi/2 (u + 2)) = -sin(pi/2 u)), the segment j =
-   the next bits and the rest, the position in the segment, give
-   sin(pi/2 u) = +-P_j(s), at the output's lsb (s = t 2^-15, t = hi shifted
-   to the top of an int16_t: tau in [0, 1) on an even segment, tau - 1 on
-   an odd one).  k[] holds the multipliers; bw changes nothing here. */
-/* C0[j], the output's lsb (fitted, see the provenance) */
-static const int32_t pf_sin_q12_q14_fast_c0[16] = {
-    0, 6271, 6270, 11587, 11586, 15138, 15137, 16384,
-    16384, 15136, 15137, 11584, 11586, 6269, 6270, -1,
-};
-/* C1[j], the output's lsb */
-static const int32_t pf_sin_q12_q14_fast_c1[16] = {
-    3229, 2985, 2983, 2287, 2279, 1239, 1236, -1,
-    -1, -1237, -1237, -2284, -2285, -2980, -2986, -3228,
-};
-/* C2[j], the output's lsb */
-static const int32_t pf_sin_q12_q14_fast_c2[16] = {
-    -31, -89, -150, -197, -241, -276, -304, -316,
-    -314, -304, -278, -245, -200, -146, -89, -31,
-};
+/* sin in fixed point, in 16-bit lanes, one polynomial and no tables.
+   u = |x| 2/pi counts quarter turns; hi = floor(u 2^14) mod 2^16 holds a
+   whole turn.  A fold takes it to t = z 2^-15 in [-1, 1] with
+   sin(x) = +-sin(pi/2 t) = +-t P(t^2), P(s) = C1 - s (C3 - s C5) from
+   unsigned multiply-highs (s = t^2 2^15 reaches 2^15, which only an
+   unsigned word holds).  k[] holds the constants; bw changes nothing
+   here. */
 PF_FX_INLINE int16_t pf_sin_q12_q14_fast_inline(int16_t x, const int16_t *k, int bw)
 {
     (void)bw;
     /* hi = floor(u 2^14) mod 2^16, u = |x| 2/pi in quarter turns */
     uint16_t ax = pf_fx_abs16(x); /* |x| */
     uint16_t hi = (uint16_t)(((uint32_t)ax * (uint16_t)k[0] >> 16) + (uint32_t)ax * (uint16_t)k[1]);
-    /* segment j = bits 14..11; t = s 2^15, s = tau (the rest) for even j, tau - 1
-       for odd j (t's sign is j's last bit) */
-    unsigned j = (unsigned)(hi >> 11) & 15u;
-    int16_t t = (int16_t)(uint16_t)((uint32_t)hi << 4);
-    int16_t q = (int16_t)(pf_fx_mulhrs(t, (int16_t)pf_sin_q12_q14_fast_c2[j]) + pf_sin_q12_q14_fast_c1[j]); /* C1 + s C2 */
-    int16_t r = (int16_t)(pf_fx_mulhrs(t, q) + pf_sin_q12_q14_fast_c0[j]); /* C0 + s q */
-    int16_t sg = pf_fx_sgn16((int16_t)(hi ^ (uint16_t)x)); /* the half turn, and x < 0 */
+    /* t = u mod 2 in [-1, 1): z = t 2^15 */
+    int16_t z = (int16_t)(uint16_t)((uint32_t)hi << 1);
+    /* s = t^2 2^15 in [0, 2^15] (pmulhrsw read as unsigned); p = P(s) at the output's lsb */
+    uint16_t s = (uint16_t)(((((int32_t)z * z) >> 14) + 1) >> 1); /* z z >= 0 */
+    uint16_t q = (uint16_t)((uint16_t)k[3] - (uint16_t)(((uint32_t)s * (uint16_t)k[4]) >> 16));
+    int16_t p = (int16_t)(uint16_t)((uint16_t)k[2] - (uint16_t)(((uint32_t)s * q) >> 16));
+    int16_t r = pf_fx_mulhrs(z, p); /* t P(t^2), rounded once */
+    /* negated when bits 15 and 14 of hi differ, and again when x < 0 */
+    int16_t sg = pf_fx_sgn16((int16_t)(hi ^ (uint16_t)z ^ (uint16_t)x));
     return (int16_t)((r ^ sg) - sg);
 }
 
-/* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn
-   the table lookups into vpermw: the array form runs this loop on a CPU
-   with x86-64-v4 (see its dispatch), the rest of the array and the other
-   clones use the scalar steps above.  The same values (pfmathgen sweeps the
-   array form on its machine against the scalar one). */
+/* AVX-512BW: the same steps on 32 lanes, with intrinsics, so that the
+   instructions are these whatever GCC would make of the plain C (the sign
+   by a masked subtract): the
+   array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the
+   AVX2 one below on x86-64-v3; the rest of the array and the other clones use
+   the scalar steps above.  The same values (pfmathgen sweeps the array form on
+   its machine against the scalar one). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
 extern int16_t pf_sin_q12_q14_fast(int16_t x); /* the scalar form, for the last n % 32 */
-/* the 16 entries as 16-bit words, twice (vpermw reads 5 index bits) */
-__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_sin_q12_q14_fast_w16(const int32_t *t)
-{
-    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
-}
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_sin_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    const __m512i c0 = pf_sin_q12_q14_fast_w16(pf_sin_q12_q14_fast_c0), c1 = pf_sin_q12_q14_fast_w16(pf_sin_q12_q14_fast_c1);
-    const __m512i c2 = pf_sin_q12_q14_fast_w16(pf_sin_q12_q14_fast_c2);
     const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2);
-    const __m512i ho = _mm512_set1_epi16(0), zero = _mm512_setzero_si512();
+    const __m512i c1 = _mm512_set1_epi16(25735), c3 = _mm512_set1_epi16(21082), c5 = _mm512_set1_epi16(4776);
+    const __m512i zero = _mm512_setzero_si512();
+    (void)kh;
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
         __m512i xv = _mm512_loadu_si512(x + i);
         __m512i ax = _mm512_abs_epi16(xv);
-        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
-        (void)ho;
-        __m512i j = _mm512_srli_epi16(hi, 11); /* the lookup reads the low 5 bits */
-        __m512i t = _mm512_slli_epi16(hi, 4);
-        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),
-                                     _mm512_permutexvar_epi16(j, c1));
-        __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
-        __mmask32 neg = _mm512_movepi16_mask(_mm512_xor_si512(hi, xv));
+        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_add_epi16(ax, ax));
+        __m512i z = _mm512_add_epi16(hi, hi);
+        __m512i s = _mm512_mulhrs_epi16(z, z);
+        __m512i q = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s, c5));
+        __m512i p = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s, q));
+        __m512i r = _mm512_mulhrs_epi16(z, p);
+        __mmask32 neg = _mm512_movepi16_mask(_mm512_ternarylogic_epi32(hi, z, xv, 0x96));
         r = _mm512_mask_sub_epi16(r, neg, zero, r);
         _mm512_storeu_si512(y + i, r);
     }
@@ -308,45 +287,27 @@ static void pf_sin_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *res
 }
 #endif
 
-/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: each table of 16
-   words is two registers, its low and its high bytes; a lookup is two vpshufb
-   (an index with bit 7 set zeroes its byte) and a vpor.  The sign by vpsignw.
-   The same values. */
+/* AVX2 (x86-64-v3): the same steps on 16 lanes, the sign by vpsignw.  The same
+   values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_sin_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    const int32_t *tab[3] = {pf_sin_q12_q14_fast_c0, pf_sin_q12_q14_fast_c1, pf_sin_q12_q14_fast_c2};
-    uint8_t b[3][2][16]; /* per table: the low bytes, the high bytes */
-    for (int a = 0; a < 3; a++)
-        for (int k = 0; k < 16; k++) {
-            b[a][0][k] = (uint8_t)(uint32_t)tab[a][k];
-            b[a][1][k] = (uint8_t)((uint32_t)tab[a][k] >> 8);
-        }
-    __m256i c[3][2];
-    for (int a = 0; a < 3; a++)
-        for (int p = 0; p < 2; p++)
-            c[a][p] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[a][p]));
-    const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2), ho = _mm256_set1_epi16(0);
-    const __m256i ka = _mm256_set1_epi16((short)0x8000), kb = _mm256_set1_epi16(0x0080);
+    const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2);
+    const __m256i c1 = _mm256_set1_epi16(25735), c3 = _mm256_set1_epi16(21082), c5 = _mm256_set1_epi16(4776);
+    (void)kh;
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
         __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
         __m256i ax = _mm256_abs_epi16(xv);
-        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_mullo_epi16(ax, kh));
-        (void)ho;
-        /* hi >> 11 = h 16 + j in the low byte (vpshufb reads bits 3..0, bit 7 clear),
-           0x80 in the high byte; ib: hi >> 3, the same in the high byte, 0x80 in the
-           low one */
-        __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);
-        __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);
-        __m256i t = _mm256_slli_epi16(hi, 4);
-        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, _mm256_or_si256(_mm256_shuffle_epi8(c[2][0], ia), _mm256_shuffle_epi8(c[2][1], ib))),
-                                     _mm256_or_si256(_mm256_shuffle_epi8(c[1][0], ia), _mm256_shuffle_epi8(c[1][1], ib)));
-        __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q),
-                                     _mm256_or_si256(_mm256_shuffle_epi8(c[0][0], ia), _mm256_shuffle_epi8(c[0][1], ib)));
-        /* negated when h, then when x < 0 (hi = 0 or x = 0: r = C0[0] = 0) */
-        r = _mm256_sign_epi16(_mm256_sign_epi16(r, hi), xv);
+        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_add_epi16(ax, ax));
+        __m256i z = _mm256_add_epi16(hi, hi);
+        __m256i s = _mm256_mulhrs_epi16(z, z);
+        __m256i q = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s, c5));
+        __m256i p = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s, q));
+        __m256i r = _mm256_mulhrs_epi16(z, p);
+        /* vpsignw zeroes where its sign operand is 0: hi = 0 or x = 0, where r = 0 */
+        r = _mm256_sign_epi16(_mm256_sign_epi16(r, _mm256_xor_si256(hi, z)), xv);
         _mm256_storeu_si256((__m256i *)(y + i), r);
     }
     for (; i < n; i++)
@@ -355,9 +316,12 @@ static void pf_sin_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *r
 #endif
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_sin_q12_q14_fast_k[2] = {
+static const int16_t pf_sin_q12_q14_fast_k[5] = {
     -29722, /* k[0]: KL (as uint16_t): K = KH 2^16 + KL */
     2,      /* k[1]: KH */
+    25735,  /* k[2]: C1 = P(0) 2^Eo: p = C1 - s q 2^-16 */
+    21082,  /* k[3]: C3 (as uint16_t): q = C3 - s C5 2^-16 */
+    4776,   /* k[4]: C5 (as uint16_t) */
 };
 
 int16_t pf_sin_q12_q14_fast(int16_t x)
