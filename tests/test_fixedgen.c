@@ -193,6 +193,34 @@ static int entries(const char *k)
     return e ? atoi(e) : 0;
 }
 
+/* The fast sin/cos quintic (fixed_trig.c, kind 6): sin(pi/2 t) ~ t p(t)
+ * 2^-Eo, p = C1 - t^2 C3/2 + t^4 C5/4 (its multiply-highs' scales), read
+ * from the emitted file's Formats line.  The fold puts mirrored pieces side by side at
+ * t = 1, so the fast variant's seam rule asks value 1 and slope 0 there:
+ * 4 C1 - 2 C3 + C5 = 4 2^Eo and 4 C1 - 6 C3 + 5 C5 = 0, exactly. */
+static void seam_matched(const char *args, int Eo)
+{
+    char a[600], path[300];
+    snprintf(path, sizeof path, "%s/seam.c", dir);
+    snprintf(a, sizeof a, "%s --variant fast -o %s", args, path);
+    tu_runs("pfmathgen", a, &R);
+    assert_int_equal(R.status, 0);
+    char *src = tu_slurp(path, NULL);
+    assert_non_null(src);
+    const char *fm = strstr(src, "Formats:");
+    assert_non_null(fm);
+    const char *p5 = strstr(fm, "C5 = "), *p3 = strstr(fm, "C3 = "), *p1 = strstr(fm, "C1 = ");
+    assert_true(p5 && p3 && p1);
+    long c5 = atol(p5 + 5), c3 = atol(p3 + 5), c1 = atol(p1 + 5);
+    print_message("  seam: C1 %ld C3 %ld C5 %ld: value %ld/%ld, slope %ld\n", c1, c3, c5, 4 * c1 - 2 * c3 + c5,
+                  4L << Eo, 4 * c1 - 6 * c3 + 5 * c5);
+    assert_true(c1 > 0 && c3 > 0 && c5 > 0);
+    assert_int_equal(4 * c1 - 2 * c3 + c5, 4L << Eo);
+    assert_int_equal(4 * c1 - 6 * c3 + 5 * c5, 0);
+    free(src);
+    unlink(path);
+}
+
 static void test_fast_variant(void **st)
 {
     (void)st;
@@ -227,6 +255,7 @@ static void test_fast_variant(void **st)
             if (of < 0 && kf[0] && strstr(kf, "no tables")) { /* fast: one polynomial, no lookups */
                 print_message("  fast kernel: %s\n", kf);
                 assert_true(atoi(kf) > 0 && strstr(kf, " per segment") == NULL);
+                seam_matched(types[i], 14);
             } else if (of < 0 && kf[0]) { /* fast: tables too, fewer entries or a lower degree */
                 print_message("  fast kernel: %s\n", kf);
                 assert_non_null(strstr(kf, " per segment"));

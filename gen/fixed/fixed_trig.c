@@ -457,11 +457,11 @@ static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
  * vector on AVX-512, three vpermw; 24 on AVX2, nine of them for the
  * lookups), which git history keeps.  |x| first: sin exactly odd, cos
  * exactly even.
- * Coefficients: P through three Chebyshev nodes of s in [0, 1], scaled,
- * rounded, then the integers within a few units with the smallest largest
- * (pre-rounding error + 1/2 lsb) / max(2^-10 |f|, 4 lsb) over every input
- * (the emitted integer steps against sinl/cosl); no step may leave its
- * word.  The bound R |f| + A + 1/2 lsb: R and A the smallest (R 2^12 + A
+ * Coefficients: value 1 and slope 0 at the quarter turn (the fast
+ * variant's seam rule; prepare6 says how that leaves one integer free), then
+ * the free integer with the smallest largest (pre-rounding error + 1/2 lsb)
+ * / max(2^-10 |f|, 4 lsb) over every input (the emitted integer steps
+ * against sinl/cosl); no step may leave its word.  The bound R |f| + A + 1/2 lsb: R and A the smallest (R 2^12 + A
  * in lsb) that cover the pre-rounding error of every input, R on a grid of
  * 2^-16. */
 
@@ -508,47 +508,49 @@ static int prepare6(fx_gen *G, int is_cos)
     static long double ys[65536];
     for (int64_t x = -32768; x <= 32767; x++)
         ys[x + 32768] = tr4_target(G, x, is_cos, 0);
-    /* P(s) = sin(pi/2 sqrt(s)) / sqrt(s) through three Chebyshev nodes of [0, 1] */
-    long double sn[3], yn[3], a[3];
-    for (int k = 0; k < 3; k++) {
-        sn[k] = 0.5L + 0.5L * cosl((2 * k + 1) * 3.14159265358979323846264338327950288L / 6);
-        yn[k] = sinl(1.57079632679489661923132169163975144L * sqrtl(sn[k])) / sqrtl(sn[k]);
-    }
-    long double d01 = (yn[1] - yn[0]) / (sn[1] - sn[0]), d12 = (yn[2] - yn[1]) / (sn[2] - sn[1]);
-    a[2] = (d12 - d01) / (sn[2] - sn[0]);
-    a[1] = d01 - a[2] * (sn[0] + sn[1]);
-    a[0] = yn[0] - sn[0] * (a[1] + a[2] * sn[0]);
-    /* p = P 2^Eo = C1 - s q 2^-16, s = t^2 2^15: q = -(a1 + a2 t^2) 2^(Eo+1) = C3 - s C5 2^-16 */
-    int32_t b[3] = {(int32_t)llroundl(ldexpl(a[0], Eo)), (int32_t)llroundl(ldexpl(-a[1], Eo + 1)),
-                    (int32_t)llroundl(ldexpl(a[2], Eo + 2))};
+    /* The fast variant's seam rule: sin(pi/2 t) = t P(t^2) takes value 1 and
+       slope 0 at t = 1, the quarter turn, where the fold puts two mirrored
+       pieces side by side (t -> -t beyond it, and |x| at cos's 0), so they
+       join with a matched slope.  With p(t) 2^-Eo = P, p = C1 - t^2 C3/2 +
+       t^4 C5/4 (the multiply-highs' scales), value and slope at t = 1 are
+       4 C1 - 2 C3 + C5 = 4 2^Eo and 4 C1 - 6 C3 + 5 C5 = 0: C5 = 4m,
+       C3 = 4m + 2^Eo, C1 = m + 3 2^(Eo-1), one integer m left.  Starting
+       point: P's linear term pi/2 (m0 = 2^Eo (pi/2 - 3/2)); the search takes
+       the m with the smallest largest error over every input.  (Unconstrained,
+       the slope at the seam was 0.005 per quarter turn, 0.3% of the
+       steepest; the constrained quintic uses about 0.32 of the bound before
+       the arithmetic's roundings.) */
+    if (Eo < 1 || Eo > 14)
+        return -2;
+    const int64_t one = (int64_t)1 << Eo;
+    int64_t m0 = llroundl(ldexpl(1.57079632679489661923132169163975144L - 1.5L, Eo));
     double best = INFINITY;
     int32_t bc[3] = {0, 0, 0};
-    const int w0 = 6, w1 = 6, w2 = 4; /* the search's half-widths */
-    for (int32_t d2 = -w2; d2 <= w2; d2++)
-        for (int32_t d1 = -w1; d1 <= w1; d1++)
-            for (int32_t d0 = -w0; d0 <= w0; d0++) {
-                int32_t c[3] = {b[0] + d0, b[1] + d1, b[2] + d2};
-                if (c[0] < 0 || c[0] > 32767 || c[1] < 0 || c[1] > 65535 || c[2] < 0 || c[2] > 65535)
-                    continue;
-                double e = 0;
-                /* the inputs from the largest |x| down: the worst ones come early */
-                for (int64_t i = 0; i < 65536 && e < best; i++) {
-                    int64_t x = (i & 1) ? 32767 - (i >> 1) : -32768 + (i >> 1);
-                    long double pre;
-                    int32_t r;
-                    if (!tr6_eval(G, c, x, is_cos, &pre, &r)) {
-                        e = INFINITY;
-                        break;
-                    }
-                    long double y = ys[x + 32768];
-                    double d = (double)((fabsl(pre - y) + 0.5L) / fmaxl(fabsl(y) * 0x1p-10L, 4.0L));
-                    e = d > e ? d : e;
-                }
-                if (e < best) {
-                    best = e;
-                    bc[0] = c[0], bc[1] = c[1], bc[2] = c[2];
-                }
+    const int64_t wm = 64; /* the search's half-width in m */
+    for (int64_t m = m0 - wm; m <= m0 + wm; m++) {
+        int64_t c1 = m + 3 * one / 2, c3 = 4 * m + one, c5 = 4 * m;
+        if (m < 0 || c1 > 32767 || c3 > 65535 || c5 > 65535)
+            continue;
+        int32_t c[3] = {(int32_t)c1, (int32_t)c3, (int32_t)c5};
+        double e = 0;
+        /* the inputs from the largest |x| down: the worst ones come early */
+        for (int64_t i = 0; i < 65536 && e < best; i++) {
+            int64_t x = (i & 1) ? 32767 - (i >> 1) : -32768 + (i >> 1);
+            long double pre;
+            int32_t r;
+            if (!tr6_eval(G, c, x, is_cos, &pre, &r)) {
+                e = INFINITY;
+                break;
             }
+            long double y = ys[x + 32768];
+            double d = (double)((fabsl(pre - y) + 0.5L) / fmaxl(fabsl(y) * 0x1p-10L, 4.0L));
+            e = d > e ? d : e;
+        }
+        if (e < best) {
+            best = e;
+            bc[0] = c[0], bc[1] = c[1], bc[2] = c[2];
+        }
+    }
     if (!(best <= 1))
         return -2;
     T->pc1 = bc[0];
@@ -595,13 +597,15 @@ static int prepare6(fx_gen *G, int is_cos)
              "5 (P(s) = C1 - s (C3 - s C5), s = t^2: three fixed-point coefficients, no tables); int16_t "
              "words: 16-bit lanes");
     snprintf(G->alt_method, sizeof G->alt_method,
-             "P through the three Chebyshev nodes of s in [0, 1] (long double), scaled and rounded, then the "
-             "integers within (+-6, +-6, +-4) of it with the smallest largest (pre-rounding error + 1/2 lsb) / "
+             "the one-parameter family that meets the constraints (C5 = 4m, C3 = 4m + 2^%d, C1 = m + 3 2^%d), m "
+             "within 64 of P's linear term pi/2, the m with the smallest largest (pre-rounding error + 1/2 lsb) / "
              "max(2^-10 |f|, 4 lsb) over every 16-bit input (the emitted steps against sinl/cosl): %.4f of the "
              "bound at most",
+             Eo, Eo - 1,
              T->fworst);
     snprintf(G->alt_con, sizeof G->alt_con,
-             "none (the fold on |x| makes sin exactly odd and cos exactly even)");
+             "value 1, slope 0 at t = 1 where folded pieces meet (4 C1 - 2 C3 + C5 = 2^%d, 4 C1 - 6 C3 + 5 C5 = 0); "
+             "|x| first: sin odd, cos even", Eo + 2);
     snprintf(G->alt_formats, sizeof G->alt_formats,
              "z = t 2^15 int16_t; s = pmulhrsw(z, z) = t^2 2^15 read as uint16_t in [0, 2^15]; C5 = %d, C3 = %d "
              "and q = C3 - pmulhuw(s, C5) uint16_t (q = -(c3 + c5 t^2) 2^%d); C1 = %d and p = C1 - pmulhuw(s, q) "

@@ -19,24 +19,25 @@
  *              min(x, -x), as vpabsw shares the multipliers' pipes on Zen 4) vector 
  *              instructions per vector; the default clone, scalar form: the same steps in plain 
  *              C
- * Method:      P through the three Chebyshev nodes of s in [0, 1] (long double), scaled and 
- *              rounded, then the integers within (+-6, +-6, +-4) of it with the smallest 
+ * Method:      the one-parameter family that meets the constraints (C5 = 4m, C3 = 4m + 2^14, C1 
+ *              = m + 3 2^13), m within 64 of P's linear term pi/2, the m with the smallest 
  *              largest (pre-rounding error + 1/2 lsb) / max(2^-10 |f|, 4 lsb) over every 16-bit 
- *              input (the emitted steps against sinl/cosl): 0.5462 of the bound at most
- * Constraints: none (the fold on |x| makes sin exactly odd and cos exactly even)
+ *              input (the emitted steps against sinl/cosl): 0.5813 of the bound at most
+ * Constraints: value 1, slope 0 at t = 1 where folded pieces meet (4 C1 - 2 C3 + C5 = 2^16, 4 
+ *              C1 - 6 C3 + 5 C5 = 0); |x| first: sin odd, cos even
  * Formats:     z = t 2^15 int16_t; s = pmulhrsw(z, z) = t^2 2^15 read as uint16_t in [0, 2^15]; 
- *              C5 = 4776, C3 = 21079 and q = C3 - pmulhuw(s, C5) uint16_t (q = -(c3 + c5 t^2) 
- *              2^15); C1 = 25735 and p = C1 - pmulhuw(s, q) int16_t at the output's lsb 2^-14 
+ *              C5 = 4628, C3 = 21012 and q = C3 - pmulhuw(s, C5) uint16_t (q = -(c3 + c5 t^2) 
+ *              2^15); C1 = 25733 and p = C1 - pmulhuw(s, q) int16_t at the output's lsb 2^-14 
  *              (p = P(t^2) 2^14); r = pmulhrsw(z, p) (the result's rounding)
- * Polynomial:  pre-rounding error of the emitted steps <= 2.747e-04 |f| + 1.5767 lsb for every 
+ * Polynomial:  pre-rounding error of the emitted steps <= 4.120e-04 |f| + 1.5543 lsb for every 
  *              input (all 2^16, against sinl/cosl: the fit, the coefficients' and 
  *              multiply-highs' roundings, the phase)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.747e-04 |f(x)| (polynomial 
- *              0.000e+00, arithmetic and reduction 2.747e-04, relative) + 1.5767 LSB 
- *              (arithmetic and reduction, absolute) = 6.5767 LSB at most (|f| <= 1); R and A 
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 4.120e-04 |f(x)| (polynomial 
+ *              0.000e+00, arithmetic and reduction 4.120e-04, relative) + 1.5543 LSB 
+ *              (arithmetic and reduction, absolute) = 8.8043 LSB at most (|f| <= 1); R and A 
  *              taken over every input from the emitted integer steps (the one-polynomial 
  *              kernel)
- * Sweep:       max 6.2830 LSB at x = -25760 (-6.2890625), mean 1.6806 LSB; exhaustive: all 
+ * Sweep:       max 7.5452 LSB at x = -15157 (-3.70043945), mean 2.8907 LSB; exhaustive: all 
  *              65536 inputs
  * Saturation:  none needed unless the output cannot hold +-1; results beyond the output range 
  *              give its max or min
@@ -265,7 +266,7 @@ __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_cos_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
     const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2);
-    const __m512i c1 = _mm512_set1_epi16(25735), c3 = _mm512_set1_epi16(21079), c5 = _mm512_set1_epi16(4776);
+    const __m512i c1 = _mm512_set1_epi16(25733), c3 = _mm512_set1_epi16(21012), c5 = _mm512_set1_epi16(4628);
     const __m512i one = _mm512_set1_epi16(0x4000);
     (void)kh;
     size_t i = 0;
@@ -293,7 +294,7 @@ __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_cos_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
 {
     const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2);
-    const __m256i c1 = _mm256_set1_epi16(25735), c3 = _mm256_set1_epi16(21079), c5 = _mm256_set1_epi16(4776);
+    const __m256i c1 = _mm256_set1_epi16(25733), c3 = _mm256_set1_epi16(21012), c5 = _mm256_set1_epi16(4628);
     const __m256i one = _mm256_set1_epi16(0x4000);
     (void)kh;
     size_t i = 0;
@@ -318,9 +319,9 @@ static void pf_cos_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *r
 static const int16_t pf_cos_q12_q14_fast_k[5] = {
     -29722, /* k[0]: KL (as uint16_t): K = KH 2^16 + KL */
     2,      /* k[1]: KH */
-    25735,  /* k[2]: C1 = P(0) 2^Eo: p = C1 - s q 2^-16 */
-    21079,  /* k[3]: C3 (as uint16_t): q = C3 - s C5 2^-16 */
-    4776,   /* k[4]: C5 (as uint16_t) */
+    25733,  /* k[2]: C1 = P(0) 2^Eo: p = C1 - s q 2^-16 */
+    21012,  /* k[3]: C3 (as uint16_t): q = C3 - s C5 2^-16 */
+    4628,   /* k[4]: C5 (as uint16_t) */
 };
 
 int16_t pf_cos_q12_q14_fast(int16_t x)
