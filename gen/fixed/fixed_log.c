@@ -513,7 +513,14 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),\n"
               "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n",
               cond, G->ot, N, G->it, N);
-    if (jb == 4)
+    /* fs: no f.  pmulhuw(S 2^(jb+1), u) = S (2^jb + j) + floor(S f 2^-16)
+       exactly (u = 2^15 + j 2^(15-jb) + f 2^-(jb+1), and S 2^(jb+1) fits
+       an unsigned word), so V - S (2^jb + j) is stored and f is not formed
+       (one shift fewer); the index u >> (15 - jb) is 2^jb + j. */
+    int fs = 1;
+    for (int j = 0; j < ns; j++)
+        fs &= L->ts[j] >= 0 && ((int64_t)L->ts[j] << (jb + 1)) <= 65535;
+    if (jb == 4 && !fs)
         pf_printf(kern,
                   "/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: u >> 11 is 16 + j) */\n"
                   "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16x2(const int32_t *t)\n{\n"
@@ -523,9 +530,38 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
               "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
               N, G->it, G->ot);
-    const char *wv = jb == 4 ? "w16x2" : "w16";
-    pf_printf(kern, "    const __m512i tv = %s_%s(%s_tv), ts = %s_%s(%s_ts), th = %s_w16(%s_th);\n", N, wv, N, N, wv, N, N,
-              N);
+    if (fs) {
+        pf_printf(kern,
+                  "    /* pmulhuw(S 2^%d, u) = S (%d + j) + floor(S f 2^-16), exact: V - S (%d + j) is\n"
+                  "       stored (words, mod 2^16), and f is not formed */\n"
+                  "    int32_t v2[32], s2[32]%s;\n"
+                  "    for (int k = 0; k < 32; k++) {\n"
+                  "        v2[k] = %s_tv[k & %d] - %s_ts[k & %d] * (%d + (k & %d));\n"
+                  "        s2[k] = %s_ts[k & %d] * %d;\n",
+                  jb + 1, ns, ns, jb == 4 ? "" : ", h2[32]", N, ns - 1, N, ns - 1, ns, ns - 1, N, ns - 1, 2 * ns);
+        if (jb != 4)
+            pf_printf(kern, "        h2[k] = %s_th[k];\n", N);
+        pf_put(kern, "    }\n");
+        if (jb == 4)
+            pf_printf(kern, "    v2[0] = %s_tv[0]; /* index 0 (u = 0): x = 0 alone */\n"
+                            "    const __m512i tv = %s_w16(v2), ts = %s_w16(s2), th = %s_w16(%s_th);\n",
+                      N, N, N, N, N);
+        else {
+            /* x = 0 (u = 0) reads index 0, segment 0's V - 2^jb S: TH[16]
+               takes the difference of the two rounded w (mod 2^16), so the
+               plain add gives the scalar form's value */
+            int32_t kq = 1 << (15 - L->td), t16 = L->tlo ? L->tl[16] : 0;
+            int32_t wo = wrap16((int64_t)L->tv[0] + t16), wn = wrap16((int64_t)wrap16((int64_t)L->tv[0] - (int64_t)L->ts[0] * ns) + t16);
+            int32_t h16 = wrap16((int64_t)L->th[16] + mulhrs16(wo, kq) - mulhrs16(wn, kq));
+            pf_printf(kern, "    h2[16] = %d; /* x = 0 reads index 0 (V[0] - %d S[0]): TH[16] + round(w 2^-%d) the same */\n"
+                            "    const __m512i tv = %s_w16(v2), ts = %s_w16(s2), th = %s_w16(h2);\n",
+                      (int)h16, ns, L->td, N, N, N);
+        }
+    } else {
+        const char *wv = jb == 4 ? "w16x2" : "w16";
+        pf_printf(kern, "    const __m512i tv = %s_%s(%s_tv), ts = %s_%s(%s_ts), th = %s_w16(%s_th);\n", N, wv, N, N, wv, N, N,
+                  N);
+    }
     if (L->tlo)
         pf_printf(kern, "    const __m512i tl = %s_w16(%s_tl);\n", N, N);
     pf_printf(kern, "    const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(%d);\n", 1 << (15 - L->td));
@@ -533,11 +569,17 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                     "        __m512i xv = _mm512_loadu_si512(x + i);\n"
                     "        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),\n"
                     "                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));\n"
-                    "        __m512i u = _mm512_sllv_epi16(xv, lz);\n"
-                    "        __m512i j = _mm512_srli_epi16(u, %d), f = _mm512_slli_epi16(u, %d); /* vpermw reads j's low 5 bits */\n"
-                    "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
-                    "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));\n",
-              15 - jb, jb + 1);
+                    "        __m512i u = _mm512_sllv_epi16(xv, lz);\n");
+    if (fs)
+        pf_printf(kern, "        __m512i j = _mm512_srli_epi16(u, %d); /* vpermw reads its low 5 bits */\n"
+                        "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
+                        "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));\n",
+                  15 - jb);
+    else
+        pf_printf(kern, "        __m512i j = _mm512_srli_epi16(u, %d), f = _mm512_slli_epi16(u, %d); /* vpermw reads j's low 5 bits */\n"
+                        "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
+                        "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));\n",
+                  15 - jb, jb + 1);
     if (L->tlo)
         pf_put(kern, "        w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));\n");
     pf_printf(kern, "        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));\n"
@@ -568,10 +610,14 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put\n"
               "   them back in the words' order.  No vpermw: a table of 16 words is two\n"
               "   vpshufb (its low and its high bytes), the index in both bytes of the word,\n"
-              "   merged by vpblendvb%s.\n",
+              "   merged by vpblendvb%s.%s\n",
               jb == 5 ? "; 32 words are two such tables, the other one's lookup\n"
                         "   zeroed by bit 7 of its index (j + 0x70, j + 0xf0 per byte)"
-                      : "");
+                      : "",
+              fs ? "\n   u = t 2^16 = j 2^(16 - jb) + f 2^-jb (jb segment bits), so pmulhuw(S 2^jb,\n"
+                   "   u) = S j + floor(S f 2^-16), exact: V - S j and S 2^jb are stored, and f\n"
+                   "   is not formed."
+                 : "");
     if (tha)
         pf_printf(kern, "   TH = max(ex - %d, %lld) << %d from ex, no lookup: %lld for x = 0, whose w =\n"
                         "   V[0] rounds to 0 (the scalar form's check).  The same values. */\n",
@@ -617,21 +663,28 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     pf_put(kern, " */\n    for (int k = 0; k < 16; k++) {\n");
     for (int h = 0; h < ns / 16; h++) {
         const char *o = h ? " + 16" : "";
-        char vk[320], vb[32] = "";
+        char vk[320], vb[160] = "";
+        if (fs) /* V - S j: pmulhuw(S 2^jb, u) = S j + floor(S f 2^-16) */
+            snprintf(vb, sizeof vb, " - %s_ts[k%s] * (k%s)", N, o, o);
         if (thm)
-            snprintf(vb, sizeof vb, " - %d", tb << L->td);
+            snprintf(vb + strlen(vb), sizeof vb - strlen(vb), " - %d", tb << L->td);
         if (tlq)
-            snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s] - %lld)", N, o, (long long)tq * ts);
+            snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s]%s - %lld)", N, o, vb, (long long)tq * ts);
         else if (L->tlo)
             snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s] - %s_tv[0]%s)", N, o, N, vb);
-        else if (thm)
+        else if (thm || fs)
             snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s]%s)", N, o, vb);
         else
             snprintf(vk, sizeof vk, "(uint32_t)%s_tv[k%s]", N, o);
         pf_printf(kern, "        b[%d][k] = (uint8_t)%s;\n", qv + h, vk);
         pf_printf(kern, "        b[%d][k] = (uint8_t)(%s >> 8);\n", qv + ns / 16 + h, vk);
-        pf_printf(kern, "        b[%d][k] = (uint8_t)%s_ts[k%s];\n", qs + h, N, o);
-        pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_ts[k%s] >> 8);\n", qs + ns / 16 + h, N, o);
+        if (fs) {
+            pf_printf(kern, "        b[%d][k] = (uint8_t)(%s_ts[k%s] * %d);\n", qs + h, N, o, ns);
+            pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)(%s_ts[k%s] * %d) >> 8);\n", qs + ns / 16 + h, N, o, ns);
+        } else {
+            pf_printf(kern, "        b[%d][k] = (uint8_t)%s_ts[k%s];\n", qs + h, N, o);
+            pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_ts[k%s] >> 8);\n", qs + ns / 16 + h, N, o);
+        }
     }
     if (!tha && !thm && !tlq) {
         pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_th[15 - k] ^ 0x8000u);\n", qh, N);
@@ -650,7 +703,9 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                     "%s"
                     "    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);\n"
                     "    const __m256i kr = _mm256_set1_epi16(%d);\n",
-              jb == 4 ? "    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */\n"
+              jb == 4 && fs ? "    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12 as vpmulhuw */\n"
+                              "    __asm__(\"\" : \"+x\"(c16));\n"
+              : jb == 4 ? "    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */\n"
                         "    __asm__(\"\" : \"+x\"(c16));\n"
                       : "",
               1 << (15 - L->td));
@@ -678,7 +733,10 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                  "        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */\n"
                  "        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);\n");
     if (jb == 4) /* j and f by multiplies: the shifts' ports are the busier (measured 2% faster; not so at 32) */
-        pf_put(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup), f = _mm256_mullo_epi16(u, c16);\n");
+        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup)%s;\n",
+                  fs ? "" : ", f = _mm256_mullo_epi16(u, c16)");
+    else if (fs)
+        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup);\n", 16 - jb);
     else
         pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup), f = _mm256_slli_epi16(u, %d);\n",
                   16 - jb, jb);
@@ -695,7 +753,8 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                   "        __m256i s = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)),\n"
                   "                                       _mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)), hib);\n",
                   qv, qv + 1, qv + 2, qv + 3, qs, qs + 1, qs + 2, qs + 3);
-    pf_put(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));\n");
+    pf_printf(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, %s));%s\n", fs ? "u" : "f",
+              fs ? " /* S 2^jb u 2^-16 = S j + S f 2^-16 */" : "");
     if ((L->tlo && !tlq) || (!tha && !thm && !tlq))
         pf_put(kern, "        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */\n");
     if (L->tlo && !tlq) {
