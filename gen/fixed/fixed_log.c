@@ -611,8 +611,10 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "   them back in the words' order.  No vpermw: a table of 16 words is two\n"
               "   vpshufb (its low and its high bytes), the index in both bytes of the word,\n"
               "   merged by vpblendvb%s.%s\n",
-              jb == 5 ? "; 32 words are two such tables, the other one's lookup\n"
-                        "   zeroed by bit 7 of its index (j + 0x70, j + 0xf0 per byte)"
+              jb == 5 ? "; 32 words are two such tables per plane: entries\n"
+                        "   16-31 looked up by j (vpshufb reads its low 4 bits) plus the\n"
+                        "   bytewise differences of entries 0-15 less 16-31 by j + 0x70 (bit 7\n"
+                        "   set, a zero, for j >= 16), mod 2^8 per byte"
                       : "",
               fs ? "\n   u = t 2^16 = j 2^(16 - jb) + f 2^-jb (jb segment bits), so pmulhuw(S 2^jb,\n"
                    "   u) = S j + floor(S f 2^-16), exact: V - S j and S 2^jb are stored, and f\n"
@@ -686,6 +688,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
             pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_ts[k%s] >> 8);\n", qs + ns / 16 + h, N, o);
         }
     }
+    if (jb == 5) /* entries 0-15 as differences (the lookup by j + 0x70 adds them to 16-31's) */
+        for (int q = 0; q < 4; q++) {
+            int p = q < 2 ? qv + 2 * q : qs + 2 * (q - 2);
+            pf_printf(kern, "        b[%d][k] = (uint8_t)(b[%d][k] - b[%d][k]);\n", p, p, p + 1);
+        }
     if (!tha && !thm && !tlq) {
         pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_th[15 - k] ^ 0x8000u);\n", qh, N);
         pf_printf(kern, "        b[%d][k] = (uint8_t)(((uint32_t)%s_th[15 - k] ^ 0x8000u) >> 8);\n", qh + 1, N);
@@ -710,7 +717,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                       : "",
               1 << (15 - L->td));
     if (jb == 5)
-        pf_put(kern, "    const __m256i c70 = _mm256_set1_epi8(0x70), c80 = _mm256_set1_epi8(-128);\n");
+        pf_put(kern, "    const __m256i c70 = _mm256_set1_epi8(0x70);\n");
     if (tha)
         pf_printf(kern, "    const __m256i ce = _mm256_set1_epi16(%d), lo = _mm256_set1_epi16(%lld);\n", 127 + Ei,
                   (long long)(pf_type_min_stored(&G->out) / ((int64_t)1 << Eo)));
@@ -747,11 +754,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                   qv, qv + 1, qs, qs + 1);
     else
         pf_printf(kern,
-                  "        __m256i a0 = _mm256_add_epi8(jj, c70), a1 = _mm256_xor_si256(a0, c80); /* bit 7 clear: j < 16, j >= 16 */\n"
-                  "        __m256i v = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)),\n"
-                  "                                       _mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)), hib);\n"
-                  "        __m256i s = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)),\n"
-                  "                                       _mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)), hib);\n",
+                  "        __m256i a0 = _mm256_add_epi8(jj, c70); /* bit 7 set (lookup 0) for j >= 16 */\n"
+                  "        __m256i v = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)),\n"
+                  "                                       _mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)), hib);\n"
+                  "        __m256i s = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)),\n"
+                  "                                       _mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)), hib);\n",
                   qv, qv + 1, qv + 2, qv + 3, qs, qs + 1, qs + 2, qs + 3);
     pf_printf(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, %s));%s\n", fs ? "u" : "f",
               fs ? " /* S 2^jb u 2^-16 = S j + S f 2^-16 */" : "");
