@@ -680,7 +680,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     pf_put(kern, " */\n    for (int k = 0; k < 16; k++) {\n");
     for (int h = 0; h < (jb == 3 ? 1 : ns / 16); h++) {
         const char *o = jb == 3 ? " & 7" : h ? " + 16" : "";
-        char vk[320], vb[160] = "";
+        char vk[1024], vb[256] = "";
         if (fs) /* V - S j: pmulhuw(S 2^jb, u) = S j + floor(S f 2^-16) */
             snprintf(vb, sizeof vb, " - %s_ts[k%s] * (k%s)", N, o, o);
         if (thm)
