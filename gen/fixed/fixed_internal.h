@@ -107,7 +107,7 @@ typedef struct {               /* log, log2 */
     double dsplit;             /* |error of e ln2| in the split form: emax |ln2 2^Ep - round(.)| 2^-Ep */
     /* 16-bit lanes, the table kernel (kind 1, fixed_log.c): y = TH[lz] +
        round((V[j] + floor(S[j] f 2^-16) + TL[lz]) 2^-td), 2^tjb-segment tables */
-    int td, tlo, tjb;          /* the final shift; TL used; segment bits (4 or 5) */
+    int td, tlo, tjb;          /* the final shift; TL used; segment bits (3, 4 or 5) */
     int32_t tv[32], ts[32], th[32], tl[32];
     double terr, tseg;         /* max |y - f| (lsb, every input); max segment-line error (2^-Ef) */
 } fx_log_red;

@@ -35,9 +35,9 @@ static void g_log2_1p(mpfr_t y, const mpfr_t t, const void *ctx)
  * An unsigned input of at most 16 bits is x = 2^(15 - lz) (1 + t) with
  * lz = 16 - bitlen(x) (16 for x = 0): u = x << lz has its leading one at
  * bit 15, j = t's top jb bits picks one of 2^jb segments of [0, 1) and f =
- * t's other 15 - jb bits (at 2^-16) the place in it, all exact: jb = 4
- * (16 segments) where the variant's target allows it, else 5 (32: one
- * vpermw of 32 16-bit entries).  F(t) = log(1 + t) or log2(1 + t) is a
+ * t's other 15 - jb bits (at 2^-16) the place in it, all exact: jb = 3
+ * (8 segments) where the variant's target allows it (and S 2^4 fits a
+ * word), else 4 (16), else 5 (32: one vpermw of 32 16-bit entries).  F(t) = log(1 + t) or log2(1 + t) is a
  * line per segment at 2^-Ef, V[j] + floor(S[j] f 2^-16), and e K (e = 15 -
  * lz - Ei) = TH[lz] 2^-Eo + TL[lz] 2^-Ef; the result is TH[lz] + round((V[j]
  * + floor(S[j] f 2^-16) + TL[lz]) 2^-(Ef - Eo)), every step a 16-bit word,
@@ -202,6 +202,17 @@ static int tab_try(fx_gen *G, int base2, int ef, int tlo, int jb, const long dou
     return fx_within(G, 0, L->terr * fx_lsb(G)) ? 0 : -1;
 }
 
+/* 1: every S[j] 2^(jb+1) fits an unsigned word, so the AVX-512 and AVX2
+   loops take pmulhuw(S 2^(jb+1), u) (AVX2: S 2^jb and its u) without
+   forming f (see emit_tab) */
+static int tab_fs(const fx_log_red *L)
+{
+    int fs = 1;
+    for (int j = 0; j < 1 << L->tjb; j++)
+        fs &= L->ts[j] >= 0 && ((int64_t)L->ts[j] << (L->tjb + 1)) <= 65535;
+    return fs;
+}
+
 /* 0: the table kernel is set up and bounded; -2: not for this type pair */
 static int prep_tab(fx_gen *G, int base2)
 {
@@ -212,14 +223,16 @@ static int prep_tab(fx_gen *G, int base2)
     if (!g)
         return -2;
     int rc = -2;
-    /* 16 segments first (one vpshufb per byte plane on AVX2, where 32 take
-       two), then 32; TL only for log (log2's e is exact), and first without
-       it (one lookup fewer) */
-    for (int jb = 4; jb <= 5 && rc != 0; jb++)
+    /* 8 segments first (on AVX2 one vpshufb per table: its 16 bytes hold
+       the 8 words' low and high bytes; only where S 2^4 fits a word, so
+       that no f is formed), then 16 (one vpshufb per byte plane), then 32
+       (two); TL only for log (log2's e is exact), and first without it
+       (one lookup fewer) */
+    for (int jb = 3; jb <= 5 && rc != 0; jb++)
         for (int tlo = 0; tlo <= !base2 && rc != 0; tlo++)
             for (int ef = 15; ef > G->out.exp && rc != 0; ef--) {
                 tab_grid(g, base2, ef);
-                if (tab_try(G, base2, ef, tlo, jb, g) == 0)
+                if (tab_try(G, base2, ef, tlo, jb, g) == 0 && (jb > 3 || tab_fs(&G->log)))
                     rc = 0;
             }
     free(g);
@@ -513,7 +526,12 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),\n"
               "                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);\n}\n",
               cond, G->ot, N, G->it, N);
-    if (jb == 4)
+    /* fs: no f.  pmulhuw(S 2^(jb+1), u) = S (2^jb + j) + floor(S f 2^-16)
+       exactly (u = 2^15 + j 2^(15-jb) + f 2^-(jb+1), and S 2^(jb+1) fits
+       an unsigned word), so V - S (2^jb + j) is stored and f is not formed
+       (one shift fewer); the index u >> (15 - jb) is 2^jb + j. */
+    int fs = tab_fs(L);
+    if (jb == 4 && !fs)
         pf_printf(kern,
                   "/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: u >> 11 is 16 + j) */\n"
                   "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16x2(const int32_t *t)\n{\n"
@@ -523,9 +541,38 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
               "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
               N, G->it, G->ot);
-    const char *wv = jb == 4 ? "w16x2" : "w16";
-    pf_printf(kern, "    const __m512i tv = %s_%s(%s_tv), ts = %s_%s(%s_ts), th = %s_w16(%s_th);\n", N, wv, N, N, wv, N, N,
-              N);
+    if (fs) {
+        pf_printf(kern,
+                  "    /* pmulhuw(S 2^%d, u) = S (%d + j) + floor(S f 2^-16), exact: V - S (%d + j) is\n"
+                  "       stored (words, mod 2^16), and f is not formed */\n"
+                  "    int32_t v2[32], s2[32]%s;\n"
+                  "    for (int k = 0; k < 32; k++) {\n"
+                  "        v2[k] = %s_tv[k & %d] - %s_ts[k & %d] * (%d + (k & %d));\n"
+                  "        s2[k] = %s_ts[k & %d] * %d;\n",
+                  jb + 1, ns, ns, jb <= 4 ? "" : ", h2[32]", N, ns - 1, N, ns - 1, ns, ns - 1, N, ns - 1, 2 * ns);
+        if (jb == 5)
+            pf_printf(kern, "        h2[k] = %s_th[k];\n", N);
+        pf_put(kern, "    }\n");
+        if (jb <= 4)
+            pf_printf(kern, "    v2[0] = %s_tv[0]; /* index 0 (u = 0): x = 0 alone */\n"
+                            "    const __m512i tv = %s_w16(v2), ts = %s_w16(s2), th = %s_w16(%s_th);\n",
+                      N, N, N, N, N);
+        else {
+            /* x = 0 (u = 0) reads index 0, segment 0's V - 2^jb S: TH[16]
+               takes the difference of the two rounded w (mod 2^16), so the
+               plain add gives the scalar form's value */
+            int32_t kq = 1 << (15 - L->td), t16 = L->tlo ? L->tl[16] : 0;
+            int32_t wo = wrap16((int64_t)L->tv[0] + t16), wn = wrap16((int64_t)wrap16((int64_t)L->tv[0] - (int64_t)L->ts[0] * ns) + t16);
+            int32_t h16 = wrap16((int64_t)L->th[16] + mulhrs16(wo, kq) - mulhrs16(wn, kq));
+            pf_printf(kern, "    h2[16] = %d; /* x = 0 reads index 0 (V[0] - %d S[0]): TH[16] + round(w 2^-%d) the same */\n"
+                            "    const __m512i tv = %s_w16(v2), ts = %s_w16(s2), th = %s_w16(h2);\n",
+                      (int)h16, ns, L->td, N, N, N);
+        }
+    } else {
+        const char *wv = jb == 4 ? "w16x2" : "w16";
+        pf_printf(kern, "    const __m512i tv = %s_%s(%s_tv), ts = %s_%s(%s_ts), th = %s_w16(%s_th);\n", N, wv, N, N, wv, N, N,
+                  N);
+    }
     if (L->tlo)
         pf_printf(kern, "    const __m512i tl = %s_w16(%s_tl);\n", N, N);
     pf_printf(kern, "    const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(%d);\n", 1 << (15 - L->td));
@@ -533,11 +580,17 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                     "        __m512i xv = _mm512_loadu_si512(x + i);\n"
                     "        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),\n"
                     "                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));\n"
-                    "        __m512i u = _mm512_sllv_epi16(xv, lz);\n"
-                    "        __m512i j = _mm512_srli_epi16(u, %d), f = _mm512_slli_epi16(u, %d); /* vpermw reads j's low 5 bits */\n"
-                    "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
-                    "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));\n",
-              15 - jb, jb + 1);
+                    "        __m512i u = _mm512_sllv_epi16(xv, lz);\n");
+    if (fs)
+        pf_printf(kern, "        __m512i j = _mm512_srli_epi16(u, %d); /* vpermw reads its low 5 bits */\n"
+                        "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
+                        "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));\n",
+                  15 - jb);
+    else
+        pf_printf(kern, "        __m512i j = _mm512_srli_epi16(u, %d), f = _mm512_slli_epi16(u, %d); /* vpermw reads j's low 5 bits */\n"
+                        "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
+                        "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));\n",
+                  15 - jb, jb + 1);
     if (L->tlo)
         pf_put(kern, "        w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));\n");
     pf_printf(kern, "        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));\n"
@@ -568,10 +621,19 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put\n"
               "   them back in the words' order.  No vpermw: a table of 16 words is two\n"
               "   vpshufb (its low and its high bytes), the index in both bytes of the word,\n"
-              "   merged by vpblendvb%s.\n",
-              jb == 5 ? "; 32 words are two such tables, the other one's lookup\n"
-                        "   zeroed by bit 7 of its index (j + 0x70, j + 0xf0 per byte)"
-                      : "");
+              "   merged by vpblendvb%s.%s\n",
+              jb == 5 ? "; 32 words are two such tables per plane: entries\n"
+                        "   16-31 looked up by j (vpshufb reads its low 4 bits) plus the\n"
+                        "   bytewise differences of entries 0-15 less 16-31 by j + 0x70 (bit 7\n"
+                        "   set, a zero, for j >= 16), mod 2^8 per byte"
+              : jb == 3 ? "; 8 words are one vpshufb: their low bytes at 0-7, their\n"
+                          "   high bytes at 8-15, the index j in the word's low byte and j + 8 in\n"
+                          "   its high byte"
+                      : "",
+              fs ? "\n   u = t 2^16 = j 2^(16 - jb) + f 2^-jb (jb segment bits), so pmulhuw(S 2^jb,\n"
+                   "   u) = S j + floor(S f 2^-16), exact: V - S j and S 2^jb are stored, and f\n"
+                   "   is not formed."
+                 : "");
     if (tha)
         pf_printf(kern, "   TH = max(ex - %d, %lld) << %d from ex, no lookup: %lld for x = 0, whose w =\n"
                         "   V[0] rounds to 0 (the scalar form's check).  The same values. */\n",
@@ -603,36 +665,54 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               N, G->it, G->ot);
     int nq = 0, qv = 0, qs = 0, qh = 0, ql = 0;
     /* byte planes: V (2 or 4), S (2 or 4), TH' (2, lookup only), TL (1 or 2) */
-    qv = nq; nq += 2 * (ns / 16);
-    qs = nq; nq += 2 * (ns / 16);
+    qv = nq; nq += jb == 3 ? 1 : 2 * (ns / 16); /* 8 segments: low bytes at 0-7, high at 8-15 */
+    qs = nq; nq += jb == 3 ? 1 : 2 * (ns / 16);
     if (!tha && !thm && !tlq) { qh = nq; nq += 2; }
     if (L->tlo && !tlq) { ql = nq; nq += tlb ? 1 : 2; }
     pf_printf(kern, "    uint8_t b[%d][16]; /* byte planes: ", nq);
     pf_printf(kern, "V%s%s low, high%s; S low, high%s", tlq ? " - q s" : L->tlo ? " - V[0]" : "", thm ? " - B 2^td" : "",
-              jb == 5 ? " (entries 0-15, 16-31)" : "", jb == 5 ? " (0-15, 16-31)" : "");
+              jb == 5 ? " (entries 0-15, 16-31)" : jb == 3 ? " (bytes 0-7, 8-15 of one plane)" : "",
+              jb == 5 ? " (0-15, 16-31)" : jb == 3 ? " (the same)" : "");
     if (!tha && !thm && !tlq)
         pf_put(kern, "; TH' by bitlen(x) - 1, low, high");
     if (L->tlo && !tlq)
         pf_printf(kern, "; TL + V[0] by bitlen(x) - 1%s", tlb ? " (one byte each)" : ", low, high");
     pf_put(kern, " */\n    for (int k = 0; k < 16; k++) {\n");
-    for (int h = 0; h < ns / 16; h++) {
-        const char *o = h ? " + 16" : "";
-        char vk[320], vb[32] = "";
+    for (int h = 0; h < (jb == 3 ? 1 : ns / 16); h++) {
+        const char *o = jb == 3 ? " & 7" : h ? " + 16" : "";
+        char vk[1024], vb[256] = "";
+        if (fs) /* V - S j: pmulhuw(S 2^jb, u) = S j + floor(S f 2^-16) */
+            snprintf(vb, sizeof vb, " - %s_ts[k%s] * (k%s)", N, o, o);
         if (thm)
-            snprintf(vb, sizeof vb, " - %d", tb << L->td);
+            snprintf(vb + strlen(vb), sizeof vb - strlen(vb), " - %d", tb << L->td);
         if (tlq)
-            snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s] - %lld)", N, o, (long long)tq * ts);
+            snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s]%s - %lld)", N, o, vb, (long long)tq * ts);
         else if (L->tlo)
             snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s] - %s_tv[0]%s)", N, o, N, vb);
-        else if (thm)
+        else if (thm || fs)
             snprintf(vk, sizeof vk, "(uint32_t)(%s_tv[k%s]%s)", N, o, vb);
         else
             snprintf(vk, sizeof vk, "(uint32_t)%s_tv[k%s]", N, o);
+        if (jb == 3) { /* one plane each: entry k & 7's low byte at k < 8, its high byte at k >= 8 (fs holds) */
+            pf_printf(kern, "        b[%d][k] = (uint8_t)(%s >> (k & 8));\n", qv, vk);
+            pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)(%s_ts[k%s] * %d) >> (k & 8));\n", qs, N, o, ns);
+            continue;
+        }
         pf_printf(kern, "        b[%d][k] = (uint8_t)%s;\n", qv + h, vk);
         pf_printf(kern, "        b[%d][k] = (uint8_t)(%s >> 8);\n", qv + ns / 16 + h, vk);
-        pf_printf(kern, "        b[%d][k] = (uint8_t)%s_ts[k%s];\n", qs + h, N, o);
-        pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_ts[k%s] >> 8);\n", qs + ns / 16 + h, N, o);
+        if (fs) {
+            pf_printf(kern, "        b[%d][k] = (uint8_t)(%s_ts[k%s] * %d);\n", qs + h, N, o, ns);
+            pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)(%s_ts[k%s] * %d) >> 8);\n", qs + ns / 16 + h, N, o, ns);
+        } else {
+            pf_printf(kern, "        b[%d][k] = (uint8_t)%s_ts[k%s];\n", qs + h, N, o);
+            pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_ts[k%s] >> 8);\n", qs + ns / 16 + h, N, o);
+        }
     }
+    if (jb == 5) /* entries 0-15 as differences (the lookup by j + 0x70 adds them to 16-31's) */
+        for (int q = 0; q < 4; q++) {
+            int p = q < 2 ? qv + 2 * q : qs + 2 * (q - 2);
+            pf_printf(kern, "        b[%d][k] = (uint8_t)(b[%d][k] - b[%d][k]);\n", p, p, p + 1);
+        }
     if (!tha && !thm && !tlq) {
         pf_printf(kern, "        b[%d][k] = (uint8_t)((uint32_t)%s_th[15 - k] ^ 0x8000u);\n", qh, N);
         pf_printf(kern, "        b[%d][k] = (uint8_t)(((uint32_t)%s_th[15 - k] ^ 0x8000u) >> 8);\n", qh + 1, N);
@@ -648,14 +728,18 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     pf_printf(kern, "    __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */\n"
                     "    __asm__(\"\" : \"+x\"(dup));              /* (a vpmullw, not shifts and adds) */\n"
                     "%s"
-                    "    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);\n"
+                    "    const __m256i lo16 = _mm256_set1_epi32(0xffff)%s;\n"
                     "    const __m256i kr = _mm256_set1_epi16(%d);\n",
-              jb == 4 ? "    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */\n"
+              jb == 3 ? "    const __m256i c800 = _mm256_set1_epi16(0x800); /* the high byte's index: j + 8 */\n"
+              : jb == 4 && fs ? "    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12 as vpmulhuw */\n"
+                              "    __asm__(\"\" : \"+x\"(c16));\n"
+              : jb == 4 ? "    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */\n"
                         "    __asm__(\"\" : \"+x\"(c16));\n"
                       : "",
+              jb != 3 || (!tha && !thm && !tlq) || (L->tlo && !tlq && !tlb) ? ", hib = _mm256_set1_epi16(-256)" : "",
               1 << (15 - L->td));
     if (jb == 5)
-        pf_put(kern, "    const __m256i c70 = _mm256_set1_epi8(0x70), c80 = _mm256_set1_epi8(-128);\n");
+        pf_put(kern, "    const __m256i c70 = _mm256_set1_epi8(0x70);\n");
     if (tha)
         pf_printf(kern, "    const __m256i ce = _mm256_set1_epi16(%d), lo = _mm256_set1_epi16(%lld);\n", 127 + Ei,
                   (long long)(pf_type_min_stored(&G->out) / ((int64_t)1 << Eo)));
@@ -677,25 +761,33 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                  "        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));\n"
                  "        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */\n"
                  "        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);\n");
-    if (jb == 4) /* j and f by multiplies: the shifts' ports are the busier (measured 2% faster; not so at 32) */
-        pf_put(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup), f = _mm256_mullo_epi16(u, c16);\n");
+    if (jb == 3) /* j in the low byte, j + 8 in the high: one vpshufb gives the word */
+        pf_put(kern, "        __m256i jj = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_srli_epi16(u, 13), dup), c800);\n");
+    else if (jb == 4) /* j and f by multiplies: the shifts' ports are the busier (measured 2% faster; not so at 32) */
+        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup)%s;\n",
+                  fs ? "" : ", f = _mm256_mullo_epi16(u, c16)");
+    else if (fs)
+        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup);\n", 16 - jb);
     else
         pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup), f = _mm256_slli_epi16(u, %d);\n",
                   16 - jb, jb);
-    if (jb == 4)
+    if (jb == 3)
+        pf_printf(kern, "        __m256i v = _mm256_shuffle_epi8(q%d, jj), s = _mm256_shuffle_epi8(q%d, jj);\n", qv, qs);
+    else if (jb == 4)
         pf_printf(kern,
                   "        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, jj), _mm256_shuffle_epi8(q%d, jj), hib);\n"
                   "        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, jj), _mm256_shuffle_epi8(q%d, jj), hib);\n",
                   qv, qv + 1, qs, qs + 1);
     else
         pf_printf(kern,
-                  "        __m256i a0 = _mm256_add_epi8(jj, c70), a1 = _mm256_xor_si256(a0, c80); /* bit 7 clear: j < 16, j >= 16 */\n"
-                  "        __m256i v = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)),\n"
-                  "                                       _mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)), hib);\n"
-                  "        __m256i s = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)),\n"
-                  "                                       _mm256_or_si256(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, a1)), hib);\n",
+                  "        __m256i a0 = _mm256_add_epi8(jj, c70); /* bit 7 set (lookup 0) for j >= 16 */\n"
+                  "        __m256i v = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)),\n"
+                  "                                       _mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)), hib);\n"
+                  "        __m256i s = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)),\n"
+                  "                                       _mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)), hib);\n",
                   qv, qv + 1, qv + 2, qv + 3, qs, qs + 1, qs + 2, qs + 3);
-    pf_put(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));\n");
+    pf_printf(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, %s));%s\n", fs ? "u" : "f",
+              fs ? " /* S 2^jb u 2^-16 = S j + S f 2^-16 */" : "");
     if ((L->tlo && !tlq) || (!tha && !thm && !tlq))
         pf_put(kern, "        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */\n");
     if (L->tlo && !tlq) {

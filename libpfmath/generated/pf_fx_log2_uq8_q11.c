@@ -285,7 +285,16 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log2_uq8_q11_
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_log2_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    const __m512i tv = pf_log2_uq8_q11_w16(pf_log2_uq8_q11_tv), ts = pf_log2_uq8_q11_w16(pf_log2_uq8_q11_ts), th = pf_log2_uq8_q11_w16(pf_log2_uq8_q11_th);
+    /* pmulhuw(S 2^6, u) = S (32 + j) + floor(S f 2^-16), exact: V - S (32 + j) is
+       stored (words, mod 2^16), and f is not formed */
+    int32_t v2[32], s2[32], h2[32];
+    for (int k = 0; k < 32; k++) {
+        v2[k] = pf_log2_uq8_q11_tv[k & 31] - pf_log2_uq8_q11_ts[k & 31] * (32 + (k & 31));
+        s2[k] = pf_log2_uq8_q11_ts[k & 31] * 64;
+        h2[k] = pf_log2_uq8_q11_th[k];
+    }
+    h2[16] = -29860; /* x = 0 reads index 0 (V[0] - 32 S[0]): TH[16] + round(w 2^-3) the same */
+    const __m512i tv = pf_log2_uq8_q11_w16(v2), ts = pf_log2_uq8_q11_w16(s2), th = pf_log2_uq8_q11_w16(h2);
     const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(4096);
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
@@ -293,9 +302,9 @@ static void pf_log2_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restri
         __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
                                          _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
         __m512i u = _mm512_sllv_epi16(xv, lz);
-        __m512i j = _mm512_srli_epi16(u, 10), f = _mm512_slli_epi16(u, 6); /* vpermw reads j's low 5 bits */
+        __m512i j = _mm512_srli_epi16(u, 10); /* vpermw reads its low 5 bits */
         __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
-                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));
+                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
         __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
         _mm512_storeu_si512(y + i, r);
     }
@@ -308,8 +317,13 @@ static void pf_log2_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restri
    bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
    them back in the words' order.  No vpermw: a table of 16 words is two
    vpshufb (its low and its high bytes), the index in both bytes of the word,
-   merged by vpblendvb; 32 words are two such tables, the other one's lookup
-   zeroed by bit 7 of its index (j + 0x70, j + 0xf0 per byte).
+   merged by vpblendvb; 32 words are two such tables per plane: entries
+   16-31 looked up by j (vpshufb reads its low 4 bits) plus the
+   bytewise differences of entries 0-15 less 16-31 by j + 0x70 (bit 7
+   set, a zero, for j >= 16), mod 2^8 per byte.
+   u = t 2^16 = j 2^(16 - jb) + f 2^-jb (jb segment bits), so pmulhuw(S 2^jb,
+   u) = S j + floor(S f 2^-16), exact: V - S j and S 2^jb are stored, and f
+   is not formed.
    TH = max(ex - 135, -16) << 11 from ex, no lookup: -32768 for x = 0, whose w =
    V[0] rounds to 0 (the scalar form's check).  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
@@ -317,14 +331,18 @@ static void pf_log2_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *rest
 {
     uint8_t b[8][16]; /* byte planes: V low, high (entries 0-15, 16-31); S low, high (0-15, 16-31) */
     for (int k = 0; k < 16; k++) {
-        b[0][k] = (uint8_t)(uint32_t)pf_log2_uq8_q11_tv[k];
-        b[2][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_tv[k] >> 8);
-        b[4][k] = (uint8_t)pf_log2_uq8_q11_ts[k];
-        b[6][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_ts[k] >> 8);
-        b[1][k] = (uint8_t)(uint32_t)pf_log2_uq8_q11_tv[k + 16];
-        b[3][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_tv[k + 16] >> 8);
-        b[5][k] = (uint8_t)pf_log2_uq8_q11_ts[k + 16];
-        b[7][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_ts[k + 16] >> 8);
+        b[0][k] = (uint8_t)(uint32_t)(pf_log2_uq8_q11_tv[k] - pf_log2_uq8_q11_ts[k] * (k));
+        b[2][k] = (uint8_t)((uint32_t)(pf_log2_uq8_q11_tv[k] - pf_log2_uq8_q11_ts[k] * (k)) >> 8);
+        b[4][k] = (uint8_t)(pf_log2_uq8_q11_ts[k] * 32);
+        b[6][k] = (uint8_t)((uint32_t)(pf_log2_uq8_q11_ts[k] * 32) >> 8);
+        b[1][k] = (uint8_t)(uint32_t)(pf_log2_uq8_q11_tv[k + 16] - pf_log2_uq8_q11_ts[k + 16] * (k + 16));
+        b[3][k] = (uint8_t)((uint32_t)(pf_log2_uq8_q11_tv[k + 16] - pf_log2_uq8_q11_ts[k + 16] * (k + 16)) >> 8);
+        b[5][k] = (uint8_t)(pf_log2_uq8_q11_ts[k + 16] * 32);
+        b[7][k] = (uint8_t)((uint32_t)(pf_log2_uq8_q11_ts[k + 16] * 32) >> 8);
+        b[0][k] = (uint8_t)(b[0][k] - b[1][k]);
+        b[2][k] = (uint8_t)(b[2][k] - b[3][k]);
+        b[4][k] = (uint8_t)(b[4][k] - b[5][k]);
+        b[6][k] = (uint8_t)(b[6][k] - b[7][k]);
     }
     const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
     const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
@@ -338,7 +356,7 @@ static void pf_log2_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *rest
     __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
     const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
     const __m256i kr = _mm256_set1_epi16(4096);
-    const __m256i c70 = _mm256_set1_epi8(0x70), c80 = _mm256_set1_epi8(-128);
+    const __m256i c70 = _mm256_set1_epi8(0x70);
     const __m256i ce = _mm256_set1_epi16(135), lo = _mm256_set1_epi16(-16);
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
@@ -347,13 +365,13 @@ static void pf_log2_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *rest
         __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
         __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
         __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
-        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, 11), dup), f = _mm256_slli_epi16(u, 5);
-        __m256i a0 = _mm256_add_epi8(jj, c70), a1 = _mm256_xor_si256(a0, c80); /* bit 7 clear: j < 16, j >= 16 */
-        __m256i v = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q0, a0), _mm256_shuffle_epi8(q1, a1)),
-                                       _mm256_or_si256(_mm256_shuffle_epi8(q2, a0), _mm256_shuffle_epi8(q3, a1)), hib);
-        __m256i s = _mm256_blendv_epi8(_mm256_or_si256(_mm256_shuffle_epi8(q4, a0), _mm256_shuffle_epi8(q5, a1)),
-                                       _mm256_or_si256(_mm256_shuffle_epi8(q6, a0), _mm256_shuffle_epi8(q7, a1)), hib);
-        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
+        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, 11), dup);
+        __m256i a0 = _mm256_add_epi8(jj, c70); /* bit 7 set (lookup 0) for j >= 16 */
+        __m256i v = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q0, a0), _mm256_shuffle_epi8(q1, jj)),
+                                       _mm256_add_epi8(_mm256_shuffle_epi8(q2, a0), _mm256_shuffle_epi8(q3, jj)), hib);
+        __m256i s = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q4, a0), _mm256_shuffle_epi8(q5, jj)),
+                                       _mm256_add_epi8(_mm256_shuffle_epi8(q6, a0), _mm256_shuffle_epi8(q7, jj)), hib);
+        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, u)); /* S 2^jb u 2^-16 = S j + S f 2^-16 */
         __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
         __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
         _mm256_storeu_si256((__m256i *)(y + i), r);

@@ -278,15 +278,18 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log2_uq8_q11_
     return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
                               _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
 }
-/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: u >> 11 is 16 + j) */
-__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log2_uq8_q11_fast_w16x2(const int32_t *t)
-{
-    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
-}
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    const __m512i tv = pf_log2_uq8_q11_fast_w16x2(pf_log2_uq8_q11_fast_tv), ts = pf_log2_uq8_q11_fast_w16x2(pf_log2_uq8_q11_fast_ts), th = pf_log2_uq8_q11_fast_w16(pf_log2_uq8_q11_fast_th);
+    /* pmulhuw(S 2^5, u) = S (16 + j) + floor(S f 2^-16), exact: V - S (16 + j) is
+       stored (words, mod 2^16), and f is not formed */
+    int32_t v2[32], s2[32];
+    for (int k = 0; k < 32; k++) {
+        v2[k] = pf_log2_uq8_q11_fast_tv[k & 15] - pf_log2_uq8_q11_fast_ts[k & 15] * (16 + (k & 15));
+        s2[k] = pf_log2_uq8_q11_fast_ts[k & 15] * 32;
+    }
+    v2[0] = pf_log2_uq8_q11_fast_tv[0]; /* index 0 (u = 0): x = 0 alone */
+    const __m512i tv = pf_log2_uq8_q11_fast_w16(v2), ts = pf_log2_uq8_q11_fast_w16(s2), th = pf_log2_uq8_q11_fast_w16(pf_log2_uq8_q11_fast_th);
     const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(4096);
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
@@ -294,9 +297,9 @@ static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *r
         __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
                                          _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
         __m512i u = _mm512_sllv_epi16(xv, lz);
-        __m512i j = _mm512_srli_epi16(u, 11), f = _mm512_slli_epi16(u, 5); /* vpermw reads j's low 5 bits */
+        __m512i j = _mm512_srli_epi16(u, 11); /* vpermw reads its low 5 bits */
         __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
-                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));
+                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
         __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
         _mm512_storeu_si512(y + i, r);
     }
@@ -310,6 +313,9 @@ static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *r
    them back in the words' order.  No vpermw: a table of 16 words is two
    vpshufb (its low and its high bytes), the index in both bytes of the word,
    merged by vpblendvb.
+   u = t 2^16 = j 2^(16 - jb) + f 2^-jb (jb segment bits), so pmulhuw(S 2^jb,
+   u) = S j + floor(S f 2^-16), exact: V - S j and S 2^jb are stored, and f
+   is not formed.
    TH = max(ex - 135, -16) << 11 from ex, no lookup: -32768 for x = 0, whose w =
    V[0] rounds to 0 (the scalar form's check).  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
@@ -317,10 +323,10 @@ static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t 
 {
     uint8_t b[4][16]; /* byte planes: V low, high; S low, high */
     for (int k = 0; k < 16; k++) {
-        b[0][k] = (uint8_t)(uint32_t)pf_log2_uq8_q11_fast_tv[k];
-        b[1][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_fast_tv[k] >> 8);
-        b[2][k] = (uint8_t)pf_log2_uq8_q11_fast_ts[k];
-        b[3][k] = (uint8_t)((uint32_t)pf_log2_uq8_q11_fast_ts[k] >> 8);
+        b[0][k] = (uint8_t)(uint32_t)(pf_log2_uq8_q11_fast_tv[k] - pf_log2_uq8_q11_fast_ts[k] * (k));
+        b[1][k] = (uint8_t)((uint32_t)(pf_log2_uq8_q11_fast_tv[k] - pf_log2_uq8_q11_fast_ts[k] * (k)) >> 8);
+        b[2][k] = (uint8_t)(pf_log2_uq8_q11_fast_ts[k] * 16);
+        b[3][k] = (uint8_t)((uint32_t)(pf_log2_uq8_q11_fast_ts[k] * 16) >> 8);
     }
     const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
     const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
@@ -328,7 +334,7 @@ static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t 
     const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
     __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
     __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
-    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */
+    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12 as vpmulhuw */
     __asm__("" : "+x"(c16));
     const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
     const __m256i kr = _mm256_set1_epi16(4096);
@@ -340,10 +346,10 @@ static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t 
         __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
         __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
         __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
-        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup), f = _mm256_mullo_epi16(u, c16);
+        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup);
         __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
         __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
-        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
+        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, u)); /* S 2^jb u 2^-16 = S j + S f 2^-16 */
         __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
         __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
         _mm256_storeu_si256((__m256i *)(y + i), r);

@@ -8,31 +8,31 @@
  *              leading-zero count of x 2^16 + 2^15, vplzcntd; AVX2: the exponent and the 
  *              fraction bits of x converted to float, exact; else branch-free stages), u = x << 
  *              lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment j = 
- *              t's top 4 bits, f = the other 11 (2^-16); log(x) = e ln2 + F(t), F(t) = log(1 + 
+ *              t's top 3 bits, f = the other 12 (2^-16); log(x) = e ln2 + F(t), F(t) = log(1 + 
  *              t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
- * Domain:      log(1+t) on t in [0, 1]: 16 segments [j/16, (j+1)/16)
- * Order:       1 per segment (a line: V[j] + S[j] f), 16-entry tables V, S; TH by lz; int16_t 
+ * Domain:      log(1+t) on t in [0, 1]: 8 segments [j/8, (j+1)/8)
+ * Order:       1 per segment (a line: V[j] + S[j] f), 8-entry tables V, S; TH by lz; int16_t 
  *              words: 16-bit lanes
  * Lanes:       16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count 
  *              (vplzcntd on x 2^16 + 2^15, packed to words), per-element shift (vpsllvw) by 
  *              AVX-512BW/CD intrinsics; x86-64-v3: lookups by vpshufb on byte planes, lz and t 
  *              from x's float (vcvtdq2ps on even and odd words), TH from its exponent by a 
  *              vpmullw and a vpmulhrsw (searched); other clones, scalar form: plain C
- * Method:      per segment: S[j] the chord's rise at 2^-15 through MPFR's F(j/16), F((j+1)/16) 
+ * Method:      per segment: S[j] the chord's rise at 2^-15 through MPFR's F(j/8), F((j+1)/8) 
  *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
- *              floor(S[j] f 2^-16) - F(t) 2^15 over the segment's 2048 inputs (discrete minimax 
+ *              floor(S[j] f 2^-16) - F(t) 2^15 over the segment's 4096 inputs (discrete minimax 
  *              of the integer step, floor included); TH[lz] = round(e ln2 2^11) (MPFR, to 
  *              nearest)
  * Constraints: none per segment (C0 only up to the tables' rounding); x = 0 gives the most 
  *              negative output
  * Formats:     V, S, TH int16_t; w = V[j] + pmulhuw(S[j], f) at 2^-15 (int16_t); result TH[lz] 
  *              + round(w 2^-4), the rounding multiply-high by 2^11 (pmulhrsw), ties up
- * Polynomial:  segment lines within 8.3936 2^-15 (0.5246 LSB) of F(t) at every segment input 
+ * Polynomial:  segment lines within 49.5989 2^-15 (3.0999 LSB) of F(t) at every segment input 
  *              (floor included)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.9138 LSB (polynomial 0.5246, 
- *              arithmetic and reduction 0.3892) = 1.4138 LSB; taken over every input from the 
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 3.4925 LSB (polynomial 3.0999, 
+ *              arithmetic and reduction 0.3926) = 3.9925 LSB; taken over every input from the 
  *              emitted integer steps (the table kernel) against MPFR
- * Sweep:       max 1.3513 LSB at x = 16879 (65.9335938), mean 0.3392 LSB; exhaustive: all 65536 
+ * Sweep:       max 3.9047 LSB at x = 17411 (68.0117188), mean 0.7836 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  log(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
@@ -233,14 +233,12 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    the rounding's multiplier; bw is unused (the AVX-512 and AVX2 loops below
    have their own intrinsics). */
 /* V[j]: the segment line's value at its start, F = log(1 + t) at 2^-15 */
-static const int32_t pf_log_uq8_q11_fast_tv[16] = {
-    7, 1993, 3866, 5637, 7317, 8915, 10440, 11896,
-    13290, 14627, 15912, 17149, 18340, 19490, 20601, 21675,
+static const int32_t pf_log_uq8_q11_fast_tv[8] = {
+    7, 3883, 7331, 10451, 13300, 15921, 18348, 20607,
 };
 /* S[j]: the segment line's rise across the segment, at 2^-15 */
-static const int32_t pf_log_uq8_q11_fast_ts[16] = {
-    1988, 1874, 1772, 1681, 1599, 1525, 1456, 1394,
-    1338, 1286, 1237, 1192, 1150, 1111, 1074, 1041,
+static const int32_t pf_log_uq8_q11_fast_ts[8] = {
+    3862, 3452, 3123, 2851, 2623, 2428, 2260, 2115,
 };
 /* TH[lz] = round(e ln2 2^11), e = 15 - lz - 8 (MPFR); TH[16] (x = 0): the most negative */
 static const int32_t pf_log_uq8_q11_fast_th[32] = {
@@ -255,8 +253,8 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k, in
     /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */
     int lz = 16 - pf_fx_bitlen(x);
     uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */
-    unsigned j = (u >> 11) & 15u;               /* segment: t's top 4 bits */
-    uint16_t f = (uint16_t)(u << 5);            /* t's other 11 bits: the place in it, 2^-16 */
+    unsigned j = (u >> 12) & 7u;               /* segment: t's top 3 bits */
+    uint16_t f = (uint16_t)(u << 4);            /* t's other 12 bits: the place in it, 2^-16 */
     /* F(t) on segment j, at 2^-15: V[j] + floor(S[j] f 2^-16) (pmulhuw) */
     int16_t w = (int16_t)(pf_log_uq8_q11_fast_tv[j] + (int32_t)(((uint32_t)pf_log_uq8_q11_fast_ts[j] * f) >> 16));
     /* e ln2 at 2^-11 plus w rounded once to it */
@@ -279,15 +277,18 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log_uq8_q11_f
     return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
                               _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
 }
-/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: u >> 11 is 16 + j) */
-__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log_uq8_q11_fast_w16x2(const int32_t *t)
-{
-    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
-}
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    const __m512i tv = pf_log_uq8_q11_fast_w16x2(pf_log_uq8_q11_fast_tv), ts = pf_log_uq8_q11_fast_w16x2(pf_log_uq8_q11_fast_ts), th = pf_log_uq8_q11_fast_w16(pf_log_uq8_q11_fast_th);
+    /* pmulhuw(S 2^4, u) = S (8 + j) + floor(S f 2^-16), exact: V - S (8 + j) is
+       stored (words, mod 2^16), and f is not formed */
+    int32_t v2[32], s2[32];
+    for (int k = 0; k < 32; k++) {
+        v2[k] = pf_log_uq8_q11_fast_tv[k & 7] - pf_log_uq8_q11_fast_ts[k & 7] * (8 + (k & 7));
+        s2[k] = pf_log_uq8_q11_fast_ts[k & 7] * 16;
+    }
+    v2[0] = pf_log_uq8_q11_fast_tv[0]; /* index 0 (u = 0): x = 0 alone */
+    const __m512i tv = pf_log_uq8_q11_fast_w16(v2), ts = pf_log_uq8_q11_fast_w16(s2), th = pf_log_uq8_q11_fast_w16(pf_log_uq8_q11_fast_th);
     const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(2048);
     size_t i = 0;
     for (; i + 32 <= n; i += 32) {
@@ -295,9 +296,9 @@ static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *re
         __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
                                          _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
         __m512i u = _mm512_sllv_epi16(xv, lz);
-        __m512i j = _mm512_srli_epi16(u, 11), f = _mm512_slli_epi16(u, 5); /* vpermw reads j's low 5 bits */
+        __m512i j = _mm512_srli_epi16(u, 12); /* vpermw reads its low 5 bits */
         __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
-                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));
+                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
         __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
         _mm512_storeu_si512(y + i, r);
     }
@@ -310,7 +311,12 @@ static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *re
    bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
    them back in the words' order.  No vpermw: a table of 16 words is two
    vpshufb (its low and its high bytes), the index in both bytes of the word,
-   merged by vpblendvb.
+   merged by vpblendvb; 8 words are one vpshufb: their low bytes at 0-7, their
+   high bytes at 8-15, the index j in the word's low byte and j + 8 in
+   its high byte.
+   u = t 2^16 = j 2^(16 - jb) + f 2^-jb (jb segment bits), so pmulhuw(S 2^jb,
+   u) = S j + floor(S f 2^-16), exact: V - S j and S 2^jb are stored, and f
+   is not formed.
    TH + B = A e' + round(e' K 2^-15) (mod 2^16), A = 1419, K = 18239, B = 1656,
    e' = max(ex - 180, -161): no lookup (pfmathgen searched A, K, B and the
    shift of e' for every lz < 16); V - B 2^4 is stored, so the sum is
@@ -319,22 +325,17 @@ static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *re
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_log_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    uint8_t b[4][16]; /* byte planes: V - B 2^td low, high; S low, high */
+    uint8_t b[2][16]; /* byte planes: V - B 2^td low, high (bytes 0-7, 8-15 of one plane); S low, high (the same) */
     for (int k = 0; k < 16; k++) {
-        b[0][k] = (uint8_t)(uint32_t)(pf_log_uq8_q11_fast_tv[k] - 26496);
-        b[1][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_fast_tv[k] - 26496) >> 8);
-        b[2][k] = (uint8_t)pf_log_uq8_q11_fast_ts[k];
-        b[3][k] = (uint8_t)((uint32_t)pf_log_uq8_q11_fast_ts[k] >> 8);
+        b[0][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_fast_tv[k & 7] - pf_log_uq8_q11_fast_ts[k & 7] * (k & 7) - 26496) >> (k & 8));
+        b[1][k] = (uint8_t)((uint32_t)(pf_log_uq8_q11_fast_ts[k & 7] * 8) >> (k & 8));
     }
     const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
     const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
-    const __m256i q2 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
-    const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
     __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
     __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
-    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12, u << 4 as vpmulhuw, vpmullw */
-    __asm__("" : "+x"(c16));
-    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
+    const __m256i c800 = _mm256_set1_epi16(0x800); /* the high byte's index: j + 8 */
+    const __m256i lo16 = _mm256_set1_epi32(0xffff);
     const __m256i kr = _mm256_set1_epi16(2048);
     const __m256i ce = _mm256_set1_epi16(180), lo = _mm256_set1_epi16(-161);
     __m256i ka = _mm256_set1_epi16(1419), kb = _mm256_set1_epi16(18239); /* A, K */
@@ -346,10 +347,9 @@ static void pf_log_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *
         __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
         __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
         __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
-        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup), f = _mm256_mullo_epi16(u, c16);
-        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
-        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
-        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, f));
+        __m256i jj = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_srli_epi16(u, 13), dup), c800);
+        __m256i v = _mm256_shuffle_epi8(q0, jj), s = _mm256_shuffle_epi8(q1, jj);
+        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, u)); /* S 2^jb u 2^-16 = S j + S f 2^-16 */
         __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);
         __m256i th = _mm256_add_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(e, kb)); /* TH + B */
         __m256i r = _mm256_adds_epi16(th, _mm256_mulhrs_epi16(w, kr));
