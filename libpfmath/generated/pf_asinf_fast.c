@@ -139,6 +139,20 @@ static inline float pf_asinf_fast_sel(int vec, int c, float a, float b)
     return vec ? (c ? a : b) : pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
 }
 
+/* Horner on v = 4 z with the coefficients scaled by 4^-k (exact: powers of
+   two, folded at compile time): every step is the z-form's step times a power
+   of two, so the same bits as q(z) with 4z in place of z */
+static inline float pf_asinf_fast_h4(float v, const float *c, int n)
+{
+    float s = c[n - 1] / (float)(1u << (2 * (n - 1)));
+#if defined(__GNUC__)
+#pragma GCC unroll 32
+#endif
+    for (int k = n - 2; k >= 0; k--)
+        s = fmaf(s, v, c[k] / (float)(1u << (2 * k)));
+    return s;
+}
+
 static inline float pf_asinf_fast_body(float x, int vec)
 {
     float a = fabsf(x);
@@ -146,16 +160,21 @@ static inline float pf_asinf_fast_body(float x, int vec)
        emits masked moves on two compares (a > 1/2 in some selects and
        a <= 1/2 in others, which differ for NaN, cost it a third one) */
     int small = !(a > 0.5f);
-    float z = pf_asinf_fast_sel(vec, small, a * a, fmaf(-0.5f, a, 0.5f));
-    /* S = 2 sqrtf(w) is sqrtf(2 - 2a) to the bit (2 - 2a = 4w exactly, and
-       scaling by 4 commutes with a correctly rounded square root): one
-       product by -2 on the square root of z itself, where 2 - 2a took an
-       fmaf and the sign a xor */
-    float t = pf_asinf_fast_sel(vec, small, a, -2.0f * sqrtf(z));
-    float k = pf_asinf_fast_sel(vec, small, 0.0f, PF_PIO2_HI);
-    float q = pf_horner_fma(z, pf_asinf_fast_C, 3);   /* 1 + c3 z + ... */
-    /* fmaf(t, q, k) = asin|x| >= +0 (or NaN): copysignf puts x's sign on
-       it (asin(-0) = -0), one vpternlogd in the AVX-512 loop */
+    /* v = 4z: (2x)^2 = 4 x^2 (x + x exact) or 2 - 2a = 4w (exact for a in
+       [1/2, 1]), so that S = sqrtf(v) is sqrtf(2 - 2a) itself: no product
+       by -2 after the square root (2 sqrtf(w) = sqrtf(4w) to the bit:
+       scaling by 4 commutes with a correctly rounded square root) */
+    float x2 = x + x;
+    float v = pf_asinf_fast_sel(vec, small, x2 * x2, fmaf(-2.0f, a, 2.0f));
+    float S = sqrtf(v);
+    /* the big lanes computed negated, S q - pi/2 = -(pi/2 - S q) to the bit
+       (round to nearest is symmetric), so t = S takes no sign: copysignf
+       below keeps only the magnitude */
+    float t = pf_asinf_fast_sel(vec, small, a, S);
+    float k = pf_asinf_fast_sel(vec, small, 0.0f, -PF_PIO2_HI);
+    float q = pf_asinf_fast_h4(v, pf_asinf_fast_C, 3);   /* 1 + c3 z + ..., z = v/4 */
+    /* |fmaf(t, q, k)| = asin|x| (or NaN): copysignf puts x's sign on it
+       (asin(-0) = -0), one vpternlogd in the AVX-512 loop */
     return copysignf(fmaf(t, q, k), x);
 }
 
