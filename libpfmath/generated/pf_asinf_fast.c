@@ -4,7 +4,7 @@
  * Reduction:   |x| <= 1/2: t = |x|; |x| > 1/2: asin|x| = pi/2 - 2 asin(t), t = sqrt((1 - |x|)/2)
  * Domain:      asin(t) on t in [0x0p+0, 0x1p-1]  (0 .. 0.5)
  * Order:       5 (float coefficients, Horner in float with fmaf)
- * Evaluation:  q(z) = 1 + c3 z + ... by fmaf Horner in float; r = fmaf(t, q, k), t = x or S = sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, pi/2 or pi as the nearest float; at most 0.326 of the fast bound max(2^-10 |f|, 2^-11) (at x = 0x1.001p-1)
+ * Evaluation:  q(z) = 1 + c3 z + ... by fmaf Horner in float (on v = 4z, c_k times 4^-k: the same bits); r = fmaf(t, q, k), t = x or S = sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, pi/2 or pi as the nearest float; at most 0.326 of the fast bound max(2^-10 |f|, 2^-11) (at x = 0x1.001p-1)
  * Error model: at most 2794.119 ULP (fit error and every rounding of the scheme)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1, p(1/2) = pi/6, p'(1/2) = 2/sqrt(3)
@@ -111,8 +111,12 @@ static const float pf_asinf_fast_C[3] = {
      |x| >  1/2:  asin|x| = pi/2 - S q(z),     S = sqrt(2 - 2a) = 2 sqrt(w),
                   a = |x|                      z = w = (1 - a)/2
    (asin a = pi/2 - 2 asin sqrt(w); z = w is (S/2)^2 without S's rounding).
-   Both are one fmaf t q + k: (t, k) = (|x|, 0) or (-S, pi/2), and x's
-   sign is put on the result by copysignf (asin(-0) = -0).  w is exact for
+   Both are one fmaf t q + k: (t, k) = (|x|, 0) or, negated (round to
+   nearest is symmetric: the same magnitude to the bit), (S, -pi/2), and
+   x's sign is put on the result's magnitude by copysignf (asin(-0) = -0).
+   q runs on v = 4z ((x + x)^2 or 2 - 2a, exact) with c_k scaled by 4^-k,
+   each step the z form's times a power of two: the same bits, and
+   S = sqrtf(v) with no product by 2 or sign after the square root.  w is exact for
    a in [1/2, 1] (Sterbenz; the fmaf rounds once), S = 2 sqrtf(w) is
    correctly rounded, so what is left is the fit (2^-12.6
    of p) and a few float roundings; above 1/2 the fit's error is scaled by
@@ -125,10 +129,11 @@ static const float pf_asinf_fast_C[3] = {
    so, see mk/lib-atrig.mk; the flag cannot be set by a pragma); compiled
    with errno semantics the array loop runs one lane at a time and gives
    the same bits (sqrtf is correctly rounded either way).  |x| > 1 (inf
-   included) makes w < 0 and S, hence the result, NaN (the domain error)
+   included) makes v < 0 and S, hence the result, NaN (the domain error)
    in the big lanes.  A NaN x takes the small lanes, where t = |x| and
-   z = |x| |x| carry the same NaN: which operand the final fmaf passes on
-   does not matter, so every clone returns the same bits (with x's sign).  No select after the
+   v = (x + x)^2 carry the same NaN up to its sign: which operand the final
+   fmaf passes on does not matter, copysignf sets the sign, so every clone
+   returns the same bits (with x's sign).  No select after the
    polynomial, one evaluation of q. */
 /* Build flags: -fno-math-errno (for vsqrtps; tests/check-vectorize.sh reads this line) */
 /* c ? a : b: as ?: in the array loop (vec = 1), on the bits in the scalar
