@@ -268,11 +268,12 @@ static int model_asin_acos_fast(const fit_poly *p, int order, pf_scheme *sc, int
     sc->ncomp = 0;
     sc->bound_ulp = m.ulps;
     snprintf(sc->text, sizeof sc->text,
-             "q(z) = 1 + c3 z + ... by fmaf Horner in float%s; r = fmaf(t, q, k), t = x or S = "
+             "q(z) = 1 + c3 z + ... by fmaf Horner in float (on v = 4z, c_k times 4^-k: the same "
+             "bits); r = fmaf(t, q, k), t = x or S = "
              "sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, "
              "pi/2 or pi as the nearest float; at most %.3f of the fast bound max(2^-10 |f|, "
              "2^-11) (at x = %a)",
-             acos_ ? "" : " (on v = 4z, c_k times 4^-k: the same bits)", m.frac, m.frac_at);
+             m.frac, m.frac_at);
     if (m.frac > 1) /* a lower order asked for: said, not refused; the sweep decides */
         snprintf(sc->text, sizeof sc->text,
                  "q(z) by fmaf Horner, r = fmaf(t, q, k); the model does not prove the fast bound "
