@@ -250,8 +250,9 @@ static int extra_pi_float(char *buf, size_t n)
 
 /* asin's lite row (gen/templates/asin_lite.c.in): the mid template without
    its Fast2Sum, (khi + u) + fmaf(u z, q, klo), and with the square root of
-   z itself, 2 sqrt(w) one exact product (no separate 2 - 2a): about the
-   fast template's operations (ladder_cost 1: after it at the same order). */
+   the polynomial's variable itself (q runs on v = 4z, so sqrtf(v) = 2 sqrtf(w)
+   to the bit; no separate 2 - 2a, no product by -2): about the fast
+   template's operations (ladder_cost 1: after it at the same order). */
 #define ROW_ASIN_LITE(fn, tm, red, mo)                                                            \
     {.func = fn, .reduction = "sqrthalf", .variant = "lite", .tmpl = tm, .arity = 1,              \
      .reduction_text = red, .target_text = "asin(t)", .g = g_asin, .a = 0, .b = 0.5,              \

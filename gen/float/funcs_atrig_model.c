@@ -268,7 +268,8 @@ static int model_asin_acos_fast(const fit_poly *p, int order, pf_scheme *sc, int
     sc->ncomp = 0;
     sc->bound_ulp = m.ulps;
     snprintf(sc->text, sizeof sc->text,
-             "q(z) = 1 + c3 z + ... by fmaf Horner in float; r = fmaf(t, q, k), t = x or S = "
+             "q(z) = 1 + c3 z + ... by fmaf Horner in float (on v = 4z, c_k times 4^-k: the same "
+             "bits); r = fmaf(t, q, k), t = x or S = "
              "sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, "
              "pi/2 or pi as the nearest float; at most %.3f of the fast bound max(2^-10 |f|, "
              "2^-11) (at x = %a)",
@@ -572,7 +573,9 @@ int pf_model_atan2_lite(const fit_poly *p, int order, pf_scheme *sc)
  * q's running Horner bound (half an ULP of each partial sum, plus
  * |q'| dz), fl(u z)'s half ULP times |q|, c's half ULP, khi + u's half ULP
  * (none when K = 0 or 2s >= khi/2, Sterbenz), s's rounding through the
- * slope 2/sqrt(1 - s^2) of 2 asin(s), and K's representation (2^-48). */
+ * slope 2/sqrt(1 - s^2) of 2 asin(s), and K's representation (2^-48).
+ * The template computes the same bits on v = 4z (2s = sqrtf(4w), the big
+ * lanes negated): powers of two and signs change no rounding. */
 /* u as |u|, k = |K|, klo = |klo|, red s's rounding moved to the result */
 static void point_asin_lite(model *m, double x, double truth, double u, double k, double z,
                             double dz, double red, double klo)
@@ -605,7 +608,8 @@ int pf_model_asin_lite(const fit_poly *p, int order, pf_scheme *sc)
         point_asin_lite(&m, xb, asin(xb), 2 * s, pio2, w, 0, 2 * half_ulp(s) / sqrt(1 - w), klo2);
     }
     return finish_mid(&m, sc,
-                      "q(z) by fmaf Horner in float; fmaf(u z, q, k + u), u = |x| or -2 sqrtf(w) "
+                      "q(z) by fmaf Horner in float (on v = 4z, c_k times powers of 4: the same "
+                      "bits); fmaf(u z, q, k + u), u = |x| or -2 sqrtf(w) = -sqrtf(4w) "
                       "(z = x^2 or w = (1 - |x|)/2 exact), k = 0 or pi/2 as the nearest float, "
                       "k + u rounded once; one final rounding");
 }

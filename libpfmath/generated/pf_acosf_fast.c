@@ -4,7 +4,7 @@
  * Reduction:   |x| <= 1/2: acos x = pi/2 - asin x; x > 1/2: 2 asin(t), t = sqrt((1 - x)/2); x < -1/2: pi - 2 asin(t), t = sqrt((1 + x)/2)
  * Domain:      asin(t) on t in [0x0p+0, 0x1p-1]  (0 .. 0.5)
  * Order:       5 (float coefficients, Horner in float with fmaf)
- * Evaluation:  q(z) = 1 + c3 z + ... by fmaf Horner in float; r = fmaf(t, q, k), t = x or S = sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, pi/2 or pi as the nearest float; at most 0.163 of the fast bound max(2^-10 |f|, 2^-11) (at x = 0x1.001p-1)
+ * Evaluation:  q(z) = 1 + c3 z + ... by fmaf Horner in float (on v = 4z, c_k times 4^-k: the same bits); r = fmaf(t, q, k), t = x or S = sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, pi/2 or pi as the nearest float; at most 0.163 of the fast bound max(2^-10 |f|, 2^-11) (at x = 0x1.001p-1)
  * Error model: at most 2667.997 ULP (fit error and every rounding of the scheme)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1, p(1/2) = pi/6, p'(1/2) = 2/sqrt(3)
@@ -119,7 +119,12 @@ static const float pf_acosf_fast_C[3] = {
    The square root is sqrtf, vectorized (vsqrtps) only without errno
    semantics: see asin_fast.c.in and mk/lib-atrig.mk.  |x| > 1 (inf
    included) gives S = NaN, hence a NaN result (the domain error); a NaN x
-   stays NaN through t = -x.  No select after the polynomial. */
+   stays NaN through t = x.  No select after the polynomial.
+   As computed: q by Horner on v = 4z ((x + x)^2 or 2 - 2|x|, exact) with
+   c_k scaled by 4^-k, S = sqrtf(v), and the branches with a minus sign
+   negated, (t, k) = (x, -pi/2), (S, 0), (S, -pi), so t needs no sign
+   operation; fabsf gives the result (powers of two and signs change no
+   rounding: the same bits as the formulas above). */
 /* Build flags: -fno-math-errno (for vsqrtps; tests/check-vectorize.sh reads this line) */
 /* c ? a : b: as ?: in the array loop (vec = 1), on the bits in the scalar
    form (vec = 0, a constant after inlining; see the tail below) */
@@ -127,6 +132,20 @@ static inline float pf_acosf_fast_sel(int vec, int c, float a, float b)
 {
     uint32_t m = 0u - (uint32_t)c;
     return vec ? (c ? a : b) : pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
+}
+
+/* Horner on v = 4 z with the coefficients scaled by 4^-k (exact: powers of
+   two, folded at compile time): every step is the z form's step times a
+   power of two, so the same bits as q(z) */
+static inline float pf_acosf_fast_h4(float v, const float *c, int n)
+{
+    float s = c[n - 1] / (float)(1u << (2 * (n - 1)));
+#if defined(__GNUC__)
+#pragma GCC unroll 32
+#endif
+    for (int k = n - 2; k >= 0; k--)
+        s = fmaf(s, v, c[k] / (float)(1u << (2 * k)));
+    return s;
 }
 
 static inline float pf_acosf_fast_body(float x, int vec)
@@ -137,15 +156,21 @@ static inline float pf_acosf_fast_body(float x, int vec)
     /* all ones when x's sign bit is set: for |x| > 1/2 the x < -1/2 lanes
        (an integer shift, not a second float compare) */
     uint32_t neg = 0u - (ix >> 31);
-    float z = pf_acosf_fast_sel(vec, big, fmaf(-0.5f, a, 0.5f), x * x);
-    float S = sqrtf(fmaf(-2.0f, a, 2.0f));
-    float t = pf_acosf_fast_sel(vec, big, pf_asfloat(pf_asuint(S) ^ (neg & 0x80000000u)), -x);
-    float k = pf_acosf_fast_sel(vec, big, pf_asfloat(pf_asuint(PF_PI_HI) & neg), PF_PIO2_HI);
-    float q = pf_horner_fma(z, pf_acosf_fast_C, 3);   /* 1 + c3 z + ... */
-    /* acos >= 0: the sign bit cleared changes no result but a NaN's (x NaN
-       takes the small lanes, where t = -x and z = x x carry it with
-       opposite signs, and which one the fmaf passes on depends on the
-       clone's operand order) */
+    /* v = 4z: (x + x)^2 = 4 x^2 or 2 - 2|x| = 4w (exact for |x| in
+       [1/2, 1]), so S = sqrtf(v) is sqrtf(2 - 2|x|) itself */
+    float x2 = x + x;
+    float v = pf_acosf_fast_sel(vec, big, fmaf(-2.0f, a, 2.0f), x2 * x2);
+    float S = sqrtf(v);
+    /* the lanes |x| <= 1/2 and x < -1/2 computed negated, x q - pi/2 and
+       S q - pi (round to nearest is symmetric: the same magnitude to the
+       bit), so t = x or S takes no sign operation and fabsf ends it */
+    float t = pf_acosf_fast_sel(vec, big, S, x);
+    float k = pf_acosf_fast_sel(vec, big, pf_asfloat(pf_asuint(-PF_PI_HI) & neg), -PF_PIO2_HI);
+    float q = pf_acosf_fast_h4(v, pf_acosf_fast_C, 3);   /* 1 + c3 z + ..., z = v/4 */
+    /* acos >= 0: the sign bit cleared gives it, and a NaN's sign (x NaN
+       takes the small lanes, where t = x and v = (x + x)^2 carry it, and
+       which one the fmaf passes on depends on the clone's operand order)
+       is the same on every clone */
     return fabsf(fmaf(t, q, k));
 }
 

@@ -4,7 +4,7 @@
  * Reduction:   |x| <= 1/2: t = |x|; |x| > 1/2: asin|x| = pi/2 - 2 asin(t), t = sqrt((1 - |x|)/2)
  * Domain:      asin(t) on t in [0x0p+0, 0x1p-1]  (0 .. 0.5)
  * Order:       5 (float coefficients, Horner in float with fmaf)
- * Evaluation:  q(z) = 1 + c3 z + ... by fmaf Horner in float; r = fmaf(t, q, k), t = x or S = sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, pi/2 or pi as the nearest float; at most 0.326 of the fast bound max(2^-10 |f|, 2^-11) (at x = 0x1.001p-1)
+ * Evaluation:  q(z) = 1 + c3 z + ... by fmaf Horner in float (on v = 4z, c_k times 4^-k: the same bits); r = fmaf(t, q, k), t = x or S = sqrtf(2 - 2|x|) (correctly rounded) with a sign, z = x^2 or (1 - |x|)/2 (exact), k = 0, pi/2 or pi as the nearest float; at most 0.326 of the fast bound max(2^-10 |f|, 2^-11) (at x = 0x1.001p-1)
  * Error model: at most 2794.119 ULP (fit error and every rounding of the scheme)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1, p(1/2) = pi/6, p'(1/2) = 2/sqrt(3)
@@ -111,8 +111,12 @@ static const float pf_asinf_fast_C[3] = {
      |x| >  1/2:  asin|x| = pi/2 - S q(z),     S = sqrt(2 - 2a) = 2 sqrt(w),
                   a = |x|                      z = w = (1 - a)/2
    (asin a = pi/2 - 2 asin sqrt(w); z = w is (S/2)^2 without S's rounding).
-   Both are one fmaf t q + k: (t, k) = (|x|, 0) or (-S, pi/2), and x's
-   sign is put on the result by copysignf (asin(-0) = -0).  w is exact for
+   Both are one fmaf t q + k: (t, k) = (|x|, 0) or, negated (round to
+   nearest is symmetric: the same magnitude to the bit), (S, -pi/2), and
+   x's sign is put on the result's magnitude by copysignf (asin(-0) = -0).
+   q runs on v = 4z ((x + x)^2 or 2 - 2a, exact) with c_k scaled by 4^-k,
+   each step the z form's times a power of two: the same bits, and
+   S = sqrtf(v) with no product by 2 or sign after the square root.  w is exact for
    a in [1/2, 1] (Sterbenz; the fmaf rounds once), S = 2 sqrtf(w) is
    correctly rounded, so what is left is the fit (2^-12.6
    of p) and a few float roundings; above 1/2 the fit's error is scaled by
@@ -125,10 +129,11 @@ static const float pf_asinf_fast_C[3] = {
    so, see mk/lib-atrig.mk; the flag cannot be set by a pragma); compiled
    with errno semantics the array loop runs one lane at a time and gives
    the same bits (sqrtf is correctly rounded either way).  |x| > 1 (inf
-   included) makes w < 0 and S, hence the result, NaN (the domain error)
+   included) makes v < 0 and S, hence the result, NaN (the domain error)
    in the big lanes.  A NaN x takes the small lanes, where t = |x| and
-   z = |x| |x| carry the same NaN: which operand the final fmaf passes on
-   does not matter, so every clone returns the same bits (with x's sign).  No select after the
+   v = (x + x)^2 carry the same NaN up to its sign: which operand the final
+   fmaf passes on does not matter, copysignf sets the sign, so every clone
+   returns the same bits (with x's sign).  No select after the
    polynomial, one evaluation of q. */
 /* Build flags: -fno-math-errno (for vsqrtps; tests/check-vectorize.sh reads this line) */
 /* c ? a : b: as ?: in the array loop (vec = 1), on the bits in the scalar
@@ -139,6 +144,20 @@ static inline float pf_asinf_fast_sel(int vec, int c, float a, float b)
     return vec ? (c ? a : b) : pf_asfloat((pf_asuint(a) & m) | (pf_asuint(b) & ~m));
 }
 
+/* Horner on v = 4 z with the coefficients scaled by 4^-k (exact: powers of
+   two, folded at compile time): every step is the z-form's step times a power
+   of two, so the same bits as q(z) with 4z in place of z */
+static inline float pf_asinf_fast_h4(float v, const float *c, int n)
+{
+    float s = c[n - 1] / (float)(1u << (2 * (n - 1)));
+#if defined(__GNUC__)
+#pragma GCC unroll 32
+#endif
+    for (int k = n - 2; k >= 0; k--)
+        s = fmaf(s, v, c[k] / (float)(1u << (2 * k)));
+    return s;
+}
+
 static inline float pf_asinf_fast_body(float x, int vec)
 {
     float a = fabsf(x);
@@ -146,16 +165,21 @@ static inline float pf_asinf_fast_body(float x, int vec)
        emits masked moves on two compares (a > 1/2 in some selects and
        a <= 1/2 in others, which differ for NaN, cost it a third one) */
     int small = !(a > 0.5f);
-    float z = pf_asinf_fast_sel(vec, small, a * a, fmaf(-0.5f, a, 0.5f));
-    /* S = 2 sqrtf(w) is sqrtf(2 - 2a) to the bit (2 - 2a = 4w exactly, and
-       scaling by 4 commutes with a correctly rounded square root): one
-       product by -2 on the square root of z itself, where 2 - 2a took an
-       fmaf and the sign a xor */
-    float t = pf_asinf_fast_sel(vec, small, a, -2.0f * sqrtf(z));
-    float k = pf_asinf_fast_sel(vec, small, 0.0f, PF_PIO2_HI);
-    float q = pf_horner_fma(z, pf_asinf_fast_C, 3);   /* 1 + c3 z + ... */
-    /* fmaf(t, q, k) = asin|x| >= +0 (or NaN): copysignf puts x's sign on
-       it (asin(-0) = -0), one vpternlogd in the AVX-512 loop */
+    /* v = 4z: (2x)^2 = 4 x^2 (x + x exact) or 2 - 2a = 4w (exact for a in
+       [1/2, 1]), so that S = sqrtf(v) is sqrtf(2 - 2a) itself: no product
+       by -2 after the square root (2 sqrtf(w) = sqrtf(4w) to the bit:
+       scaling by 4 commutes with a correctly rounded square root) */
+    float x2 = x + x;
+    float v = pf_asinf_fast_sel(vec, small, x2 * x2, fmaf(-2.0f, a, 2.0f));
+    float S = sqrtf(v);
+    /* the big lanes computed negated, S q - pi/2 = -(pi/2 - S q) to the bit
+       (round to nearest is symmetric), so t = S takes no sign: copysignf
+       below keeps only the magnitude */
+    float t = pf_asinf_fast_sel(vec, small, a, S);
+    float k = pf_asinf_fast_sel(vec, small, 0.0f, -PF_PIO2_HI);
+    float q = pf_asinf_fast_h4(v, pf_asinf_fast_C, 3);   /* 1 + c3 z + ..., z = v/4 */
+    /* |fmaf(t, q, k)| = asin|x| (or NaN): copysignf puts x's sign on it
+       (asin(-0) = -0), one vpternlogd in the AVX-512 loop */
     return copysignf(fmaf(t, q, k), x);
 }
 
