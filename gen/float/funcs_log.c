@@ -419,6 +419,10 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
    the 1-ULP level, tabc takes the levels below the exact row's 0.76 ULP
    down to its own floor. */
 #define TABC_COST 20
+/* the lean log2 row (variant "tabl", gen/templates/log2_tabl.c.in): two
+   tables, no low parts, one rounding into the result (see the measurements
+   in the commit that added it). */
+#define TABL_COST 8
 #define TAB_TEXT                                                                                   \
     "x = 2^k z, z in [0x1.66p-1, 0x1.66p+0) by its bits from OFF, 16 subintervals by the next 4 bits, " \
     "t = r = z INVC[i] - 1 (the table below)"
@@ -474,6 +478,9 @@ const pf_spec pf_specs_log[] = {
     {"log2", "balanced", "tabc", "log_tabf", 1, TAB_TEXT, "log2(1+t) - t/ln2", g_log2rem, -PF_LOGTAB_R, PF_LOGTAB_R,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 0")}, 5, 0, "fma",
      NULL, 0, NULL, pf_extra_log2tabf, pf_model_log2tabc, NULL, "log_tabf_tail.c", TABC_COST},
+    {"log2", "balanced", "tabl", "log2_tabl", 1, TAB_TEXT, "log2(1+t)", g_log2_1p, -PF_LOGTL_R, PF_LOGTL_R,
+     FIT_PARITY_NONE, FIT_REL, 1, {LOG_CON_ZERO}, 4, 0, "fma",
+     NULL, 0, NULL, pf_extra_log2tabl, pf_model_log2tabl, NULL, "log2_tabl_tail.c", TABL_COST},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_twopath.c", 0},
     {0},
