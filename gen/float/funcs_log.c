@@ -420,8 +420,15 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
    down to its own floor. */
 #define TABC_COST 20
 /* the lean log2 row (variant "tabl", gen/templates/log2_tabl.c.in): two
-   tables, no low parts, one rounding into the result (see the measurements
-   in the commit that added it). */
+   tables, no low parts, one rounding into the result; 14 vector operations
+   a step on AVX-512 against tabf's 18.  Measured (pfbench --ladder with
+   sampled levels, 2026-11-26, two runs) at order 4 (model 1.68 ULP,
+   measured 1.36): AVX-512 0.178 ns an element against 0.252 (mid, order
+   10: L2), 0.234 and 0.214 (fast, order 10 and 9: L3, L4) and 0.185 for
+   fast at order 7 (L128, 58 ULP); libmvec 0.19, SLEEF u35 0.21.  AVX2
+   0.267 against 0.335, 0.316 and 0.273, but 0.225 for fast order 7.  So
+   2 a term + 8 (18 at order 4): below fast order 9 (20), above fast order 7
+   (16), where AVX2 would lose. */
 #define TABL_COST 8
 #define TAB_TEXT                                                                                   \
     "x = 2^k z, z in [0x1.66p-1, 0x1.66p+0) by its bits from OFF, 16 subintervals by the next 4 bits, " \
