@@ -117,7 +117,8 @@ static void check(const char *func, const char *variant, int order, double U)
     pf_gen_free(&r);
 }
 
-/* the orders the ladder picks (the L2, L0.6 and L0.55 files of make ladder) */
+/* the orders the ladder picks (the L0.6 and L0.55 files of make ladder; mid
+   at order 10 was log2's L2 before the tabl row) */
 static void test_log2_mid(void **st) { (void)st; check("log2", "mid", 10, 2); }
 static void test_log2_double(void **st) { (void)st; check("log2", "mid-double", 10, 0.6); }
 static void test_log_double(void **st) { (void)st; check("log", "mid-double", 11, 0.55); }
