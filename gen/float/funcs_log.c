@@ -426,13 +426,21 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
    measured 1.36): AVX-512 0.178 ns an element against 0.252 (mid, order
    10: L2), 0.234 and 0.214 (fast, order 10 and 9: L3, L4) and 0.185 for
    fast at order 7 (L128, 58 ULP); libmvec 0.19, SLEEF u35 0.21.  AVX2
-   0.267 against 0.335, 0.316 and 0.273, but 0.225 for fast order 7.  So
+   0.267 against 0.335, 0.316 and 0.273, but 0.225 for fast order 7 (three
+   interleaved runs against a ladder without tabl: AVX-512 0.176-0.196
+   against 0.252-0.262, 0.235-0.238 and 0.216-0.217; AVX2 0.267-0.303
+   against 0.337-0.344, 0.307-0.326 and 0.277-0.278).  So
    2 a term + 8 (18 at order 4): below fast order 9 (20), above fast order 7
    (16), where AVX2 would lose. */
 #define TABL_COST 8
 /* log's (k on its own and one more fmaf for ln2's low part: 16 operations
-   a step on AVX-512): provisional */
-#define TABL_LOG_COST 9
+   a step on AVX-512; model 2.634 ULP at order 4, 2.167 at 5): measured
+   (pfbench, three interleaved runs, 2026-11-26) at order 4 against the fast
+   row at order 9 that log's L4 takes: AVX-512 0.192 against 0.216, but AVX2
+   0.286 against 0.279.  2 a term + 10 (20 at order 4) ties it with fast
+   order 9, and ties go to the fast row: L4 keeps it; tabl is left for the
+   levels between its bound and fast order 9's (about 2.7-3.9 ULP). */
+#define TABL_LOG_COST 10
 #define TAB_TEXT                                                                                   \
     "x = 2^k z, z in [0x1.66p-1, 0x1.66p+0) by its bits from OFF, 16 subintervals by the next 4 bits, " \
     "t = r = z INVC[i] - 1 (the table below)"
