@@ -367,7 +367,8 @@ int pf_model_log2tabc(const fit_poly *p, int order, pf_scheme *sc) { return mode
  * accurate tables): among the floats c near 2/(zl + zh) whose max |r| stays
  * within the fit domain (|r| <= PF_LOGTL_R), INVC[i] is the c whose
  * -log_b(c) is nearest a multiple of 2^-16 (ties: the nearer c), LHI[i] that
- * multiple; the rest (about 2^-32) is not stored but counted by the model.
+ * multiple; the rest (log2 2^-32.2, log 2^-31 here) is not stored but counted
+ * by the model.
  * The subinterval holding 1 keeps INVC = 1, LHI = 0 (r = z - 1 exact there,
  * and x = 1 gives 0). */
 #define TL_GRID 16        /* LHI on the grid 2^-16 */
