@@ -3,7 +3,8 @@
  * "mid-double" (p(r) by Horner in double, one rounding to float) and
  * "tab" (a 16-entry table of 1/c and log c in double, a short polynomial)
  * and "tabf" (the same subintervals in float lanes, nothing compensated) and
- * "tabc" (tabf's tables with the reduced argument and the big sum exact).  Each is
+ * "tabc" (tabf's tables with the reduced argument and the big sum exact) and
+ * "tabl" (two tables, INVC near-exact logs; log2: one rounding).  Each is
  * generated at the order the ladder picks for a level (the L2, L0.6 and
  * L0.55 files of `make ladder`), compiled, and measured against MPFR (ref/)
  * on a sample that includes the hard inputs: the floats around the
@@ -116,7 +117,8 @@ static void check(const char *func, const char *variant, int order, double U)
     pf_gen_free(&r);
 }
 
-/* the orders the ladder picks (the L2, L0.6 and L0.55 files of make ladder) */
+/* the orders the ladder picks (the L0.6 and L0.55 files of make ladder; mid
+   at order 10 was log2's L2 before the tabl row) */
 static void test_log2_mid(void **st) { (void)st; check("log2", "mid", 10, 2); }
 static void test_log2_double(void **st) { (void)st; check("log2", "mid-double", 10, 0.6); }
 static void test_log_double(void **st) { (void)st; check("log", "mid-double", 11, 0.55); }
@@ -128,6 +130,13 @@ static void test_log_tab(void **st) { (void)st; check("log", "tab", 5, 0.51); }
    cost, gen/float/funcs_log.c TABF_COST) */
 static void test_log2_tabf(void **st) { (void)st; check("log2", "tabf", 4, 3); }
 static void test_log_tabf(void **st) { (void)st; check("log", "tabf", 4, 4); }
+/* the lean log2 row (gen/templates/log_tabl.c.in: two tables, INVC chosen
+   so that -log2(INVC) sits near the grid 2^-16) at the orders the ladder
+   picks for its levels (4: L2, L3, L4; 5 within 1.6) */
+static void test_log2_tabl(void **st) { (void)st; check("log2", "tabl", 4, 2); }
+static void test_log2_tabl5(void **st) { (void)st; check("log2", "tabl", 5, 1.6); }
+/* log's (k on its own, a second rounding): order 4 at its L4 level */
+static void test_log_tabl(void **st) { (void)st; check("log", "tabl", 4, 4); }
 /* the compensated float table rows at the order the ladder picks for L0.6 (log,
    log2) and L0.55 (log2) */
 static void test_log2_tabc(void **st) { (void)st; check("log2", "tabc", TABC_ORDER, 0.55); }
@@ -143,6 +152,9 @@ int main(void)
         cmocka_unit_test(test_log_tab),
         cmocka_unit_test(test_log2_tabf),
         cmocka_unit_test(test_log_tabf),
+        cmocka_unit_test(test_log2_tabl),
+        cmocka_unit_test(test_log2_tabl5),
+        cmocka_unit_test(test_log_tabl),
         cmocka_unit_test(test_log2_tabc),
         cmocka_unit_test(test_log_tabc),
     };

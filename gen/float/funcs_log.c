@@ -419,6 +419,28 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
    the 1-ULP level, tabc takes the levels below the exact row's 0.76 ULP
    down to its own floor. */
 #define TABC_COST 20
+/* the lean log2 row (variant "tabl", gen/templates/log_tabl.c.in): two
+   tables, no low parts, one rounding into the result; 14 vector operations
+   a step on AVX-512 against tabf's 18.  Measured (pfbench --ladder with
+   sampled levels, 2026-11-26, two runs) at order 4 (model 1.68 ULP,
+   measured 1.36): AVX-512 0.178 ns an element against 0.252 (mid, order
+   10: L2), 0.234 and 0.214 (fast, order 10 and 9: L3, L4) and 0.185 for
+   fast at order 7 (L128, 58 ULP); libmvec 0.19, SLEEF u35 0.21.  AVX2
+   0.267 against 0.335, 0.316 and 0.273, but 0.225 for fast order 7 (three
+   interleaved runs against a ladder without tabl: AVX-512 0.176-0.196
+   against 0.252-0.262, 0.235-0.238 and 0.216-0.217; AVX2 0.267-0.303
+   against 0.337-0.344, 0.307-0.326 and 0.277-0.278).  So
+   2 a term + 8 (18 at order 4): below fast order 9 (20), above fast order 7
+   (16), where AVX2 would lose. */
+#define TABL_COST 8
+/* log's (k on its own and one more fmaf for ln2's low part: 16 operations
+   a step on AVX-512; model 2.634 ULP at order 4, 2.167 at 5): measured
+   (pfbench, three interleaved runs, 2026-11-26) at order 4 against the fast
+   row at order 9 that log's L4 takes: AVX-512 0.192 against 0.216, but AVX2
+   0.286 against 0.279.  2 a term + 10 (20 at order 4) ties it with fast
+   order 9, and ties go to the fast row: L4 keeps it; tabl is left for the
+   levels between its bound and fast order 9's (about 2.7-3.9 ULP). */
+#define TABL_LOG_COST 10
 #define TAB_TEXT                                                                                   \
     "x = 2^k z, z in [0x1.66p-1, 0x1.66p+0) by its bits from OFF, 16 subintervals by the next 4 bits, " \
     "t = r = z INVC[i] - 1 (the table below)"
@@ -443,6 +465,9 @@ const pf_spec pf_specs_log[] = {
     {"log", "balanced", "tabc", "log_tabf", 1, TAB_TEXT, "log(1+t)", g_log1p, -PF_LOGTAB_R, PF_LOGTAB_R,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 5, 0, "fma",
      NULL, 0, NULL, pf_extra_logtabf, pf_model_logtabc, NULL, "log_tabf_tail.c", TABC_COST},
+    {"log", "balanced", "tabl", "log_tabl", 1, TAB_TEXT, "log(1+t)", g_log1p, -PF_LOGTL_R, PF_LOGTL_R,
+     FIT_PARITY_NONE, FIT_REL, 1, {LOG_CON_ZERO}, 4, 0, "fma",
+     NULL, 0, NULL, pf_extra_logtabl, pf_model_logtabl, NULL, "log_tabl_tail.c", TABL_LOG_COST},
     {"log", "balanced", "fast", "log_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log, NULL, NULL, "exp_log_twopath.c", 0},
     {"log", "seed", "exact", "log_seed", 1,
@@ -474,6 +499,9 @@ const pf_spec pf_specs_log[] = {
     {"log2", "balanced", "tabc", "log_tabf", 1, TAB_TEXT, "log2(1+t) - t/ln2", g_log2rem, -PF_LOGTAB_R, PF_LOGTAB_R,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 0")}, 5, 0, "fma",
      NULL, 0, NULL, pf_extra_log2tabf, pf_model_log2tabc, NULL, "log_tabf_tail.c", TABC_COST},
+    {"log2", "balanced", "tabl", "log_tabl", 1, TAB_TEXT, "log2(1+t)", g_log2_1p, -PF_LOGTL_R, PF_LOGTL_R,
+     FIT_PARITY_NONE, FIT_REL, 1, {LOG_CON_ZERO}, 4, 0, "fma",
+     NULL, 0, NULL, pf_extra_log2tabl, pf_model_log2tabl, NULL, "log_tabl_tail.c", TABL_COST},
     {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
      FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_twopath.c", 0},
     {0},

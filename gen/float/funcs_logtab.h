@@ -28,4 +28,13 @@ int pf_model_log2tabf(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_logtabc(const fit_poly *p, int order, pf_scheme *sc);
 int pf_model_log2tabc(const fit_poly *p, int order, pf_scheme *sc);
 
+/* the lean rows (variant "tabl", gen/templates/log_tabl.c.in): two
+   tables, INVC chosen so that -log_b(INVC) is near the grid 2^-16; its fit
+   domain |r| <= PF_LOGTL_R leaves the search room above the natural max |r| */
+#define PF_LOGTL_R 0x1.f4p-6
+int pf_extra_log2tabl(char *buf, size_t n);
+int pf_model_log2tabl(const fit_poly *p, int order, pf_scheme *sc);
+int pf_extra_logtabl(char *buf, size_t n);
+int pf_model_logtabl(const fit_poly *p, int order, pf_scheme *sc);
+
 #endif

@@ -353,3 +353,201 @@ static int model_comp(const fit_poly *p, int order, pf_scheme *sc, int is_log2)
 
 int pf_model_logtabc(const fit_poly *p, int order, pf_scheme *sc) { return model_comp(p, order, sc, 0); }
 int pf_model_log2tabc(const fit_poly *p, int order, pf_scheme *sc) { return model_comp(p, order, sc, 1); }
+
+/* ---- the lean rows ("tabl", gen/templates/log_tabl.c.in) ----
+ * Two tables of 16 floats (two vpermps a vector on AVX-512) and no low parts.
+ * log2: w = (x's bits - OFF) >> 19 (arithmetic) = 16 k + i, the index in
+ *   its low 4 bits; t = fmaf(w, 1/16, LHT[i]) = k + LHI[i] exactly, LHT[i] =
+ *   LHI[i] - i/16 (LHI on the grid 2^-16 and |k + LHI| < 2^8, so the sum is
+ *   a float); r = fmaf(z, INVC[i], -1); y = fmaf(r, q(r), t): one rounding.
+ * log: k on its own; t = fmaf(k, KHI, LHT[i]) = k KHI + LHI[i] exactly (KHI
+ *   ln2 to 16 bits, LHT = LHI on the grid 2^-16), s = fmaf(k, KLO, t) (one
+ *   rounding, none at k = 0), y = fmaf(r, q(r), s).
+ * -log_b(INVC[i]) is not rounded to the grid but chosen near it (Gal's
+ * accurate tables): among the floats c near 2/(zl + zh) whose max |r| stays
+ * within the fit domain (|r| <= PF_LOGTL_R), INVC[i] is the c whose
+ * -log_b(c) is nearest a multiple of 2^-16 (ties: the nearer c), LHI[i] that
+ * multiple; the rest (log2 2^-32.2, log 2^-31 here) is not stored but counted
+ * by the model.
+ * The subinterval holding 1 keeps INVC = 1, LHI = 0 (r = z - 1 exact there,
+ * and x = 1 gives 0). */
+#define TL_GRID 16        /* LHI on the grid 2^-16 */
+#define TL_SEARCH 16384   /* floats tried on each side of 2/(zl + zh) */
+
+typedef struct {
+    float c[NT];          /* INVC */
+    double hi[NT];        /* LHI: a multiple of 2^-16 */
+    double res[NT];       /* -log_b(INVC) - LHI (MPFR, to double) */
+    double ra[NT], rb[NT];
+    double rmax;
+} tl_table;
+
+/* -log_b(c) - its nearest multiple of 2^-16, and that multiple, at precision prec */
+static double tl_resid(float c, int is_log2, int prec, double *hi)
+{
+    mpfr_t v, h;
+    mpfr_inits2(prec, v, h, (mpfr_ptr)0);
+    mpfr_set_flt(v, c, MPFR_RNDN);
+    if (is_log2)
+        mpfr_log2(v, v, MPFR_RNDN);
+    else
+        mpfr_log(v, v, MPFR_RNDN);
+    mpfr_neg(v, v, MPFR_RNDN);
+    mpfr_mul_2si(h, v, TL_GRID, MPFR_RNDN);
+    mpfr_rint(h, h, MPFR_RNDN);
+    mpfr_mul_2si(h, h, -TL_GRID, MPFR_RNDN);
+    *hi = mpfr_get_d(h, MPFR_RNDN) + 0.0;
+    mpfr_sub(v, v, h, MPFR_RNDN);
+    double res = mpfr_get_d(v, MPFR_RNDN);
+    mpfr_clears(v, h, (mpfr_ptr)0);
+    return res;
+}
+
+static const tl_table *tl_get(int is_log2)
+{
+    static tl_table T[2];
+    static int done[2];
+    tl_table *t = &T[is_log2];
+    if (done[is_log2])
+        return t;
+    uint32_t off = pf_logtab_off();
+    t->rmax = 0;
+    for (int i = 0; i < NT; i++) {
+        double zl, zh;
+        pf_logtab_sub_range(off, i, &zl, &zh);
+        float c0 = invcf_of(off, i), best = c0;
+        if (c0 != 1.0f) {
+            uint32_t b0;
+            memcpy(&b0, &c0, 4);
+            double bres = INFINITY, h;
+            for (int d = 0; d <= 2 * TL_SEARCH; d++) {
+                int dd = (d & 1) ? -((d + 1) / 2) : d / 2; /* 0, -1, 1, -2, 2, ...: ties to the nearer */
+                uint32_t b = b0 + (uint32_t)dd;
+                float c;
+                memcpy(&c, &b, 4);
+                if (fmax(fabs(zl * c - 1), fabs(zh * c - 1)) > PF_LOGTL_R)
+                    continue;
+                double res = fabs(tl_resid(c, is_log2, 96, &h));
+                if (res < bres)
+                    bres = res, best = c;
+            }
+        }
+        t->c[i] = best;
+        t->res[i] = tl_resid(best, is_log2, 256, &t->hi[i]);
+        t->ra[i] = zl * best - 1, t->rb[i] = zh * best - 1;
+        t->rmax = fmax(t->rmax, fmax(fabs(t->ra[i]), fabs(t->rb[i])));
+    }
+    done[is_log2] = 1;
+    return t;
+}
+
+static int extra_tabl(char *buf, size_t n, int is_log2)
+{
+    const tl_table *T = tl_get(is_log2);
+    uint32_t off = pf_logtab_off();
+    if (!(T->rmax <= PF_LOGTL_R))
+        return snprintf(buf, n, "#error \"pfmathgen: the table's max |r| %a exceeds the fit domain %a\"\n", T->rmax,
+                        PF_LOGTL_R);
+    double rmx = 0;
+    for (int i = 0; i < NT; i++)
+        rmx = fmax(rmx, fabs(T->res[i]));
+    const char *lb = is_log2 ? "-log2" : "-log";
+    size_t len = 0;
+#define PUT(...) len += (size_t)snprintf(buf + (len < n ? len : n), len < n ? n - len : 0, __VA_ARGS__)
+    PUT("/* The reduction's tables, computed by pfmathgen (gen/float/funcs_logtabf.c) with MPFR:\n"
+        "   OFF = 0x%08x as the double table's (gen/float/funcs_logtab.c); subinterval i holds\n"
+        "   the z whose bits are in [OFF + i 2^19, OFF + (i+1) 2^19).  INVC[i]: of the floats c\n"
+        "   within %d of 2/(zl + zh) (zl, zh the subinterval's first and last float) whose\n"
+        "   max |z c - 1| is within the fit domain %a, the one whose %s(c) is nearest a\n"
+        "   multiple LHI[i] of 2^-%d (Gal's accurate tables); exactly 1, LHI = 0, on the\n"
+        "   subinterval that holds 1.  max |r| = %a; max |%s(INVC) - LHI| = %a (not stored:\n"
+        "   the error model counts it).  %s */\n",
+        off, TL_SEARCH, PF_LOGTL_R, lb, TL_GRID, T->rmax, lb, rmx,
+        is_log2 ? "LHT[i] = LHI[i] - i/16, so that\n"
+                  "   fmaf(16 k + i, 1/16, LHT[i]) = k + LHI[i] exactly."
+                : "LHT[i] = LHI[i]; ln2 = KHI + KLO, KHI ln2 to 16\n"
+                  "   significant bits (k KHI + LHI exact), KLO the rest rounded to float.");
+    PUT("#define PF_LOGTL_OFF 0x%08xu\n", off);
+    PUT("#define PF_LOGTL_LOG2 %d\n", is_log2);
+    double khi;
+    float klo;
+    kconst(is_log2, &khi, &klo);
+    PUT("static const float PF_LOGTL_KHI PF_UNUSED = %af;\nstatic const float PF_LOGTL_KLO PF_UNUSED = %af;\n",
+        khi, (double)klo);
+    PUT("#if defined(__GNUC__)\n#define PF_LOGTL_ALIGN __attribute__((aligned(64)))\n#else\n#define PF_LOGTL_ALIGN\n#endif\n");
+    char h[48];
+    PUT("static const float PF_LOGTL_INVC[16] PF_LOGTL_ALIGN = {\n");
+    for (int i = 0; i < NT; i++) {
+        hexf(h, sizeof h, T->c[i]);
+        PUT("    %-18s /* %2d: r in [%+.6f, %+.6f] */\n", h, i, T->ra[i], T->rb[i]);
+    }
+    PUT("};\nstatic const float PF_LOGTL_LHT[16] PF_LOGTL_ALIGN = {\n");
+    for (int i = 0; i < NT; i++) {
+        /* exact: multiples of 2^-16 below 2 */
+        hexf(h, sizeof h, is_log2 ? T->hi[i] - i / 16.0 : T->hi[i]);
+        PUT("    %-18s /* %2d: LHI = %a, %s(INVC) - LHI = %+.3e */\n", h, i, T->hi[i], lb, T->res[i]);
+    }
+    PUT("};\n\n");
+#undef PUT
+    return (int)len;
+}
+
+int pf_extra_log2tabl(char *buf, size_t n) { return extra_tabl(buf, n, 1); }
+int pf_extra_logtabl(char *buf, size_t n) { return extra_tabl(buf, n, 0); }
+
+/* Their error model, in ULP of the float result f = k KS + LHI + res +
+ * log_b(1+r), on a grid of r over each subinterval and k from -149 to 128:
+ *   r = fmaf(z, INVC, -1): half an ulp of r times PS/(1 - |r|), none
+ *   where INVC = 1 (Sterbenz);
+ *   q(r) = p(r)/r by fmaf Horner: half an ulp a step, carried through, times |r|;
+ *   the table's rest |res|; the fit's relative error times |log_b(1+r)|;
+ *   t = k KHI + LHI exact; log: s = fmaf(k, KLO, t), half an ulp of s and
+ *   KLO's rounding (|k| 2^-41), none at k = 0;
+ *   y = fmaf(r, q, s): one rounding, the result's own. */
+static int model_tabl(const fit_poly *p, int order, pf_scheme *sc, int is_log2)
+{
+    if (order < 2 || p->c[0] != 0) {
+        snprintf(sc->text, sizeof sc->text, "error model: needs p(0) = 0 and order >= 2");
+        return -1;
+    }
+    const tl_table *T = tl_get(is_log2);
+    const double KS = is_log2 ? 1 : M_LN2, PS = is_log2 ? 1 / M_LN2 : 1;
+    double worst = 0, worst_r = 0, rmx = 0;
+    int worst_k = 0, worst_i = 0;
+    const int ng = 512;
+    for (int i = 0; i < NT; i++) {
+        double ra = T->ra[i], rb = T->rb[i];
+        rmx = fmax(rmx, fabs(T->res[i]));
+        for (int j = 0; j <= ng; j++) {
+            double r = ra + (rb - ra) * j / ng, q, eq;
+            horner_err(p, order, 1, r, &q, &eq);
+            double g = log1p(r) * PS, er = T->c[i] == 1.0f ? 0 : H(r) * PS / (1 - fabs(r));
+            double e0 = er + fabs(r) * eq + fabs(T->res[i]) + p->max_err * fabs(g);
+            for (int k = -149; k <= 128; k++) {
+                double f = k * KS + T->hi[i] + T->res[i] + g;
+                if (f == 0)
+                    continue; /* x = 1: r = 0, k = 0, LHI = 0, every term is exactly 0 */
+                double es = is_log2 || k == 0 ? 0 : H(k * KS + T->hi[i]) + abs(k) * 0x1p-41;
+                double bnd = 0.5 + (e0 + es) / ulp_f(f);
+                if (bnd > worst)
+                    worst = bnd, worst_r = r, worst_k = k, worst_i = i;
+            }
+        }
+    }
+    sc->ncomp = 0;
+    sc->bound_ulp = worst;
+    snprintf(sc->text, sizeof sc->text,
+             "tables of 16 (INVC, LHT) in float, %s(INVC) within %.1e of LHI on the grid 2^-16 (Gal); "
+             "r = fmaf(z, INVC, -1), %s, q(r) = p(r)/r by Horner "
+             "in float with fmaf, y = fmaf(r, q, %s): %s (the model's worst point "
+             "is k = %d, subinterval %d, r = %.4f)",
+             is_log2 ? "-log2" : "-log", rmx,
+             is_log2 ? "t = fmaf(16 k + i, 1/16, LHT) = k + LHI exact"
+                     : "t = fmaf(k, KHI, LHI) exact, s = fmaf(k, KLO, t)",
+             is_log2 ? "t" : "s", is_log2 ? "one rounding into the result" : "two roundings (one at k = 0)",
+             worst_k, worst_i, worst_r);
+    return 0;
+}
+
+int pf_model_log2tabl(const fit_poly *p, int order, pf_scheme *sc) { return model_tabl(p, order, sc, 1); }
+int pf_model_logtabl(const fit_poly *p, int order, pf_scheme *sc) { return model_tabl(p, order, sc, 0); }
