@@ -648,38 +648,36 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
        0) + P[k] of the scalar form */
     pf_buf tb5 = {0};
     if (J == 4)
-        pf_printf(&tb5, "    uint8_t b[5][16]; /* A's low, high bytes, D, Q's low, high bytes (Q[i] = 2^(15 - i)) */\n"
+        pf_printf(&tb5, "    uint8_t b[4][16]; /* A's low, high bytes, D, the bytes of Q = 2^e (b[3][i] = 2^i, 0 from i = 8) */\n"
                         "    for (int k = 0; k < 16; k++) {\n"
                         "        b[0][k] = (uint8_t)%s_ta[k];\n"
                         "        b[1][k] = (uint8_t)(%s_ta[k] >> 8);\n"
                         "        b[2][k] = (uint8_t)%s_td[k];\n"
-                        "        b[3][k] = (uint8_t)(32768u >> k);\n"
-                        "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
+                        "        b[3][k] = (uint8_t)(k < 8 ? 1u << k : 0u);\n"
                         "    }\n",
                   N, N, N);
     else
-        pf_printf(&tb5, "    uint8_t b[8][16]; /* A's low, high bytes, D (entries 0-15), Q's low, high bytes (Q[i] =\n"
-                        "                         2^(15 - i)); A's low, high bytes, D (entries 16-31) */\n"
+        pf_printf(&tb5, "    uint8_t b[7][16]; /* A's low, high bytes, D (entries 0-15), the bytes of Q = 2^e (b[3][i] =\n"
+                        "                         2^i, 0 from i = 8); A's low, high bytes, D (entries 16-31) */\n"
                         "    for (int k = 0; k < 16; k++) {\n"
                         "        b[0][k] = (uint8_t)%s_ta[k];\n"
                         "        b[1][k] = (uint8_t)(%s_ta[k] >> 8);\n"
                         "        b[2][k] = (uint8_t)%s_td[k];\n"
-                        "        b[3][k] = (uint8_t)(32768u >> k);\n"
-                        "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
-                        "        b[5][k] = (uint8_t)%s_ta[k + 16];\n"
-                        "        b[6][k] = (uint8_t)(%s_ta[k + 16] >> 8);\n"
-                        "        b[7][k] = (uint8_t)%s_td[k + 16];\n"
+                        "        b[3][k] = (uint8_t)(k < 8 ? 1u << k : 0u);\n"
+                        "        b[4][k] = (uint8_t)%s_ta[k + 16];\n"
+                        "        b[5][k] = (uint8_t)(%s_ta[k + 16] >> 8);\n"
+                        "        b[6][k] = (uint8_t)%s_td[k + 16];\n"
                         "    }\n",
                   N, N, N, N, N, N);
-    const char *k18 = J == 4 ? "    kc[18] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */\n"
-                             : "    kc[18] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */\n"
-                               "    for (int k = 19; k < 22; k++)\n"
+    const char *k18 = J == 4 ? "    kc[17] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */\n"
+                             : "    kc[17] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */\n"
+                               "    for (int k = 18; k < 21; k++)\n"
                                "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));\n";
     pf_printf(kern,
               "\n\n/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16\n"
               "   words is two vpshufb (its low and its high bytes) merged by vpblendvb;\n"
               "   no 16-bit per-element shift: round((2^16 + M) 2^-s) = avg(Q, pmulhuw(M, Q))\n"
-              "   with Q = 2^(17 - s) for s >= 2 (a vpshufb table, 0 from s = 18), and\n"
+              "   with Q = 2^(17 - s) for s >= 2 (one vpshufb of a table of 2^i, 0 from s = 18), and\n"
               "   2^15 + avg(M, 0) at s = 1.  The same values. */\n%s"
               "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
               "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
@@ -688,32 +686,32 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "       would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside\n"
               "       the loop, where a memory operand costs nothing */\n"
               "    __m256i kc[%d];\n"
-              "    for (int k = 0; k < 5; k++)\n"
+              "    for (int k = 0; k < 4; k++)\n"
               "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));\n"
-              "    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */\n"
-              "    kc[6] = _mm256_set1_epi16(0x101);\n"
-              "    kc[7] = _mm256_set1_epi16(-32768);\n"
-              "    kc[8] = _mm256_set1_epi16(%lld); /* c1 */\n"
-              "    kc[9] = _mm256_set1_epi16(%lld); /* c2 */\n"
-              "    kc[10] = _mm256_set1_epi16(%lld); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */\n"
-              "    kc[11] = _mm256_set1_epi16(%lld); /* kb at s = 1 */\n"
-              "    kc[12] = _mm256_set1_epi16(%lld); /* off, or the bias (exp2) */\n"
-              "    kc[13] = _mm256_set1_epi16(%lld); /* L1 */\n"
-              "    kc[14] = _mm256_set1_epi16(%lld); /* L2 */\n"
-              "    kc[15] = _mm256_set1_epi16(%lld); /* Cl */\n"
-              "    kc[16] = _mm256_set1_epi16(%lld); /* the low clamp */\n"
-              "    kc[17] = _mm256_set1_epi16(%lld); /* the high clamp */\n"
+              "    kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */\n"
+              "    kc[5] = _mm256_set1_epi16(0x101);\n"
+              "    kc[6] = _mm256_set1_epi16(-32768);\n"
+              "    kc[7] = _mm256_set1_epi16(%lld); /* c1 */\n"
+              "    kc[8] = _mm256_set1_epi16(%lld); /* c2 */\n"
+              "    kc[9] = _mm256_set1_epi16(%lld); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */\n"
+              "    kc[10] = _mm256_set1_epi16(%lld); /* kb at s = 1 */\n"
+              "    kc[11] = _mm256_set1_epi16(%lld); /* off, or the bias (exp2) */\n"
+              "    kc[12] = _mm256_set1_epi16(%lld); /* L1 */\n"
+              "    kc[13] = _mm256_set1_epi16(%lld); /* L2 */\n"
+              "    kc[14] = _mm256_set1_epi16(%lld); /* Cl */\n"
+              "    kc[15] = _mm256_set1_epi16(%lld); /* the low clamp */\n"
+              "    kc[16] = _mm256_set1_epi16(%lld); /* the high clamp */\n"
               "%s"
               "    __asm__(\"\" : : \"r\"(kc) : \"memory\");\n"
-              "    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];\n"
-              "    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];\n"
-              "    const __m256i %s = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];\n"
-              "    const __m256i j16 = kc[18];\n%s"
+              "    const __m256i al = kc[0], ah = kc[1], dt = kc[2], pw = kc[3], hib = kc[4], dup = kc[5];\n"
+              "    const __m256i h15 = kc[6], c1 = kc[7], c2 = kc[8], cq = kc[9], k1 = kc[10];\n"
+              "    const __m256i %s = kc[11], l1 = kc[12], l2 = kc[13], cl = kc[14], xlo = kc[15], xhi = kc[16];\n"
+              "    const __m256i j16 = kc[17];\n%s"
               "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
-              cond, N, G->it, G->ot, tb5.s, J == 4 ? 19 : 22, s16(X->tc1), s16(X->tc2), s16(X->tcc - 1 + 0x70), s16(X->tcc),
+              cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21, s16(X->tc1), s16(X->tc2), s16(16 - X->tcc - 2048), s16(X->tcc),
               base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
               X->loclamp ? s16(X->xlo) : 0, X->sat ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
-              J == 4 ? "" : "    const __m256i al1 = kc[19], ah1 = kc[20], dt1 = kc[21];\n");
+              J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n");
     free(tb5.s);
     pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
                  "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
@@ -754,9 +752,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                      "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));\n"
                      "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));\n"
                      "        __m256i kb = _mm256_srli_epi16(hi, 5);\n");
-    pf_put(kern, "        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */\n"
-                 "        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);\n"
-                 "        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);\n"
+    pf_put(kern, "        /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at\n"
+                 "           e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in\n"
+                 "           [8, 15] for the low byte, where the table holds 0) */\n"
+                 "        __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);\n"
+                 "        __m256i qq = _mm256_shuffle_epi8(pw, qi);\n"
                  "        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));\n"
                  "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),\n"
                  "                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */\n");

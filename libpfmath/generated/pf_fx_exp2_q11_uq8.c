@@ -359,52 +359,51 @@ static const uint32_t pf_exp2_q11_uq8_tpr[32] = {
 /* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16
    words is two vpshufb (its low and its high bytes) merged by vpblendvb;
    no 16-bit per-element shift: round((2^16 + M) 2^-s) = avg(Q, pmulhuw(M, Q))
-   with Q = 2^(17 - s) for s >= 2 (a vpshufb table, 0 from s = 18), and
+   with Q = 2^(17 - s) for s >= 2 (one vpshufb of a table of 2^i, 0 from s = 18), and
    2^15 + avg(M, 0) at s = 1.  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-    uint8_t b[8][16]; /* A's low, high bytes, D (entries 0-15), Q's low, high bytes (Q[i] =
-                         2^(15 - i)); A's low, high bytes, D (entries 16-31) */
+    uint8_t b[7][16]; /* A's low, high bytes, D (entries 0-15), the bytes of Q = 2^e (b[3][i] =
+                         2^i, 0 from i = 8); A's low, high bytes, D (entries 16-31) */
     for (int k = 0; k < 16; k++) {
         b[0][k] = (uint8_t)pf_exp2_q11_uq8_ta[k];
         b[1][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k] >> 8);
         b[2][k] = (uint8_t)pf_exp2_q11_uq8_td[k];
-        b[3][k] = (uint8_t)(32768u >> k);
-        b[4][k] = (uint8_t)((32768u >> k) >> 8);
-        b[5][k] = (uint8_t)pf_exp2_q11_uq8_ta[k + 16];
-        b[6][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k + 16] >> 8);
-        b[7][k] = (uint8_t)pf_exp2_q11_uq8_td[k + 16];
+        b[3][k] = (uint8_t)(k < 8 ? 1u << k : 0u);
+        b[4][k] = (uint8_t)pf_exp2_q11_uq8_ta[k + 16];
+        b[5][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k + 16] >> 8);
+        b[6][k] = (uint8_t)pf_exp2_q11_uq8_td[k + 16];
     }
     /* the constants in memory GCC cannot see through: with 16 ymm registers it
        would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside
        the loop, where a memory operand costs nothing */
-    __m256i kc[22];
-    for (int k = 0; k < 5; k++)
+    __m256i kc[21];
+    for (int k = 0; k < 4; k++)
         kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));
-    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
-    kc[6] = _mm256_set1_epi16(0x101);
-    kc[7] = _mm256_set1_epi16(-32768);
-    kc[8] = _mm256_set1_epi16(-20111); /* c1 */
-    kc[9] = _mm256_set1_epi16(497); /* c2 */
-    kc[10] = _mm256_set1_epi16(134); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */
-    kc[11] = _mm256_set1_epi16(23); /* kb at s = 1 */
-    kc[12] = _mm256_set1_epi16(-32768); /* off, or the bias (exp2) */
-    kc[13] = _mm256_set1_epi16(0); /* L1 */
-    kc[14] = _mm256_set1_epi16(0); /* L2 */
-    kc[15] = _mm256_set1_epi16(0); /* Cl */
-    kc[16] = _mm256_set1_epi16(0); /* the low clamp */
-    kc[17] = _mm256_set1_epi16(16384); /* the high clamp */
-    kc[18] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */
-    for (int k = 19; k < 22; k++)
+    kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
+    kc[5] = _mm256_set1_epi16(0x101);
+    kc[6] = _mm256_set1_epi16(-32768);
+    kc[7] = _mm256_set1_epi16(-20111); /* c1 */
+    kc[8] = _mm256_set1_epi16(497); /* c2 */
+    kc[9] = _mm256_set1_epi16(-2055); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
+    kc[10] = _mm256_set1_epi16(23); /* kb at s = 1 */
+    kc[11] = _mm256_set1_epi16(-32768); /* off, or the bias (exp2) */
+    kc[12] = _mm256_set1_epi16(0); /* L1 */
+    kc[13] = _mm256_set1_epi16(0); /* L2 */
+    kc[14] = _mm256_set1_epi16(0); /* Cl */
+    kc[15] = _mm256_set1_epi16(0); /* the low clamp */
+    kc[16] = _mm256_set1_epi16(16384); /* the high clamp */
+    kc[17] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */
+    for (int k = 18; k < 21; k++)
         kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));
     __asm__("" : : "r"(kc) : "memory");
-    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];
-    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];
-    const __m256i bias = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];
-    const __m256i j16 = kc[18];
-    const __m256i al1 = kc[19], ah1 = kc[20], dt1 = kc[21];
+    const __m256i al = kc[0], ah = kc[1], dt = kc[2], pw = kc[3], hib = kc[4], dup = kc[5];
+    const __m256i h15 = kc[6], c1 = kc[7], c2 = kc[8], cq = kc[9], k1 = kc[10];
+    const __m256i bias = kc[11], l1 = kc[12], l2 = kc[13], cl = kc[14], xlo = kc[15], xhi = kc[16];
+    const __m256i j16 = kc[17];
+    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];
     (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
@@ -421,9 +420,11 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
         v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));
         __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));
         __m256i kb = _mm256_srli_epi16(hi, 5);
-        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */
-        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);
-        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);
+        /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
+           e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
+           [8, 15] for the low byte, where the table holds 0) */
+        __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
+        __m256i qq = _mm256_shuffle_epi8(pw, qi);
         __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
         r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
                                _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
