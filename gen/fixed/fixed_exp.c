@@ -669,8 +669,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                         "        b[6][k] = (uint8_t)%s_td[k + 16];\n"
                         "    }\n",
                   N, N, N, N, N, N);
-    const char *k18 = J == 4 ? "    kc[17] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */\n"
-                             : "    kc[17] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */\n"
+    /* j in both bytes of its word: hi & (2^J - 1), its low byte copied up by a
+       vpshufb (a shuffle, where a pmulhuw would load the multipliers, of
+       which the loop has eight more) */
+    const char *k18 = J == 4 ? "    kc[17] = _mm256_set1_epi16(15); /* j = hi & 15 */\n"
+                             : "    kc[17] = _mm256_set1_epi16(31); /* j = hi & 31 */\n"
                                "    for (int k = 18; k < 21; k++)\n"
                                "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));\n";
     pf_printf(kern,
@@ -706,7 +709,9 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    const __m256i al = kc[0], ah = kc[1], dt = kc[2], pw = kc[3], hib = kc[4], dup = kc[5];\n"
               "    const __m256i h15 = kc[6], c1 = kc[7], c2 = kc[8], cq = kc[9], k1 = kc[10];\n"
               "    const __m256i %s = kc[11], l1 = kc[12], l2 = kc[13], cl = kc[14], xlo = kc[15], xhi = kc[16];\n"
-              "    const __m256i j16 = kc[17];\n%s"
+              "    const __m256i jmask = kc[17];\n%s"
+              "    const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,\n"
+              "                                          0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);\n"
               "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
               cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21, s16(X->tc1), s16(X->tc2), s16(16 - X->tcc - 2048), s16(X->tcc),
               base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
@@ -737,14 +742,14 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     }
     pf_put(kern, "        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));\n");
     if (J == 4)
-        pf_put(kern, "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 12), j16); /* j in both bytes */\n"
+        pf_put(kern, "        __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */\n"
                      "        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);\n"
                      "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
                      "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));\n"
                      "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));\n"
                      "        __m256i kb = _mm256_srli_epi16(hi, 4);\n");
     else
-        pf_put(kern, "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 11), j16); /* j in both bytes */\n"
+        pf_put(kern, "        __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */\n"
                      "        __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */\n"
                      "        __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),\n"
                      "                                       _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);\n"

@@ -395,15 +395,17 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
     kc[14] = _mm256_set1_epi16(0); /* Cl */
     kc[15] = _mm256_set1_epi16(0); /* the low clamp */
     kc[16] = _mm256_set1_epi16(16384); /* the high clamp */
-    kc[17] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */
+    kc[17] = _mm256_set1_epi16(31); /* j = hi & 31 */
     for (int k = 18; k < 21; k++)
         kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));
     __asm__("" : : "r"(kc) : "memory");
     const __m256i al = kc[0], ah = kc[1], dt = kc[2], pw = kc[3], hib = kc[4], dup = kc[5];
     const __m256i h15 = kc[6], c1 = kc[7], c2 = kc[8], cq = kc[9], k1 = kc[10];
     const __m256i bias = kc[11], l1 = kc[12], l2 = kc[13], cl = kc[14], xlo = kc[15], xhi = kc[16];
-    const __m256i j16 = kc[17];
+    const __m256i jmask = kc[17];
     const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];
+    const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
+                                          0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
     (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
@@ -412,7 +414,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
         __m256i tb = _mm256_add_epi16(xc, bias);
         __m256i hi = _mm256_srli_epi16(tb, 6), lo = _mm256_slli_epi16(tb, 10);
         __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
-        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 11), j16); /* j in both bytes */
+        __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
         __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */
         __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),
                                        _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);

@@ -304,12 +304,14 @@ static void pf_exp2_q11_uq8_fast_array_avx2(const int16_t *restrict x, uint16_t 
     const __m256i vh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
     const __m256i sl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
     const __m256i sh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
-    const __m256i d = _mm256_set1_epi16(16384), m15 = _mm256_set1_epi16(15), dup = _mm256_set1_epi16(0x101);
+    const __m256i d = _mm256_set1_epi16(16384), m15 = _mm256_set1_epi16(15);
     const __m256i hib = _mm256_set1_epi16(-256), lo16 = _mm256_set1_epi32(0xffff);
+    const __m256i dup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
+                                         0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
     size_t i = 0;
     for (; i + 16 <= n; i += 16) {
         __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));
-        __m256i j = _mm256_mullo_epi16(_mm256_and_si256(_mm256_srli_epi16(w, 7), m15), dup); /* j in both bytes */
+        __m256i j = _mm256_shuffle_epi8(_mm256_and_si256(_mm256_srli_epi16(w, 7), m15), dup); /* j in both bytes */
         __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);
         __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);
         v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, 9)));
