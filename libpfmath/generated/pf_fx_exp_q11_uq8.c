@@ -315,24 +315,60 @@ static void pf_exp_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restric
     const __m512i xlo = _mm512_set1_epi16(-14197);
     const __m512i xhi = _mm512_set1_epi16(11357);
     size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m512i xc = _mm512_loadu_si512(x + i);
-        xc = _mm512_max_epi16(xc, xlo);
-        xc = _mm512_min_epi16(xc, xhi);
-        __m512i u = _mm512_add_epi16(xc, off);
-        __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);
-        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);
-        __m512i hi = _mm512_mulhi_epu16(u, l1);
-        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);
-        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
-        __m512i a = _mm512_permutexvar_epi16(hi, ta);
-        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
-        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
-        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
-        __m512i kb = _mm512_srli_epi16(hi, 4);
-        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
-        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
-        _mm512_storeu_si512(y + i, r);
+    if (n >= 32) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
+        __m512i p_hi, p_e;
+        {
+            __m512i xc = _mm512_loadu_si512(x + i);
+            xc = _mm512_max_epi16(xc, xlo);
+            xc = _mm512_min_epi16(xc, xhi);
+            __m512i u = _mm512_add_epi16(xc, off);
+            __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);
+            __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);
+            __m512i hi = _mm512_mulhi_epu16(u, l1);
+            hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);
+            __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
+            p_hi = hi, p_e = e;
+        }
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m512i n_hi, n_e;
+            {
+                __m512i xc = _mm512_loadu_si512(x + i);
+                xc = _mm512_max_epi16(xc, xlo);
+                xc = _mm512_min_epi16(xc, xhi);
+                __m512i u = _mm512_add_epi16(xc, off);
+                __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);
+                __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);
+                __m512i hi = _mm512_mulhi_epu16(u, l1);
+                hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);
+                __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
+                n_hi = hi, n_e = e;
+            }
+            {
+                __m512i hi = p_hi, e = p_e;
+                __m512i a = _mm512_permutexvar_epi16(hi, ta);
+                __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
+                v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
+                __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
+                __m512i kb = _mm512_srli_epi16(hi, 4);
+                __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
+                r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
+                _mm512_storeu_si512(y + i - 32, r);
+            }
+            p_hi = n_hi, p_e = n_e;
+        }
+        {
+            __m512i hi = p_hi, e = p_e;
+            __m512i a = _mm512_permutexvar_epi16(hi, ta);
+            __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
+            v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
+            __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
+            __m512i kb = _mm512_srli_epi16(hi, 4);
+            __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
+            r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
+            _mm512_storeu_si512(y + i - 32, r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_exp_q11_uq8(x[i]);
@@ -384,33 +420,78 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
                                           0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
     (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
     size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
-        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
-        xc = _mm256_max_epi16(xc, xlo);
-        xc = _mm256_min_epi16(xc, xhi);
-        __m256i u = _mm256_add_epi16(xc, off);
-        __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
-        __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
-        /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
-        __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);
-        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);
-        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
-        __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
-        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
-        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
-        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
-        __m256i kb = _mm256_srli_epi16(hi, 4);
-        /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
-           e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
-           [8, 15] for the low byte, where the table holds 0) */
-        __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
-        __m256i qq = _mm256_shuffle_epi8(pw, qi);
-        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
-        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
-                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
-        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
-        _mm256_storeu_si256((__m256i *)(y + i), r);
+    if (n >= 16) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
+        __m256i p_hi, p_e;
+        {
+            __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
+            xc = _mm256_max_epi16(xc, xlo);
+            xc = _mm256_min_epi16(xc, xhi);
+            __m256i u = _mm256_add_epi16(xc, off);
+            __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
+            __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
+            /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
+            __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);
+            __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);
+            __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
+            p_hi = hi, p_e = e;
+        }
+        for (i = 16; i + 16 <= n; i += 16) {
+            __m256i n_hi, n_e;
+            {
+                __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
+                xc = _mm256_max_epi16(xc, xlo);
+                xc = _mm256_min_epi16(xc, xhi);
+                __m256i u = _mm256_add_epi16(xc, off);
+                __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
+                __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
+                /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
+                __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);
+                __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);
+                __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
+                n_hi = hi, n_e = e;
+            }
+            {
+                __m256i hi = p_hi, e = p_e;
+                __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
+                __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
+                __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
+                v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
+                __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
+                __m256i kb = _mm256_srli_epi16(hi, 4);
+                /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
+                   e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
+                   [8, 15] for the low byte, where the table holds 0) */
+                __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
+                __m256i qq = _mm256_shuffle_epi8(pw, qi);
+                __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
+                r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
+                                       _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
+                r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+                _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+            }
+            p_hi = n_hi, p_e = n_e;
+        }
+        {
+            __m256i hi = p_hi, e = p_e;
+            __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
+            __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
+            __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
+            v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
+            __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
+            __m256i kb = _mm256_srli_epi16(hi, 4);
+            /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
+               e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
+               [8, 15] for the low byte, where the table holds 0) */
+            __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
+            __m256i qq = _mm256_shuffle_epi8(pw, qi);
+            __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
+            r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
+                                   _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
+            r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+            _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_exp_q11_uq8(x[i]);
