@@ -433,7 +433,7 @@ static void put_indented(pf_buf *b, const char *s)
    blocks' halves in one pass halve it.  Then the scalar form for the last
    n % L (and all of n < L).  s1 and s2 are written at the 8-space indent
    of a plain loop body. */
-static void pipe_loop(pf_buf *kern, const char *vt, int L, const char *s1, const char *s2, const char *const *cv, int nc,
+void fx_exp_pipe_loop(pf_buf *kern, const char *vt, int L, const char *s1, const char *s2, const char *const *cv, int nc,
                       const char *store, const char *scalar)
 {
     pf_printf(kern, "    size_t i = 0;\n    if (n >= %d) {\n        /* software pipelined: a pass runs the first steps of block i and the\n"
@@ -634,7 +634,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                        "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));\n",
                   F - 17, Ei);
         static const char *const cv[] = {"tn", "hn", "e"};
-        pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 3, "_mm512_storeu_si512(y + i - 32, r);", N);
+        fx_exp_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 3, "_mm512_storeu_si512(y + i - 32, r);", N);
         free(s1.s);
         free(s2.s);
     }
@@ -714,7 +714,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(&s2, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
                      "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
         static const char *const cv[] = {"hi", "e"};
-        pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 2, "_mm512_storeu_si512(y + i - 32, r);", N);
+        fx_exp_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 2, "_mm512_storeu_si512(y + i - 32, r);", N);
         free(s1.s);
         free(s2.s);
     }
@@ -851,7 +851,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     if (X->sat)
         pf_put(&s2, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */\n");
     static const char *const cv[] = {"hi", "e"};
-    pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
+    fx_exp_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
     free(s1.s);
     free(s2.s);
     G->bw16 = 3;
