@@ -66,9 +66,11 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
  * 1) 2^16, so no table of 2^(j/16) itself).  exp2 whose r would have 7
  * bits takes J = 5 (32 entries: one vpermw; four vpshufb on AVX2): r has
  * 6, and the AVX-512 loop reads E from a 64-entry table (vpermi2w) where
- * the polynomial took four steps.  J = 6 (64-entry tables,
+ * the polynomial took four steps.  exp2: J = 6 (64-entry tables,
  * vpermi2w, a table U[j] = 2^(j/64) 2^15 and pmulhuw(U[j], E)) where J = 4
- * and 5 miss the bound (it has no AVX2 loop).
+ * and 5 miss the bound (it has no AVX2 loop); exp: J = 4 only (see
+ * prep_tab_noclamp).  The vector loops are software pipelined
+ * (fx_exp_pipe_loop).
  * Every step is a 16-bit word; exp's x log2(e) to 2^-F (the error model
  * needs t to ~2^-19) is a 16x16 -> 32-bit product from a low/high pair,
  * plus the fraction's high half and one carry.  The error bound is taken
