@@ -85,6 +85,8 @@ static const fx_case cases[] = {
     {"cos", "fixed<15,10>", "fixed<15,12>", 1, 16},     /*   exact cos (kind 4: cubics, 16 segments) */
     {"sin", "fixed<15,9>", "fixed<15,14>", 1, 16},      /*   exact sin (kind 4: quadratics, 32) */
     {"exp", "fixed<15,7>", "ufixed<16,4>", 1, 16},      /* exact table kernel, other shifts */
+    {"exp", "fixed<15,13>", "ufixed<16,14>", 1, 16},    /* exact table kernel where lo = q occurs: the AVX2
+                                                           loop's carry in its general form */
     {"exp2", "fixed<15,6>", "ufixed<16,2>", 1, 16},     /* exact table kernel: j is x's low bits */
 };
 #define NCASES ((int)(sizeof cases / sizeof cases[0]))

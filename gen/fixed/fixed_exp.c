@@ -66,9 +66,11 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
  * 1) 2^16, so no table of 2^(j/16) itself).  exp2 whose r would have 7
  * bits takes J = 5 (32 entries: one vpermw; four vpshufb on AVX2): r has
  * 6, and the AVX-512 loop reads E from a 64-entry table (vpermi2w) where
- * the polynomial took four steps.  J = 6 (64-entry tables,
+ * the polynomial took four steps.  exp2: J = 6 (64-entry tables,
  * vpermi2w, a table U[j] = 2^(j/64) 2^15 and pmulhuw(U[j], E)) where J = 4
- * and 5 miss the bound (it has no AVX2 loop).
+ * and 5 miss the bound (it has no AVX2 loop); exp: J = 4 only (see
+ * prep_tab_noclamp).  The vector loops are software pipelined
+ * (fx_exp_pipe_loop).
  * Every step is a 16-bit word; exp's x log2(e) to 2^-F (the error model
  * needs t to ~2^-19) is a 16x16 -> 32-bit product from a low/high pair,
  * plus the fraction's high half and one carry.  The error bound is taken
@@ -393,20 +395,93 @@ static void tab_table(pf_buf *b, const char *name, const char *suf, const uint16
 /* signed 16-bit literal of the same bits, for _mm512_set1_epi16 */
 static long long s16(int64_t v) { return (long long)(int16_t)(uint16_t)v; }
 
-/* the AVX-512 exact loops' head: the clamp constants where the kernel
-   clamps, the loop over 32 words and x loaded and clamped as xc */
-static void bw_clamp_head(pf_buf *kern, const fx_exp_red *X)
+/* the AVX-512 exact loops' clamp constants where the kernel clamps */
+static void bw_clamp_consts(pf_buf *kern, const fx_exp_red *X)
 {
     if (X->loclamp)
         pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
     if (X->sat)
         pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
-    pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
-                 "        __m512i xc = _mm512_loadu_si512(x + i);\n");
+}
+
+/* x loaded and clamped as xc (the first steps of a loop's stage 1) */
+static void bw_clamp_load(pf_buf *s1, const fx_exp_red *X)
+{
+    pf_put(s1, "        __m512i xc = _mm512_loadu_si512(x + i);\n");
     if (X->loclamp)
-        pf_put(kern, "        xc = _mm512_max_epi16(xc, xlo);\n");
+        pf_put(s1, "        xc = _mm512_max_epi16(xc, xlo);\n");
     if (X->sat)
-        pf_put(kern, "        xc = _mm512_min_epi16(xc, xhi);\n");
+        pf_put(s1, "        xc = _mm512_min_epi16(xc, xhi);\n");
+}
+
+/* s with each line indented by 4 more spaces */
+static void put_indented(pf_buf *b, const char *s)
+{
+    while (*s) {
+        const char *e = strchr(s, '\n');
+        size_t n = e ? (size_t)(e - s) + 1 : strlen(s);
+        if (n > 1)
+            pf_put(b, "    ");
+        pf_putn(b, s, n);
+        s += n;
+    }
+}
+
+/* The vector loop over blocks of L words, software pipelined: one pass
+   runs stage 1 (s1: x + i loaded, up to the variables cv[]) of block i and
+   stage 2 (s2: from cv[] to r) of block i - L.  One block's steps are a
+   chain of some 40 dependent instructions, longer than the scheduler can
+   overlap over consecutive blocks (the loops measured latency-bound); two
+   blocks' halves in one pass halve it.  Then the scalar form for the last
+   n % L (and all of n < L).  s1 and s2 are written at the 8-space indent
+   of a plain loop body. */
+void fx_exp_pipe_loop(pf_buf *kern, const char *vt, int L, const char *s1, const char *s2, const char *const *cv, int nc,
+                      const char *store, const char *scalar)
+{
+    pf_printf(kern, "    size_t i = 0;\n    if (n >= %d) {\n        /* software pipelined: a pass runs the first steps of block i and the\n"
+                    "           rest of block i - %d (one block's chain is longer than the CPU overlaps) */\n        %s",
+              L, L, vt);
+    for (int k = 0; k < nc; k++)
+        pf_printf(kern, "%s p_%s", k ? "," : "", cv[k]);
+    pf_put(kern, ";\n        {\n");
+    put_indented(kern, s1);
+    pf_put(kern, "            ");
+    for (int k = 0; k < nc; k++)
+        pf_printf(kern, "%sp_%s = %s", k ? ", " : "", cv[k], cv[k]);
+    pf_printf(kern, ";\n        }\n        for (i = %d; i + %d <= n; i += %d) {\n            %s", L, L, L, vt);
+    for (int k = 0; k < nc; k++)
+        pf_printf(kern, "%s n_%s", k ? "," : "", cv[k]);
+    pf_put(kern, ";\n            {\n");
+    pf_buf t = {0};
+    put_indented(&t, s1);
+    put_indented(kern, t.s);
+    free(t.s);
+    pf_put(kern, "                ");
+    for (int k = 0; k < nc; k++)
+        pf_printf(kern, "%sn_%s = %s", k ? ", " : "", cv[k], cv[k]);
+    for (int pass = 0; pass < 2; pass++) {
+        const char *in = pass ? "        " : "            ";
+        pf_printf(kern, pass ? "        {\n            %s" : ";\n            }\n            {\n                %s", vt);
+        for (int k = 0; k < nc; k++)
+            pf_printf(kern, "%s %s = p_%s", k ? "," : "", cv[k], cv[k]);
+        pf_put(kern, ";\n");
+        if (pass)
+            put_indented(kern, s2);
+        else {
+            pf_buf u = {0};
+            put_indented(&u, s2);
+            put_indented(kern, u.s);
+            free(u.s);
+        }
+        pf_printf(kern, "%s    %s\n%s}\n", in, store, in);
+        if (!pass) {
+            pf_put(kern, "            ");
+            for (int k = 0; k < nc; k++)
+                pf_printf(kern, "%sp_%s = n_%s", k ? ", " : "", cv[k], cv[k]);
+            pf_put(kern, ";\n        }\n");
+        }
+    }
+    pf_printf(kern, "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif", scalar);
 }
 
 static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int base2)
@@ -546,18 +621,24 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                         "    const __m512i te0 = %s_w16(%s_ter), te1 = %s_w16(%s_ter + 32);\n"
                         "    const __m512i cb = _mm512_set1_epi16(%lld); /* CB = (tcc + 1 - K0) 2^%d - 1 */\n",
                   N, N, N, N, N, N, N, N, N, N, s16(CB), Ei);
-        bw_clamp_head(kern, X);
-        pf_printf(kern, "        __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^%d - 1 - (tb mod 2^%d) */\n"
-                        "        __m512i hn = _mm512_srli_epi16(tn, %d), e = _mm512_permutex2var_epi16(te0, tn, te1);\n"
-                        "        __m512i a = _mm512_permutexvar_epi16(hn, ta);\n"
-                        "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
-                        "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));\n"
-                        "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
-                        "        __m512i c = _mm512_srli_epi16(tn, %d);\n"
-                        "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());\n"
-                        "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));\n"
-                        "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-                  Ei, Ei, Ei - J, F - 17, Ei, N);
+        bw_clamp_consts(kern, X);
+        pf_buf s1 = {0}, s2 = {0};
+        bw_clamp_load(&s1, X);
+        pf_printf(&s1, "        __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^%d - 1 - (tb mod 2^%d) */\n"
+                       "        __m512i hn = _mm512_srli_epi16(tn, %d), e = _mm512_permutex2var_epi16(te0, tn, te1);\n",
+                  Ei, Ei, Ei - J);
+        pf_printf(&s2, "        __m512i a = _mm512_permutexvar_epi16(hn, ta);\n"
+                       "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
+                       "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));\n"
+                       "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
+                       "        __m512i c = _mm512_srli_epi16(tn, %d);\n"
+                       "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());\n"
+                       "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));\n",
+                  F - 17, Ei);
+        static const char *const cv[] = {"tn", "hn", "e"};
+        fx_exp_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 3, "_mm512_storeu_si512(y + i - 32, r);", N);
+        free(s1.s);
+        free(s2.s);
     }
     if (X->tet && !cmpl) {
         pf_buf te = {0};
@@ -597,43 +678,47 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
             pf_printf(kern, "    const __m512i off = _mm512_set1_epi16(%lld), l1 = _mm512_set1_epi16(%lld), l2 = _mm512_set1_epi16(%lld),\n"
                             "                  cl = _mm512_set1_epi16(%lld), one = _mm512_set1_epi16(1);\n",
                       s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl));
-        bw_clamp_head(kern, X);
+        bw_clamp_consts(kern, X);
+        pf_buf s1 = {0}, s2 = {0};
+        bw_clamp_load(&s1, X);
         if (base2 && X->tet && Ei - J == 6)
-            pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+            pf_printf(&s1, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
                             "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutex2var_epi16(te0, tb, te1);\n",
                       Ei - J);
         else if (base2 && X->tet)
-            pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+            pf_printf(&s1, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
                             "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
                       Ei - J);
         else if (base2)
-            pf_printf(kern, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
+            pf_printf(&s1, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
                             "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
                       Ei - J, 16 - Ei + J);
         else
-            pf_put(kern, "        __m512i u = _mm512_add_epi16(xc, off);\n"
+            pf_put(&s1, "        __m512i u = _mm512_add_epi16(xc, off);\n"
                          "        __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);\n"
                          "        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);\n"
                          "        __m512i hi = _mm512_mulhi_epu16(u, l1);\n"
                          "        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);\n");
         if (!X->tet)
-            pf_put(kern, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n");
+            pf_put(&s1, "        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));\n");
         if (J != 6)
-            pf_printf(kern, "        __m512i a = _mm512_permutexvar_epi16(hi, ta);\n"
+            pf_printf(&s2, "        __m512i a = _mm512_permutexvar_epi16(hi, ta);\n"
                             "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
                             "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));\n"
                             "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
                             "        __m512i kb = _mm512_srli_epi16(hi, %d);\n",
                       F - 17, J);
         else
-            pf_put(kern, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
+            pf_put(&s2, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
                          "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
                          "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
                          "        __m512i kb = _mm512_srli_epi16(hi, 6);\n");
-        pf_put(kern, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
+        pf_put(&s2, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
                      "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
-        pf_printf(kern, "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-                  N);
+        static const char *const cv[] = {"hi", "e"};
+        fx_exp_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 2, "_mm512_storeu_si512(y + i - 32, r);", N);
+        free(s1.s);
+        free(s2.s);
     }
     G->bw16 = 2;
     if (J == 6)
@@ -648,38 +733,39 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
        0) + P[k] of the scalar form */
     pf_buf tb5 = {0};
     if (J == 4)
-        pf_printf(&tb5, "    uint8_t b[5][16]; /* A's low, high bytes, D, Q's low, high bytes (Q[i] = 2^(15 - i)) */\n"
+        pf_printf(&tb5, "    uint8_t b[4][16]; /* A's low, high bytes, D, the bytes of Q = 2^e (b[3][i] = 2^i, 0 from i = 8) */\n"
                         "    for (int k = 0; k < 16; k++) {\n"
                         "        b[0][k] = (uint8_t)%s_ta[k];\n"
                         "        b[1][k] = (uint8_t)(%s_ta[k] >> 8);\n"
                         "        b[2][k] = (uint8_t)%s_td[k];\n"
-                        "        b[3][k] = (uint8_t)(32768u >> k);\n"
-                        "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
+                        "        b[3][k] = (uint8_t)(k < 8 ? 1u << k : 0u);\n"
                         "    }\n",
                   N, N, N);
     else
-        pf_printf(&tb5, "    uint8_t b[8][16]; /* A's low, high bytes, D (entries 0-15), Q's low, high bytes (Q[i] =\n"
-                        "                         2^(15 - i)); A's low, high bytes, D (entries 16-31) */\n"
+        pf_printf(&tb5, "    uint8_t b[7][16]; /* A's low, high bytes, D (entries 0-15), the bytes of Q = 2^e (b[3][i] =\n"
+                        "                         2^i, 0 from i = 8); A's low, high bytes, D (entries 16-31) */\n"
                         "    for (int k = 0; k < 16; k++) {\n"
                         "        b[0][k] = (uint8_t)%s_ta[k];\n"
                         "        b[1][k] = (uint8_t)(%s_ta[k] >> 8);\n"
                         "        b[2][k] = (uint8_t)%s_td[k];\n"
-                        "        b[3][k] = (uint8_t)(32768u >> k);\n"
-                        "        b[4][k] = (uint8_t)((32768u >> k) >> 8);\n"
-                        "        b[5][k] = (uint8_t)%s_ta[k + 16];\n"
-                        "        b[6][k] = (uint8_t)(%s_ta[k + 16] >> 8);\n"
-                        "        b[7][k] = (uint8_t)%s_td[k + 16];\n"
+                        "        b[3][k] = (uint8_t)(k < 8 ? 1u << k : 0u);\n"
+                        "        b[4][k] = (uint8_t)%s_ta[k + 16];\n"
+                        "        b[5][k] = (uint8_t)(%s_ta[k + 16] >> 8);\n"
+                        "        b[6][k] = (uint8_t)%s_td[k + 16];\n"
                         "    }\n",
                   N, N, N, N, N, N);
-    const char *k18 = J == 4 ? "    kc[18] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */\n"
-                             : "    kc[18] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */\n"
-                               "    for (int k = 19; k < 22; k++)\n"
+    /* j in both bytes of its word: hi & (2^J - 1), its low byte copied up by a
+       vpshufb (a shuffle, where a pmulhuw would load the multipliers, of
+       which the loop has eight more) */
+    const char *k18 = J == 4 ? "    kc[17] = _mm256_set1_epi16(15); /* j = hi & 15 */\n"
+                             : "    kc[17] = _mm256_set1_epi16(31); /* j = hi & 31 */\n"
+                               "    for (int k = 18; k < 21; k++)\n"
                                "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));\n";
     pf_printf(kern,
               "\n\n/* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16\n"
               "   words is two vpshufb (its low and its high bytes) merged by vpblendvb;\n"
               "   no 16-bit per-element shift: round((2^16 + M) 2^-s) = avg(Q, pmulhuw(M, Q))\n"
-              "   with Q = 2^(17 - s) for s >= 2 (a vpshufb table, 0 from s = 18), and\n"
+              "   with Q = 2^(17 - s) for s >= 2 (one vpshufb of a table of 2^i, 0 from s = 18), and\n"
               "   2^15 + avg(M, 0) at s = 1.  The same values. */\n%s"
               "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
               "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
@@ -688,65 +774,67 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "       would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside\n"
               "       the loop, where a memory operand costs nothing */\n"
               "    __m256i kc[%d];\n"
-              "    for (int k = 0; k < 5; k++)\n"
+              "    for (int k = 0; k < 4; k++)\n"
               "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));\n"
-              "    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */\n"
-              "    kc[6] = _mm256_set1_epi16(0x101);\n"
-              "    kc[7] = _mm256_set1_epi16(-32768);\n"
-              "    kc[8] = _mm256_set1_epi16(%lld); /* c1 */\n"
-              "    kc[9] = _mm256_set1_epi16(%lld); /* c2 */\n"
-              "    kc[10] = _mm256_set1_epi16(%lld); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */\n"
-              "    kc[11] = _mm256_set1_epi16(%lld); /* kb at s = 1 */\n"
-              "    kc[12] = _mm256_set1_epi16(%lld); /* off, or the bias (exp2) */\n"
-              "    kc[13] = _mm256_set1_epi16(%lld); /* L1 */\n"
-              "    kc[14] = _mm256_set1_epi16(%lld); /* L2 */\n"
-              "    kc[15] = _mm256_set1_epi16(%lld); /* Cl */\n"
-              "    kc[16] = _mm256_set1_epi16(%lld); /* the low clamp */\n"
-              "    kc[17] = _mm256_set1_epi16(%lld); /* the high clamp */\n"
+              "    kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */\n"
+              "    kc[5] = _mm256_set1_epi16(0x101);\n"
+              "    kc[6] = _mm256_set1_epi16(-32768);\n"
+              "    kc[7] = _mm256_set1_epi16(%lld); /* c1 */\n"
+              "    kc[8] = _mm256_set1_epi16(%lld); /* c2 */\n"
+              "    kc[9] = _mm256_set1_epi16(%lld); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */\n"
+              "    kc[10] = _mm256_set1_epi16(%lld); /* kb at s = 1 */\n"
+              "    kc[11] = _mm256_set1_epi16(%lld); /* off, or the bias (exp2) */\n"
+              "    kc[12] = _mm256_set1_epi16(%lld); /* L1 */\n"
+              "    kc[13] = _mm256_set1_epi16(%lld); /* L2 */\n"
+              "    kc[14] = _mm256_set1_epi16(%lld); /* Cl */\n"
+              "    kc[15] = _mm256_set1_epi16(%lld); /* the low clamp */\n"
+              "    kc[16] = _mm256_set1_epi16(%lld); /* the high clamp */\n"
               "%s"
               "    __asm__(\"\" : : \"r\"(kc) : \"memory\");\n"
-              "    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];\n"
-              "    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];\n"
-              "    const __m256i %s = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];\n"
-              "    const __m256i j16 = kc[18];\n%s"
+              "    const __m256i al = kc[0], ah = kc[1], dt = kc[2], pw = kc[3], hib = kc[4], dup = kc[5];\n"
+              "    const __m256i h15 = kc[6], c1 = kc[7], c2 = kc[8], cq = kc[9], k1 = kc[10];\n"
+              "    const __m256i %s = kc[11], l1 = kc[12], l2 = kc[13], cl = kc[14], xlo = kc[15], xhi = kc[16];\n"
+              "    const __m256i jmask = kc[17];\n%s"
+              "    const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,\n"
+              "                                          0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);\n"
               "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
-              cond, N, G->it, G->ot, tb5.s, J == 4 ? 19 : 22, s16(X->tc1), s16(X->tc2), s16(X->tcc - 1 + 0x70), s16(X->tcc),
+              cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21, s16(X->tc1), s16(X->tc2), s16(16 - X->tcc - 2048), s16(X->tcc),
               base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
               X->loclamp ? s16(X->xlo) : 0, X->sat ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
-              J == 4 ? "" : "    const __m256i al1 = kc[19], ah1 = kc[20], dt1 = kc[21];\n");
+              J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n");
     free(tb5.s);
-    pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
-                 "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
+    pf_buf s1 = {0}, s2 = {0};
+    pf_put(&s1, "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
     if (X->loclamp)
-        pf_put(kern, "        xc = _mm256_max_epi16(xc, xlo);\n");
+        pf_put(&s1, "        xc = _mm256_max_epi16(xc, xlo);\n");
     if (X->sat)
-        pf_put(kern, "        xc = _mm256_min_epi16(xc, xhi);\n");
+        pf_put(&s1, "        xc = _mm256_min_epi16(xc, xhi);\n");
     if (base2)
-        pf_printf(kern, "        __m256i tb = _mm256_add_epi16(xc, bias);\n"
+        pf_printf(&s1, "        __m256i tb = _mm256_add_epi16(xc, bias);\n"
                         "        __m256i hi = _mm256_srli_epi16(tb, %d), lo = _mm256_slli_epi16(tb, %d);\n",
                   Ei - J, 16 - Ei + J);
     else {
-        pf_put(kern, "        __m256i u = _mm256_add_epi16(xc, off);\n"
+        pf_put(&s1, "        __m256i u = _mm256_add_epi16(xc, off);\n"
                      "        __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);\n"
                      "        __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);\n");
         if (X->tcarry0)
-            pf_put(kern, "        /* the carry, lo < q: lo <= q and lo != q */\n"
+            pf_put(&s1, "        /* the carry, lo < q: lo <= q and lo != q */\n"
                          "        __m256i cy = _mm256_andnot_si256(_mm256_cmpeq_epi16(lo, q), _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q));\n");
         else
-            pf_put(kern, "        /* the carry, lo < q: lo <= q (lo = q occurs for no input) */\n"
+            pf_put(&s1, "        /* the carry, lo < q: lo <= q (lo = q occurs for no input) */\n"
                          "        __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);\n");
-        pf_put(kern, "        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);\n");
+        pf_put(&s1, "        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);\n");
     }
-    pf_put(kern, "        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));\n");
+    pf_put(&s1, "        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));\n");
     if (J == 4)
-        pf_put(kern, "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 12), j16); /* j in both bytes */\n"
+        pf_put(&s2, "        __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */\n"
                      "        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);\n"
                      "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
                      "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));\n"
                      "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));\n"
                      "        __m256i kb = _mm256_srli_epi16(hi, 4);\n");
     else
-        pf_put(kern, "        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 11), j16); /* j in both bytes */\n"
+        pf_put(&s2, "        __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */\n"
                      "        __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */\n"
                      "        __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),\n"
                      "                                       _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);\n"
@@ -754,16 +842,20 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                      "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));\n"
                      "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));\n"
                      "        __m256i kb = _mm256_srli_epi16(hi, 5);\n");
-    pf_put(kern, "        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */\n"
-                 "        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);\n"
-                 "        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);\n"
+    pf_put(&s2, "        /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at\n"
+                 "           e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in\n"
+                 "           [8, 15] for the low byte, where the table holds 0) */\n"
+                 "        __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);\n"
+                 "        __m256i qq = _mm256_shuffle_epi8(pw, qi);\n"
                  "        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));\n"
                  "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),\n"
                  "                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */\n");
     if (X->sat)
-        pf_put(kern, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */\n");
-    pf_printf(kern, "        _mm256_storeu_si256((__m256i *)(y + i), r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-              N);
+        pf_put(&s2, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */\n");
+    static const char *const cv[] = {"hi", "e"};
+    fx_exp_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
+    free(s1.s);
+    free(s2.s);
     G->bw16 = 3;
 }
 
@@ -779,11 +871,14 @@ static int prep_tab_noclamp(fx_gen *G, int base2, char *err, size_t errlen)
     int64_t k0 = imin >= 0 ? 0 : (-imin + one - 1) / one, xtop = X->sat ? X->xsat : X->xhi;
     /* 16-entry tables first (AVX2 has a loop for them), then 32, then 64;
        exp2 whose r would have 7 bits with 16 entries: 32 first (r has 6,
-       and the AVX-512 loop reads E from a 64-entry table) */
-    int order[3] = {4, 5, 6};
+       and the AVX-512 loop reads E from a 64-entry table).  exp: 16
+       entries only; where they miss the bound, so did 32 and 64 for every
+       type pair tried (fixed<15,5..15> -> ufixed<16,-5..17>), and a path
+       no type takes is a path no test runs */
+    int order[3] = {4, 5, 6}, norder = base2 ? 3 : 1;
     if (base2 && G->in.exp - 4 == 7)
         order[0] = 5, order[1] = 4;
-    for (int oi = 0; oi < 3; oi++) {
+    for (int oi = 0; oi < norder; oi++) {
         int J = order[oi];
         if (base2 && X->loclamp && xtop + k0 * one <= 65535) {
             X->loclamp = 0;

@@ -310,19 +310,25 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
               N, N, N, N, s16(X->fd));
     if (!base2)
         pf_printf(kern, "    const __m512i l = _mm512_set1_epi16(%lld);\n", s16(X->fl));
-    pf_put(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
-                 "        __m512i w = _mm512_sub_epi16(d, _mm512_min_epi16(_mm512_loadu_si512(x + i), d));\n");
+    pf_buf s1 = {0}, s2 = {0};
+    static const char *const cv[] = {"w"};
+    pf_put(&s1, "        __m512i w = _mm512_sub_epi16(d, _mm512_min_epi16(_mm512_loadu_si512(x + i), d));\n");
     if (!base2)
-        pf_put(kern, "        w = _mm512_mulhi_epu16(w, l);\n");
-    pf_printf(kern, "        __m512i j = _mm512_srli_epi16(w, %d), rr = _mm512_slli_epi16(w, %d);\n"
-                    "        __m512i v = _mm512_sub_epi16(_mm512_permutexvar_epi16(j, tv),\n"
-                    "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), rr));\n"
-                    "        _mm512_storeu_si512(y + i, _mm512_srlv_epi16(v, _mm512_srli_epi16(w, %d)));\n"
-                    "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-              rb, 16 - rb, fb, N);
+        pf_put(&s1, "        w = _mm512_mulhi_epu16(w, l);\n");
+    pf_printf(&s2, "        __m512i j = _mm512_srli_epi16(w, %d), rr = _mm512_slli_epi16(w, %d);\n"
+                   "        __m512i v = _mm512_sub_epi16(_mm512_permutexvar_epi16(j, tv),\n"
+                   "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), rr));\n"
+                   "        __m512i r = _mm512_srlv_epi16(v, _mm512_srli_epi16(w, %d));\n",
+              rb, 16 - rb, fb);
+    fx_exp_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 1, "_mm512_storeu_si512(y + i - 32, r);", N);
+    free(s1.s);
+    free(s2.s);
+    s1 = s2 = (pf_buf){0};
     /* AVX2: no vpermw and no 16-bit per-element shift.  A 16-entry table of
        words is two vpshufb (its low and its high bytes, 16 per 128-bit
-       lane) indexed by j in both bytes of the word, merged by vpblendvb;
+       lane) indexed by j in both bytes of the word (its low byte copied up
+       by a vpshufb: a shuffle, where a pmullw would load the multipliers),
+       merged by vpblendvb;
        v >> c is done in 32-bit lanes (vpsrlvd) on the even and the odd
        words apart, without unpacking: the same values */
     pf_printf(kern,
@@ -343,24 +349,29 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
               "    const __m256i vh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));\n"
               "    const __m256i sl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));\n"
               "    const __m256i sh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));\n"
-              "    const __m256i d = _mm256_set1_epi16(%lld), m15 = _mm256_set1_epi16(15), dup = _mm256_set1_epi16(0x101);\n"
-              "    const __m256i hib = _mm256_set1_epi16(-256), lo16 = _mm256_set1_epi32(0xffff);\n",
+              "    const __m256i d = _mm256_set1_epi16(%lld), m15 = _mm256_set1_epi16(15);\n"
+              "    const __m256i hib = _mm256_set1_epi16(-256), lo16 = _mm256_set1_epi32(0xffff);\n"
+              "    const __m256i dup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,\n"
+              "                                         0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);\n",
               cond, N, G->it, G->ot, N, N, N, N, s16(X->fd));
     if (!base2)
         pf_printf(kern, "    const __m256i l = _mm256_set1_epi16(%lld);\n", s16(X->fl));
-    pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
-                 "        __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));\n");
+    pf_put(&s1, "        __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));\n");
     if (!base2)
-        pf_put(kern, "        w = _mm256_mulhi_epu16(w, l);\n");
-    pf_printf(kern, "        __m256i j = _mm256_mullo_epi16(_mm256_and_si256(_mm256_srli_epi16(w, %d), m15), dup); /* j in both bytes */\n"
-                    "        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);\n"
-                    "        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);\n"
-                    "        v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, %d)));\n"
-                    "        __m256i c = _mm256_srli_epi16(w, %d);\n"
-                    "        __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));\n"
-                    "        __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)); /* its high word */\n"
-                    "        _mm256_storeu_si256((__m256i *)(y + i), _mm256_blend_epi16(ev, od, 0xaa));\n"
-                    "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-              rb, 16 - rb, fb, N);
+        pf_put(&s1, "        w = _mm256_mulhi_epu16(w, l);\n");
+    pf_printf(&s1, "        __m256i j = _mm256_shuffle_epi8(_mm256_and_si256(_mm256_srli_epi16(w, %d), m15), dup); /* j in both bytes */\n",
+              rb);
+    pf_printf(&s2, "        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);\n"
+                   "        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);\n"
+                   "        v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, %d)));\n"
+                   "        __m256i c = _mm256_srli_epi16(w, %d);\n"
+                   "        __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));\n"
+                   "        __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)); /* its high word */\n"
+                   "        __m256i r = _mm256_blend_epi16(ev, od, 0xaa);\n",
+              16 - rb, fb);
+    static const char *const cv2[] = {"w", "j"};
+    fx_exp_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv2, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
+    free(s1.s);
+    free(s2.s);
     G->bw16 = 3;
 }

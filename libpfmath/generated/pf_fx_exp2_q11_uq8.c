@@ -337,19 +337,50 @@ static const uint32_t pf_exp2_q11_uq8_tpr[32] = {
     const __m512i cb = _mm512_set1_epi16(16383); /* CB = (tcc + 1 - K0) 2^11 - 1 */
     const __m512i xhi = _mm512_set1_epi16(16384);
     size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m512i xc = _mm512_loadu_si512(x + i);
-        xc = _mm512_min_epi16(xc, xhi);
-        __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^11 - 1 - (tb mod 2^11) */
-        __m512i hn = _mm512_srli_epi16(tn, 6), e = _mm512_permutex2var_epi16(te0, tn, te1);
-        __m512i a = _mm512_permutexvar_epi16(hn, ta);
-        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
-        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));
-        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 4));
-        __m512i c = _mm512_srli_epi16(tn, 11);
-        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());
-        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));
-        _mm512_storeu_si512(y + i, r);
+    if (n >= 32) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
+        __m512i p_tn, p_hn, p_e;
+        {
+            __m512i xc = _mm512_loadu_si512(x + i);
+            xc = _mm512_min_epi16(xc, xhi);
+            __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^11 - 1 - (tb mod 2^11) */
+            __m512i hn = _mm512_srli_epi16(tn, 6), e = _mm512_permutex2var_epi16(te0, tn, te1);
+            p_tn = tn, p_hn = hn, p_e = e;
+        }
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m512i n_tn, n_hn, n_e;
+            {
+                __m512i xc = _mm512_loadu_si512(x + i);
+                xc = _mm512_min_epi16(xc, xhi);
+                __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^11 - 1 - (tb mod 2^11) */
+                __m512i hn = _mm512_srli_epi16(tn, 6), e = _mm512_permutex2var_epi16(te0, tn, te1);
+                n_tn = tn, n_hn = hn, n_e = e;
+            }
+            {
+                __m512i tn = p_tn, hn = p_hn, e = p_e;
+                __m512i a = _mm512_permutexvar_epi16(hn, ta);
+                __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
+                v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));
+                __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 4));
+                __m512i c = _mm512_srli_epi16(tn, 11);
+                __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());
+                r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));
+                _mm512_storeu_si512(y + i - 32, r);
+            }
+            p_tn = n_tn, p_hn = n_hn, p_e = n_e;
+        }
+        {
+            __m512i tn = p_tn, hn = p_hn, e = p_e;
+            __m512i a = _mm512_permutexvar_epi16(hn, ta);
+            __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
+            v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));
+            __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 4));
+            __m512i c = _mm512_srli_epi16(tn, 11);
+            __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());
+            r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));
+            _mm512_storeu_si512(y + i - 32, r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_exp2_q11_uq8(x[i]);
@@ -359,76 +390,121 @@ static const uint32_t pf_exp2_q11_uq8_tpr[32] = {
 /* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16
    words is two vpshufb (its low and its high bytes) merged by vpblendvb;
    no 16-bit per-element shift: round((2^16 + M) 2^-s) = avg(Q, pmulhuw(M, Q))
-   with Q = 2^(17 - s) for s >= 2 (a vpshufb table, 0 from s = 18), and
+   with Q = 2^(17 - s) for s >= 2 (one vpshufb of a table of 2^i, 0 from s = 18), and
    2^15 + avg(M, 0) at s = 1.  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-    uint8_t b[8][16]; /* A's low, high bytes, D (entries 0-15), Q's low, high bytes (Q[i] =
-                         2^(15 - i)); A's low, high bytes, D (entries 16-31) */
+    uint8_t b[7][16]; /* A's low, high bytes, D (entries 0-15), the bytes of Q = 2^e (b[3][i] =
+                         2^i, 0 from i = 8); A's low, high bytes, D (entries 16-31) */
     for (int k = 0; k < 16; k++) {
         b[0][k] = (uint8_t)pf_exp2_q11_uq8_ta[k];
         b[1][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k] >> 8);
         b[2][k] = (uint8_t)pf_exp2_q11_uq8_td[k];
-        b[3][k] = (uint8_t)(32768u >> k);
-        b[4][k] = (uint8_t)((32768u >> k) >> 8);
-        b[5][k] = (uint8_t)pf_exp2_q11_uq8_ta[k + 16];
-        b[6][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k + 16] >> 8);
-        b[7][k] = (uint8_t)pf_exp2_q11_uq8_td[k + 16];
+        b[3][k] = (uint8_t)(k < 8 ? 1u << k : 0u);
+        b[4][k] = (uint8_t)pf_exp2_q11_uq8_ta[k + 16];
+        b[5][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k + 16] >> 8);
+        b[6][k] = (uint8_t)pf_exp2_q11_uq8_td[k + 16];
     }
     /* the constants in memory GCC cannot see through: with 16 ymm registers it
        would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside
        the loop, where a memory operand costs nothing */
-    __m256i kc[22];
-    for (int k = 0; k < 5; k++)
+    __m256i kc[21];
+    for (int k = 0; k < 4; k++)
         kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));
-    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
-    kc[6] = _mm256_set1_epi16(0x101);
-    kc[7] = _mm256_set1_epi16(-32768);
-    kc[8] = _mm256_set1_epi16(-20111); /* c1 */
-    kc[9] = _mm256_set1_epi16(497); /* c2 */
-    kc[10] = _mm256_set1_epi16(134); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */
-    kc[11] = _mm256_set1_epi16(23); /* kb at s = 1 */
-    kc[12] = _mm256_set1_epi16(-32768); /* off, or the bias (exp2) */
-    kc[13] = _mm256_set1_epi16(0); /* L1 */
-    kc[14] = _mm256_set1_epi16(0); /* L2 */
-    kc[15] = _mm256_set1_epi16(0); /* Cl */
-    kc[16] = _mm256_set1_epi16(0); /* the low clamp */
-    kc[17] = _mm256_set1_epi16(16384); /* the high clamp */
-    kc[18] = _mm256_set1_epi16(0x2020); /* (j 2^11) 0x2020 2^-16 = j 0x101 */
-    for (int k = 19; k < 22; k++)
+    kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
+    kc[5] = _mm256_set1_epi16(0x101);
+    kc[6] = _mm256_set1_epi16(-32768);
+    kc[7] = _mm256_set1_epi16(-20111); /* c1 */
+    kc[8] = _mm256_set1_epi16(497); /* c2 */
+    kc[9] = _mm256_set1_epi16(-2055); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
+    kc[10] = _mm256_set1_epi16(23); /* kb at s = 1 */
+    kc[11] = _mm256_set1_epi16(-32768); /* off, or the bias (exp2) */
+    kc[12] = _mm256_set1_epi16(0); /* L1 */
+    kc[13] = _mm256_set1_epi16(0); /* L2 */
+    kc[14] = _mm256_set1_epi16(0); /* Cl */
+    kc[15] = _mm256_set1_epi16(0); /* the low clamp */
+    kc[16] = _mm256_set1_epi16(16384); /* the high clamp */
+    kc[17] = _mm256_set1_epi16(31); /* j = hi & 31 */
+    for (int k = 18; k < 21; k++)
         kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));
     __asm__("" : : "r"(kc) : "memory");
-    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];
-    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];
-    const __m256i bias = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];
-    const __m256i j16 = kc[18];
-    const __m256i al1 = kc[19], ah1 = kc[20], dt1 = kc[21];
+    const __m256i al = kc[0], ah = kc[1], dt = kc[2], pw = kc[3], hib = kc[4], dup = kc[5];
+    const __m256i h15 = kc[6], c1 = kc[7], c2 = kc[8], cq = kc[9], k1 = kc[10];
+    const __m256i bias = kc[11], l1 = kc[12], l2 = kc[13], cl = kc[14], xlo = kc[15], xhi = kc[16];
+    const __m256i jmask = kc[17];
+    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];
+    const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
+                                          0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
     (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
     size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
-        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
-        xc = _mm256_min_epi16(xc, xhi);
-        __m256i tb = _mm256_add_epi16(xc, bias);
-        __m256i hi = _mm256_srli_epi16(tb, 6), lo = _mm256_slli_epi16(tb, 10);
-        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
-        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 11), j16); /* j in both bytes */
-        __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */
-        __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),
-                                       _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);
-        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));
-        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));
-        __m256i kb = _mm256_srli_epi16(hi, 5);
-        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */
-        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);
-        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);
-        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
-        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
-                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
-        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
-        _mm256_storeu_si256((__m256i *)(y + i), r);
+    if (n >= 16) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
+        __m256i p_hi, p_e;
+        {
+            __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
+            xc = _mm256_min_epi16(xc, xhi);
+            __m256i tb = _mm256_add_epi16(xc, bias);
+            __m256i hi = _mm256_srli_epi16(tb, 6), lo = _mm256_slli_epi16(tb, 10);
+            __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
+            p_hi = hi, p_e = e;
+        }
+        for (i = 16; i + 16 <= n; i += 16) {
+            __m256i n_hi, n_e;
+            {
+                __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
+                xc = _mm256_min_epi16(xc, xhi);
+                __m256i tb = _mm256_add_epi16(xc, bias);
+                __m256i hi = _mm256_srli_epi16(tb, 6), lo = _mm256_slli_epi16(tb, 10);
+                __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
+                n_hi = hi, n_e = e;
+            }
+            {
+                __m256i hi = p_hi, e = p_e;
+                __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
+                __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */
+                __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),
+                                               _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);
+                __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
+                v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));
+                __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));
+                __m256i kb = _mm256_srli_epi16(hi, 5);
+                /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
+                   e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
+                   [8, 15] for the low byte, where the table holds 0) */
+                __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
+                __m256i qq = _mm256_shuffle_epi8(pw, qi);
+                __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
+                r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
+                                       _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
+                r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+                _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+            }
+            p_hi = n_hi, p_e = n_e;
+        }
+        {
+            __m256i hi = p_hi, e = p_e;
+            __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
+            __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */
+            __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),
+                                           _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);
+            __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
+            v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));
+            __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));
+            __m256i kb = _mm256_srli_epi16(hi, 5);
+            /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
+               e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
+               [8, 15] for the low byte, where the table holds 0) */
+            __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
+            __m256i qq = _mm256_shuffle_epi8(pw, qi);
+            __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
+            r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
+                                   _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
+            r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+            _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_exp2_q11_uq8(x[i]);

@@ -273,12 +273,38 @@ static void pf_exp2_q11_uq8_fast_array_bw(const int16_t *restrict x, uint16_t *r
     const __m512i tv = pf_exp2_q11_uq8_fast_w16(pf_exp2_q11_uq8_fast_fv), ts = pf_exp2_q11_uq8_fast_w16(pf_exp2_q11_uq8_fast_fs);
     const __m512i d = _mm512_set1_epi16(16384);
     size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m512i w = _mm512_sub_epi16(d, _mm512_min_epi16(_mm512_loadu_si512(x + i), d));
-        __m512i j = _mm512_srli_epi16(w, 7), rr = _mm512_slli_epi16(w, 9);
-        __m512i v = _mm512_sub_epi16(_mm512_permutexvar_epi16(j, tv),
-                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), rr));
-        _mm512_storeu_si512(y + i, _mm512_srlv_epi16(v, _mm512_srli_epi16(w, 11)));
+    if (n >= 32) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
+        __m512i p_w;
+        {
+            __m512i w = _mm512_sub_epi16(d, _mm512_min_epi16(_mm512_loadu_si512(x + i), d));
+            p_w = w;
+        }
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m512i n_w;
+            {
+                __m512i w = _mm512_sub_epi16(d, _mm512_min_epi16(_mm512_loadu_si512(x + i), d));
+                n_w = w;
+            }
+            {
+                __m512i w = p_w;
+                __m512i j = _mm512_srli_epi16(w, 7), rr = _mm512_slli_epi16(w, 9);
+                __m512i v = _mm512_sub_epi16(_mm512_permutexvar_epi16(j, tv),
+                                             _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), rr));
+                __m512i r = _mm512_srlv_epi16(v, _mm512_srli_epi16(w, 11));
+                _mm512_storeu_si512(y + i - 32, r);
+            }
+            p_w = n_w;
+        }
+        {
+            __m512i w = p_w;
+            __m512i j = _mm512_srli_epi16(w, 7), rr = _mm512_slli_epi16(w, 9);
+            __m512i v = _mm512_sub_epi16(_mm512_permutexvar_epi16(j, tv),
+                                         _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), rr));
+            __m512i r = _mm512_srlv_epi16(v, _mm512_srli_epi16(w, 11));
+            _mm512_storeu_si512(y + i - 32, r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_exp2_q11_uq8_fast(x[i]);
@@ -304,19 +330,51 @@ static void pf_exp2_q11_uq8_fast_array_avx2(const int16_t *restrict x, uint16_t 
     const __m256i vh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
     const __m256i sl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
     const __m256i sh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
-    const __m256i d = _mm256_set1_epi16(16384), m15 = _mm256_set1_epi16(15), dup = _mm256_set1_epi16(0x101);
+    const __m256i d = _mm256_set1_epi16(16384), m15 = _mm256_set1_epi16(15);
     const __m256i hib = _mm256_set1_epi16(-256), lo16 = _mm256_set1_epi32(0xffff);
+    const __m256i dup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
+                                         0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
     size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
-        __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));
-        __m256i j = _mm256_mullo_epi16(_mm256_and_si256(_mm256_srli_epi16(w, 7), m15), dup); /* j in both bytes */
-        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);
-        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);
-        v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, 9)));
-        __m256i c = _mm256_srli_epi16(w, 11);
-        __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));
-        __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)); /* its high word */
-        _mm256_storeu_si256((__m256i *)(y + i), _mm256_blend_epi16(ev, od, 0xaa));
+    if (n >= 16) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
+        __m256i p_w, p_j;
+        {
+            __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));
+            __m256i j = _mm256_shuffle_epi8(_mm256_and_si256(_mm256_srli_epi16(w, 7), m15), dup); /* j in both bytes */
+            p_w = w, p_j = j;
+        }
+        for (i = 16; i + 16 <= n; i += 16) {
+            __m256i n_w, n_j;
+            {
+                __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));
+                __m256i j = _mm256_shuffle_epi8(_mm256_and_si256(_mm256_srli_epi16(w, 7), m15), dup); /* j in both bytes */
+                n_w = w, n_j = j;
+            }
+            {
+                __m256i w = p_w, j = p_j;
+                __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);
+                __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);
+                v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, 9)));
+                __m256i c = _mm256_srli_epi16(w, 11);
+                __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));
+                __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)); /* its high word */
+                __m256i r = _mm256_blend_epi16(ev, od, 0xaa);
+                _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+            }
+            p_w = n_w, p_j = n_j;
+        }
+        {
+            __m256i w = p_w, j = p_j;
+            __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);
+            __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);
+            v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, 9)));
+            __m256i c = _mm256_srli_epi16(w, 11);
+            __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));
+            __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)); /* its high word */
+            __m256i r = _mm256_blend_epi16(ev, od, 0xaa);
+            _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_exp2_q11_uq8_fast(x[i]);

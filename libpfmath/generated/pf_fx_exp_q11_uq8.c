@@ -315,24 +315,60 @@ static void pf_exp_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restric
     const __m512i xlo = _mm512_set1_epi16(-14197);
     const __m512i xhi = _mm512_set1_epi16(11357);
     size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m512i xc = _mm512_loadu_si512(x + i);
-        xc = _mm512_max_epi16(xc, xlo);
-        xc = _mm512_min_epi16(xc, xhi);
-        __m512i u = _mm512_add_epi16(xc, off);
-        __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);
-        __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);
-        __m512i hi = _mm512_mulhi_epu16(u, l1);
-        hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);
-        __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
-        __m512i a = _mm512_permutexvar_epi16(hi, ta);
-        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
-        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
-        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
-        __m512i kb = _mm512_srli_epi16(hi, 4);
-        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
-        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
-        _mm512_storeu_si512(y + i, r);
+    if (n >= 32) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
+        __m512i p_hi, p_e;
+        {
+            __m512i xc = _mm512_loadu_si512(x + i);
+            xc = _mm512_max_epi16(xc, xlo);
+            xc = _mm512_min_epi16(xc, xhi);
+            __m512i u = _mm512_add_epi16(xc, off);
+            __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);
+            __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);
+            __m512i hi = _mm512_mulhi_epu16(u, l1);
+            hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);
+            __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
+            p_hi = hi, p_e = e;
+        }
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m512i n_hi, n_e;
+            {
+                __m512i xc = _mm512_loadu_si512(x + i);
+                xc = _mm512_max_epi16(xc, xlo);
+                xc = _mm512_min_epi16(xc, xhi);
+                __m512i u = _mm512_add_epi16(xc, off);
+                __m512i q = _mm512_add_epi16(_mm512_mulhi_epu16(u, l2), cl);
+                __m512i lo = _mm512_add_epi16(_mm512_mullo_epi16(u, l1), q);
+                __m512i hi = _mm512_mulhi_epu16(u, l1);
+                hi = _mm512_mask_add_epi16(hi, _mm512_cmplt_epu16_mask(lo, q), hi, one);
+                __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
+                n_hi = hi, n_e = e;
+            }
+            {
+                __m512i hi = p_hi, e = p_e;
+                __m512i a = _mm512_permutexvar_epi16(hi, ta);
+                __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
+                v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
+                __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
+                __m512i kb = _mm512_srli_epi16(hi, 4);
+                __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
+                r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
+                _mm512_storeu_si512(y + i - 32, r);
+            }
+            p_hi = n_hi, p_e = n_e;
+        }
+        {
+            __m512i hi = p_hi, e = p_e;
+            __m512i a = _mm512_permutexvar_epi16(hi, ta);
+            __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
+            v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
+            __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
+            __m512i kb = _mm512_srli_epi16(hi, 4);
+            __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
+            r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
+            _mm512_storeu_si512(y + i - 32, r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_exp_q11_uq8(x[i]);
@@ -342,72 +378,120 @@ static void pf_exp_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restric
 /* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16
    words is two vpshufb (its low and its high bytes) merged by vpblendvb;
    no 16-bit per-element shift: round((2^16 + M) 2^-s) = avg(Q, pmulhuw(M, Q))
-   with Q = 2^(17 - s) for s >= 2 (a vpshufb table, 0 from s = 18), and
+   with Q = 2^(17 - s) for s >= 2 (one vpshufb of a table of 2^i, 0 from s = 18), and
    2^15 + avg(M, 0) at s = 1.  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-    uint8_t b[5][16]; /* A's low, high bytes, D, Q's low, high bytes (Q[i] = 2^(15 - i)) */
+    uint8_t b[4][16]; /* A's low, high bytes, D, the bytes of Q = 2^e (b[3][i] = 2^i, 0 from i = 8) */
     for (int k = 0; k < 16; k++) {
         b[0][k] = (uint8_t)pf_exp_q11_uq8_ta[k];
         b[1][k] = (uint8_t)(pf_exp_q11_uq8_ta[k] >> 8);
         b[2][k] = (uint8_t)pf_exp_q11_uq8_td[k];
-        b[3][k] = (uint8_t)(32768u >> k);
-        b[4][k] = (uint8_t)((32768u >> k) >> 8);
+        b[3][k] = (uint8_t)(k < 8 ? 1u << k : 0u);
     }
     /* the constants in memory GCC cannot see through: with 16 ymm registers it
        would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside
        the loop, where a memory operand costs nothing */
-    __m256i kc[19];
-    for (int k = 0; k < 5; k++)
+    __m256i kc[18];
+    for (int k = 0; k < 4; k++)
         kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));
-    kc[5] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
-    kc[6] = _mm256_set1_epi16(0x101);
-    kc[7] = _mm256_set1_epi16(-32768);
-    kc[8] = _mm256_set1_epi16(-20116); /* c1 */
-    kc[9] = _mm256_set1_epi16(1004); /* c2 */
-    kc[10] = _mm256_set1_epi16(129); /* 0x70 + s - 2 = cq - kb (s - 2 <= 31: no carry out of the byte) */
-    kc[11] = _mm256_set1_epi16(18); /* kb at s = 1 */
-    kc[12] = _mm256_set1_epi16(15586); /* off, or the bias (exp2) */
-    kc[13] = _mm256_set1_epi16(738); /* L1 */
-    kc[14] = _mm256_set1_epi16(-22291); /* L2 */
-    kc[15] = _mm256_set1_epi16(21584); /* Cl */
-    kc[16] = _mm256_set1_epi16(-14197); /* the low clamp */
-    kc[17] = _mm256_set1_epi16(11357); /* the high clamp */
-    kc[18] = _mm256_set1_epi16(0x1010); /* (j 2^12) 0x1010 2^-16 = j 0x101 */
+    kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
+    kc[5] = _mm256_set1_epi16(0x101);
+    kc[6] = _mm256_set1_epi16(-32768);
+    kc[7] = _mm256_set1_epi16(-20116); /* c1 */
+    kc[8] = _mm256_set1_epi16(1004); /* c2 */
+    kc[9] = _mm256_set1_epi16(-2050); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
+    kc[10] = _mm256_set1_epi16(18); /* kb at s = 1 */
+    kc[11] = _mm256_set1_epi16(15586); /* off, or the bias (exp2) */
+    kc[12] = _mm256_set1_epi16(738); /* L1 */
+    kc[13] = _mm256_set1_epi16(-22291); /* L2 */
+    kc[14] = _mm256_set1_epi16(21584); /* Cl */
+    kc[15] = _mm256_set1_epi16(-14197); /* the low clamp */
+    kc[16] = _mm256_set1_epi16(11357); /* the high clamp */
+    kc[17] = _mm256_set1_epi16(15); /* j = hi & 15 */
     __asm__("" : : "r"(kc) : "memory");
-    const __m256i al = kc[0], ah = kc[1], dt = kc[2], ql = kc[3], qh = kc[4], hib = kc[5], dup = kc[6];
-    const __m256i h15 = kc[7], c1 = kc[8], c2 = kc[9], cq = kc[10], k1 = kc[11];
-    const __m256i off = kc[12], l1 = kc[13], l2 = kc[14], cl = kc[15], xlo = kc[16], xhi = kc[17];
-    const __m256i j16 = kc[18];
+    const __m256i al = kc[0], ah = kc[1], dt = kc[2], pw = kc[3], hib = kc[4], dup = kc[5];
+    const __m256i h15 = kc[6], c1 = kc[7], c2 = kc[8], cq = kc[9], k1 = kc[10];
+    const __m256i off = kc[11], l1 = kc[12], l2 = kc[13], cl = kc[14], xlo = kc[15], xhi = kc[16];
+    const __m256i jmask = kc[17];
+    const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
+                                          0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
     (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
     size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
-        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
-        xc = _mm256_max_epi16(xc, xlo);
-        xc = _mm256_min_epi16(xc, xhi);
-        __m256i u = _mm256_add_epi16(xc, off);
-        __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
-        __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
-        /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
-        __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);
-        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);
-        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
-        __m256i jd = _mm256_mulhi_epu16(_mm256_slli_epi16(hi, 12), j16); /* j in both bytes */
-        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
-        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
-        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
-        __m256i kb = _mm256_srli_epi16(hi, 4);
-        /* 0x70 + s - 2 in both bytes: from s = 18 bit 7 is set (vpshufb's 0) */
-        __m256i qi = _mm256_mullo_epi16(_mm256_sub_epi16(cq, kb), dup);
-        __m256i qq = _mm256_blendv_epi8(_mm256_shuffle_epi8(ql, qi), _mm256_shuffle_epi8(qh, qi), hib);
-        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
-        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
-                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
-        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
-        _mm256_storeu_si256((__m256i *)(y + i), r);
+    if (n >= 16) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
+        __m256i p_hi, p_e;
+        {
+            __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
+            xc = _mm256_max_epi16(xc, xlo);
+            xc = _mm256_min_epi16(xc, xhi);
+            __m256i u = _mm256_add_epi16(xc, off);
+            __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
+            __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
+            /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
+            __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);
+            __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);
+            __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
+            p_hi = hi, p_e = e;
+        }
+        for (i = 16; i + 16 <= n; i += 16) {
+            __m256i n_hi, n_e;
+            {
+                __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
+                xc = _mm256_max_epi16(xc, xlo);
+                xc = _mm256_min_epi16(xc, xhi);
+                __m256i u = _mm256_add_epi16(xc, off);
+                __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
+                __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
+                /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
+                __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);
+                __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);
+                __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
+                n_hi = hi, n_e = e;
+            }
+            {
+                __m256i hi = p_hi, e = p_e;
+                __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
+                __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
+                __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
+                v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
+                __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
+                __m256i kb = _mm256_srli_epi16(hi, 4);
+                /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
+                   e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
+                   [8, 15] for the low byte, where the table holds 0) */
+                __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
+                __m256i qq = _mm256_shuffle_epi8(pw, qi);
+                __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
+                r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
+                                       _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
+                r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+                _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+            }
+            p_hi = n_hi, p_e = n_e;
+        }
+        {
+            __m256i hi = p_hi, e = p_e;
+            __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
+            __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
+            __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
+            v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
+            __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
+            __m256i kb = _mm256_srli_epi16(hi, 4);
+            /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
+               e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
+               [8, 15] for the low byte, where the table holds 0) */
+            __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
+            __m256i qq = _mm256_shuffle_epi8(pw, qi);
+            __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
+            r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
+                                   _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
+            r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+            _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_exp_q11_uq8(x[i]);
