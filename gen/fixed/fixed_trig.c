@@ -356,17 +356,28 @@ static int prepare4_n(fx_gen *G, int is_cos, int ns, int ord, char *err, size_t 
     return 0;
 }
 
+/* kinds 4 and 6's phase: K = round(2/pi 2^(30-Ei)) as two 16-bit words
+   kh:kl, the offset hoff and the phase's error from K's rounding; 0 when K
+   does not fit (the 16-bit kinds then do not apply) */
+static uint64_t tr_phase(fx_trig_red *T, int Ei, int hoff)
+{
+    uint64_t K = two_over_pi_bits(30 - Ei);
+    if (K >= ((uint64_t)1 << 32) || K < ((uint64_t)1 << 15))
+        return 0;
+    T->kh = (int64_t)(K >> 16);
+    T->kl = (int64_t)(K & 0xffffu);
+    T->hoff = hoff;
+    T->tred = 32768.0 * two_over_pi_frac(30 - Ei) * 0x1p-30;
+    return K;
+}
+
 static int prepare4(fx_gen *G, int is_cos, char *err, size_t errlen)
 {
     fx_trig_red *T = &G->trig;
     int Ei = G->in.exp, Eo = G->out.exp;
-    uint64_t K = two_over_pi_bits(30 - Ei);
-    if (K >= ((uint64_t)1 << 32) || K < ((uint64_t)1 << 15))
+    uint64_t K = tr_phase(T, Ei, is_cos ? 0x4000 : 0);
+    if (!K)
         return -2;
-    T->kh = (int64_t)(K >> 16);
-    T->kl = (int64_t)(K & 0xffffu);
-    T->hoff = is_cos ? 0x4000 : 0;
-    T->tred = 32768.0 * two_over_pi_frac(30 - Ei) * 0x1p-30;
     /* cubics on 16 segments where they are within 1 lsb (on AVX2 a 16-entry
        lookup is two vpshufb, a 32-entry one four), else quadratics on 32 */
     int rc = prepare4_n(G, is_cos, 16, 3, err, errlen);
@@ -498,13 +509,9 @@ static int prepare6(fx_gen *G, int is_cos)
 {
     fx_trig_red *T = &G->trig;
     int Ei = G->in.exp, Eo = G->out.exp;
-    uint64_t K = two_over_pi_bits(30 - Ei);
-    if (K >= ((uint64_t)1 << 32) || K < ((uint64_t)1 << 15))
+    if (!tr_phase(T, Ei, 0))
         return -2;
-    T->kh = (int64_t)(K >> 16);
-    T->kl = (int64_t)(K & 0xffffu);
-    T->hoff = 0;
-    T->tred = 32768.0 * two_over_pi_frac(30 - Ei) * 0x1p-30 + 0x1p-14;
+    T->tred += 0x1p-14; /* the floor to 2^-14 quarter turns */
     static long double ys[65536];
     for (int64_t x = -32768; x <= 32767; x++)
         ys[x + 32768] = tr4_target(G, x, is_cos, 0);
