@@ -449,6 +449,13 @@ static int model_log2m(const fit_poly *p, int order, pf_scheme *sc)
      {FIT_CON_DERIV, BAL_LO, "p'(a) = 1/(1+a)"}, {FIT_CON_VALUE, BAL_HI, "p(b) = log(1+b)"},      \
      {FIT_CON_DERIV, BAL_HI, "p'(b) = 1/(1+b)"}}
 
+/* log2's fast row fits log2(1+t) itself (C[1] ~ 1/ln2, gen/templates/log2_fast.c.in:
+   y = fmaf(r, q(r), k), one fmaf a lane fewer than p(r)/ln2 with p ~ log(1+t)) */
+#define FAST2_CON                                                                                  \
+    {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1/ln2"), {FIT_CON_VALUE, BAL_LO, "p(a) = log2(1+a)"},    \
+     {FIT_CON_DERIV, BAL_LO, "p'(a) = 1/((1+a) ln2)"}, {FIT_CON_VALUE, BAL_HI, "p(b) = log2(1+b)"}, \
+     {FIT_CON_DERIV, BAL_HI, "p'(b) = 1/((1+b) ln2)"}}
+
 const pf_spec pf_specs_log[] = {
     {"log", "balanced", "tab", "log_tab", 1, TAB_TEXT, "log(1+t)", g_log1p, -PF_LOGTAB_R, PF_LOGTAB_R,
      FIT_PARITY_NONE, FIT_REL, 2, {LOG_CON_ZERO, LOG_CON_SLOPE("p'(0) = 1")}, 5, 0, "double",
@@ -502,7 +509,7 @@ const pf_spec pf_specs_log[] = {
     {"log2", "balanced", "tabl", "log_tabl", 1, TAB_TEXT, "log2(1+t)", g_log2_1p, -PF_LOGTL_R, PF_LOGTL_R,
      FIT_PARITY_NONE, FIT_REL, 1, {LOG_CON_ZERO}, 4, 0, "fma",
      NULL, 0, NULL, pf_extra_log2tabl, pf_model_log2tabl, NULL, "log_tabl_tail.c", TABL_COST},
-    {"log2", "balanced", "fast", "log2_fma", 1, BAL_TEXT, "log(1+t)", g_log1p, BAL_LO, BAL_HI,
-     FIT_PARITY_NONE, FIT_REL, 6, FAST_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, extra_log2, NULL, "exp_log_poly.h", "exp_log_twopath.c", 0},
+    {"log2", "balanced", "fast", "log2_fast", 1, BAL_TEXT, "log2(1+t)", g_log2_1p, BAL_LO, BAL_HI,
+     FIT_PARITY_NONE, FIT_REL, 6, FAST2_CON, 0, 0x1p-10, "fma", NULL, 0, NULL, NULL, NULL, NULL, "exp_log_twopath.c", 0},
     {0},
 };

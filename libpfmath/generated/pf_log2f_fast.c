@@ -2,12 +2,12 @@
  *
  * Regenerate:  pfmathgen --func log2 --variant fast -o libpfmath/generated/pf_log2f_fast.c
  * Reduction:   x = 2^k m, m in [0x1.6a09e6p-1, 0x1.6a09e6p+0) (balanced about 1), t = m - 1
- * Domain:      log(1+t) on t in [-0x1.2bec34p-2, 0x1.a82798p-2]  (-0.292893231 .. 0.414213538)
+ * Domain:      log2(1+t) on t in [-0x1.2bec34p-2, 0x1.a82798p-2]  (-0.292893231 .. 0.414213538)
  * Order:       5 (float coefficients, Horner in float with fmaf)
  * Method:      least-squares relative error (Gauss-Legendre quadrature), coefficients rounded to float by pin-and-refit
- * Constraints: p(0) = 0, p'(0) = 1, p(a) = log(1+a), p'(a) = 1/(1+a), p(b) = log(1+b), p'(b) = 1/(1+b)
- * Max relative error of this polynomial on the domain: 3.400e-04 (2^-11.52) at t = 0x1.8a0a9bade3da2p-3
- * Sweep:       max 5701.092 ULP at x = 0x1.306fep+0 (0x3f9837f0), mean 902.9306 ULP, 11.75% correctly
+ * Constraints: p(0) = 0, p'(0) = 1/ln2, p(a) = log2(1+a), p'(a) = 1/((1+a) ln2), p(b) = log2(1+b), p'(b) = 1/((1+b) ln2)
+ * Max relative error of this polynomial on the domain: 3.400e-04 (2^-11.52) at t = 0x1.8a0b57f90ca06p-3
+ * Sweep:       max 5702.087 ULP at x = 0x1.306fp+0 (0x3f983780), mean 902.9623 ULP, 11.74% correctly
  *              rounded; sampled sweep of 1311344 inputs (every 16th float in [0x1p-1, 0x1.fffffep+0], 2^18 seeded random, directed list)
  */
 /* no FP-exception semantics are promised, and dropping them lets GCC
@@ -84,81 +84,24 @@ static inline PF_UNUSED pf_ff pf_two_sum(float a, float b)
 static inline PF_UNUSED uint32_t pf_asuint(float x) { uint32_t u; memcpy(&u, &x, sizeof u); return u; }
 static inline PF_UNUSED float pf_asfloat(uint32_t u) { float x; memcpy(&x, &u, sizeof x); return x; }
 
-/* log(1+t) ~ sum C[k] t^k, lowest degree first */
+/* log2(1+t) ~ sum C[k] t^k, lowest degree first */
 static const float pf_log2f_fast_C[6] = {
     0x0p+0f,    /* c0 = 0 */
-    0x1p+0f,    /* c1 = 1 */
-    -0x1.fd8d32p-2f,    /* c2 = -0.49760893 */
-    0x1.58206ap-2f,    /* c3 = 0.33606115 */
-    -0x1.284738p-2f,    /* c4 = -0.289334178 */
-    0x1.8e1dd4p-3f,    /* c5 = 0.19439283 */
+    0x1.715476p+0f,    /* c1 = 1.44269502 */
+    -0x1.6f905p-1f,    /* c2 = -0.717897892 */
+    0x1.f07844p-2f,    /* c3 = 0.484833777 */
+    -0x1.ab7068p-2f,    /* c4 = -0.417420983 */
+    0x1.1f2e2cp-2f,    /* c5 = 0.280449569 */
 };
 
-/* Reconstruction constants, computed with MPFR by pfmathgen: 1/ln2 = LH + LL,
-   LH 1/ln2 rounded to float and LL the rest rounded to float. */
-static const float PF_LOG2_LH PF_UNUSED = 0x1.715476p+0f;
-static const float PF_LOG2_LL PF_UNUSED = 0x1.4ae0cp-26f;
-
-/* c0 + c1 r + ... + c_{n-1} r^{n-1} in float with fmaf, split for a
-   shorter dependency chain: the first three coefficients by Horner, the
-   rest h(r) = c3 + c4 r + ... by Estrin's scheme on r and r2 = r*r rounded
-   (pairs fmaf(c_{2i+4}, r, c_{2i+3}), then levels fmaf(p1, r2^(2^j), p0)).
-   h enters the sum multiplied by r^3 (|r| < 0.42 in log2's q), which damps
-   the extra roundings of Estrin's scheme and of r2; the error model in the
-   provenance follows the same steps (gen/float/funcs_log.c: model_q).  Up to four
-   coefficients (and for five, where the one pair is Horner's own step) this
-   is Horner's rule, the same bits.  The loops have constant trip counts and
-   unroll fully after inlining, so array loops calling it vectorize.
-   Used by log2 (q of order 8: scalar latency -23%, array time +2%); tried
-   on exp and exp2 (order 6), it shortened their scalar latency by 6% but
-   cost 5-6% in the arrays (one more product per vector), so they keep
-   Horner. */
-static inline PF_UNUSED float pf_log2f_fast_poly(float r, float r2, const float *c, int n)
-{
-    if (n <= 4 || n > 35)
-        return pf_horner_fma(r, c, n);
-    float p[16];
-    int m = n - 3;
-#pragma GCC unroll 16
-    for (int i = 0; i < 16; i++)
-        if (2 * i < m)
-            p[i] = 2 * i + 1 < m ? fmaf(c[3 + 2 * i + 1], r, c[3 + 2 * i]) : c[3 + 2 * i];
-    float pw = r2;
-    int cnt = (m + 1) / 2;
-#pragma GCC unroll 4
-    for (int lvl = 0; lvl < 4; lvl++) {
-        if (cnt <= 1)
-            break;
-#pragma GCC unroll 8
-        for (int i = 0; i < 8; i++)
-            if (2 * i < cnt)
-                p[i] = 2 * i + 1 < cnt ? fmaf(p[2 * i + 1], pw, p[2 * i]) : p[2 * i];
-        cnt = (cnt + 1) / 2;
-        pw = pw * pw;
-    }
-    float s = fmaf(p[0], r, c[2]);
-    s = fmaf(s, r, c[1]);
-    return fmaf(s, r, c[0]);
-}
-/* log2(x) = k + log(m)/ln2, x = 2^k m, m in [sqrt(2)/2, sqrt(2)), in float
-   lanes with fmaf (one rounding each, the same bits on every clone).
-   r = m - 1 is exact (Sterbenz), p(r) = r + r^2 q(r) approximates log(1+r)
-   (C[0] = 0, C[1] = 1), and 1/ln2 = LH + LL (LH 1/ln2 rounded to float).
-   With compensation (0 > 0, the exact variant): at k = +-1 the sum
-   k + p(r)/ln2 cancels up to half, and at k = 0 just below sqrt(2) the
-   result's ulp is 2^-25 while r^2 q(r)/ln2 is near 0.1, so every rounding of
-   that part would cost 0.1-0.2 ULP.  Hence: r LH = a + a_lo exactly (one
-   fmaf gives a product's rounding error), k + a = hi + lo exactly (Dekker's
-   fast two-sum: |k| >= 1 > |a|, or k = 0), r^2 LH = v + v_lo up to the
-   rounding of v_lo (two exact products: r^2 = r2 + r2_lo, r2 LH = v + its
-   error), and the small terms lo + a_lo + r LL + q v_lo are summed (each
-   below 2^-16, so their roundings are below 2^-41) into the last
-   fmaf(q, v, .): r^2 q(r) LH and the rest are rounded once before the last
-   addition, which is the result's own rounding.  v and v_lo do not wait
-   for q, so only two fmaf and the addition follow q (pf_log2f_fast_poly: Horner for
-   its first three coefficients, Estrin's scheme for the rest).
-   Without (the fast variant): fmaf(p(r), 1/ln2, k), one rounding.
-   Powers of two give r = 0 and k exactly.
+/* log2(x) = k + log2(m), x = 2^k m, m in [sqrt(2)/2, sqrt(2)), in float
+   lanes with fmaf (one rounding each, the same bits on every clone), for
+   the fast variant: r = m - 1 is exact (Sterbenz) and p(r) = r (C[1] +
+   C[2] r + ...) approximates log2(1+r) itself (C[0] = 0, C[1] ~ 1/ln2), so
+   1/ln2 needs no product of its own: y = fmaf(r, q(r), k), one rounding
+   after Horner's rule on C[1..] (one fmaf fewer a lane than p(r)/ln2 with
+   C[1] = 1 and C[0] = 0, whose last two steps are fmaf(s, r, 0) and
+   fmaf(p, 1/ln2, k)).  Powers of two give r = 0 and k exactly.
    The core takes x's bits iy and the offset off of m's low edge; the
    scalar form calls it directly for positive normal x (pf_log2f_fast_plain):
    the same bits as the array form, without the subnormal scaling and the
@@ -176,22 +119,7 @@ static inline float pf_log2f_fast_core(uint32_t iy, uint32_t off)
     float kf = (float)((int32_t)t >> 23); /* arithmetic shift (GCC, Clang) */
     float m = pf_asfloat((t & 0x007fffffu) + 0x3f3504f3u);
     float r = m - 1.0f;
-    float y;
-    if (0 > 0) {
-        float r2 = r * r, r2_lo = fmaf(r, r, -r2); /* r^2 = r2 + r2_lo exactly */
-        float q = pf_log2f_fast_poly(r, r2, pf_log2f_fast_C + 2, 6 - 2);
-        float v = r2 * PF_LOG2_LH, v_lo = fmaf(r2, PF_LOG2_LH, -v); /* r2 LH = v + v_lo exactly */
-        v_lo = fmaf(r2_lo, PF_LOG2_LH, v_lo);
-        float a = r * PF_LOG2_LH;
-        float a_lo = fmaf(r, PF_LOG2_LH, -a);
-        float hi = kf + a;
-        float lo = a - (hi - kf);
-        float w = fmaf(r, PF_LOG2_LL, a_lo + lo);
-        y = hi + fmaf(q, v, fmaf(q, v_lo, w));
-    } else {
-        y = fmaf(pf_horner_fma(r, pf_log2f_fast_C, 6), PF_LOG2_LH, kf);
-    }
-    return y;
+    return fmaf(pf_horner_fma(r, pf_log2f_fast_C + 1, 6 - 1), r, kf);
 }
 
 /* 0x3f3504f3: the bits of 0x1.6a09e6p-1, the low edge of m */
