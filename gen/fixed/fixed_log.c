@@ -755,66 +755,71 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                   tc0, tc, ta, tk);
     if ((L->tlo && !tlq) || (!tha && !thm && !tlq))
         pf_printf(kern, "    const __m256i c127 = _mm256_set1_epi16(127)%s;\n", tha || thm ? "" : ", sgn = _mm256_set1_epi16(-32768)");
-    pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
-                 "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
+    pf_buf s1 = {0}, s2 = {0};
+    pf_put(&s1, "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
                  "        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));\n"
                  "        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));\n"
                  "        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */\n"
                  "        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);\n");
     if (jb == 3) /* j in the low byte, j + 8 in the high: one vpshufb gives the word */
-        pf_put(kern, "        __m256i jj = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_srli_epi16(u, 13), dup), c800);\n");
+        pf_put(&s1, "        __m256i jj = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_srli_epi16(u, 13), dup), c800);\n");
     else if (jb == 4) /* j and f by multiplies: the shifts' ports are the busier (measured 2% faster; not so at 32) */
-        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup)%s;\n",
+        pf_printf(&s1, "        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup)%s;\n",
                   fs ? "" : ", f = _mm256_mullo_epi16(u, c16)");
     else if (fs)
-        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup);\n", 16 - jb);
+        pf_printf(&s1, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup);\n", 16 - jb);
     else
-        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup), f = _mm256_slli_epi16(u, %d);\n",
+        pf_printf(&s1, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup), f = _mm256_slli_epi16(u, %d);\n",
                   16 - jb, jb);
     if (jb == 3)
-        pf_printf(kern, "        __m256i v = _mm256_shuffle_epi8(q%d, jj), s = _mm256_shuffle_epi8(q%d, jj);\n", qv, qs);
+        pf_printf(&s2, "        __m256i v = _mm256_shuffle_epi8(q%d, jj), s = _mm256_shuffle_epi8(q%d, jj);\n", qv, qs);
     else if (jb == 4)
-        pf_printf(kern,
+        pf_printf(&s2,
                   "        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, jj), _mm256_shuffle_epi8(q%d, jj), hib);\n"
                   "        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, jj), _mm256_shuffle_epi8(q%d, jj), hib);\n",
                   qv, qv + 1, qs, qs + 1);
     else
-        pf_printf(kern,
+        pf_printf(&s2,
                   "        __m256i a0 = _mm256_add_epi8(jj, c70); /* bit 7 set (lookup 0) for j >= 16 */\n"
                   "        __m256i v = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)),\n"
                   "                                       _mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)), hib);\n"
                   "        __m256i s = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)),\n"
                   "                                       _mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)), hib);\n",
                   qv, qv + 1, qv + 2, qv + 3, qs, qs + 1, qs + 2, qs + 3);
-    pf_printf(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, %s));%s\n", fs ? "u" : "f",
+    pf_printf(&s2, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, %s));%s\n", fs ? "u" : "f",
               fs ? " /* S 2^jb u 2^-16 = S j + S f 2^-16 */" : "");
     if ((L->tlo && !tlq) || (!tha && !thm && !tlq))
-        pf_put(kern, "        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */\n");
+        pf_put(&s2, "        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */\n");
     if (L->tlo && !tlq) {
         if (tlb)
-            pf_printf(kern, "        w = _mm256_add_epi16(w, _mm256_srai_epi16(_mm256_shuffle_epi8(q%d, kk), 8));\n", ql);
+            pf_printf(&s2, "        w = _mm256_add_epi16(w, _mm256_srai_epi16(_mm256_shuffle_epi8(q%d, kk), 8));\n", ql);
         else
-            pf_printf(kern, "        w = _mm256_add_epi16(w, _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib));\n",
+            pf_printf(&s2, "        w = _mm256_add_epi16(w, _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib));\n",
                       ql, ql + 1);
     }
     if (tha)
-        pf_printf(kern, "        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), %d);\n"
+        pf_printf(&s2, "        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), %d);\n"
                         "        __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));\n",
                   Eo);
     else if (tlq)
-        pf_put(kern, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
+        pf_put(&s2, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
                      "        w = _mm256_add_epi16(w, _mm256_mullo_epi16(e, kb));\n"
                      "        __m256i r = _mm256_adds_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(w, kr));\n");
     else if (thm)
-        pf_put(kern, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
+        pf_put(&s2, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
                      "        __m256i th = _mm256_add_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(e, kb)); /* TH + B */\n"
                      "        __m256i r = _mm256_adds_epi16(th, _mm256_mulhrs_epi16(w, kr));\n");
     else
-        pf_printf(kern, "        __m256i th = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib);\n"
+        pf_printf(&s2, "        __m256i th = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib);\n"
                         "        __m256i r = _mm256_xor_si256(_mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr)), sgn);\n",
                   qh, qh + 1);
-    pf_printf(kern, "        _mm256_storeu_si256((__m256i *)(y + i), r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-              N);
+    /* one block's chain (float conversion, shifts, multiply, lookups, two
+       multiplies) is longer than the CPU overlaps over blocks: pipelined,
+       the lookups on block i - 16 beside block i's conversion */
+    const char *cv[] = {"jj", fs ? "u" : "f", "ex"};
+    fx_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 3, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
+    free(s1.s);
+    free(s2.s);
     G->bw16 = 3;
 }
 
