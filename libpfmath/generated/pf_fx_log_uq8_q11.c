@@ -308,17 +308,46 @@ static void pf_log_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restric
     const __m512i tl = pf_log_uq8_q11_w16(pf_log_uq8_q11_tl);
     const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(2048);
     size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m512i xv = _mm512_loadu_si512(x + i);
-        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
-                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
-        __m512i u = _mm512_sllv_epi16(xv, lz);
-        __m512i j = _mm512_srli_epi16(u, 10); /* vpermw reads its low 5 bits */
-        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
-                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
-        w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));
-        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
-        _mm512_storeu_si512(y + i, r);
+    if (n >= 32) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
+        __m512i p_j, p_u, p_lz;
+        {
+            __m512i xv = _mm512_loadu_si512(x + i);
+            __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
+                                             _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
+            __m512i u = _mm512_sllv_epi16(xv, lz);
+            __m512i j = _mm512_srli_epi16(u, 10); /* vpermw reads its low 5 bits */
+            p_j = j, p_u = u, p_lz = lz;
+        }
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m512i n_j, n_u, n_lz;
+            {
+                __m512i xv = _mm512_loadu_si512(x + i);
+                __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
+                                                 _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
+                __m512i u = _mm512_sllv_epi16(xv, lz);
+                __m512i j = _mm512_srli_epi16(u, 10); /* vpermw reads its low 5 bits */
+                n_j = j, n_u = u, n_lz = lz;
+            }
+            {
+                __m512i j = p_j, u = p_u, lz = p_lz;
+                __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
+                                             _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
+                w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));
+                __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
+                _mm512_storeu_si512(y + i - 32, r);
+            }
+            p_j = n_j, p_u = n_u, p_lz = n_lz;
+        }
+        {
+            __m512i j = p_j, u = p_u, lz = p_lz;
+            __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
+                                         _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
+            w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));
+            __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
+            _mm512_storeu_si512(y + i - 32, r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_log_uq8_q11(x[i]);
