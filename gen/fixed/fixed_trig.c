@@ -1089,35 +1089,40 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
                      "    const __m512i ho = _mm512_set1_epi16(%d), m15 = _mm512_set1_epi16(0x7fff);\n",
               (int)(int16_t)(uint16_t)T->kl, (int)T->kh, 1 << (Eo - 1), is_cos ? 0x4000 : 0);
     pf_printf(&kern, "    const __m512i half = _mm512_set1_epi16(%d), zero = _mm512_setzero_si512();\n", 1 << (Eo - 1));
-    pf_put(&kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
-                  "        __m512i xv = _mm512_loadu_si512(x + i);\n"
+    pf_buf s1 = {0}, s2 = {0};
+    pf_put(&s1, "        __m512i xv = _mm512_loadu_si512(x + i);\n"
                   "        __m512i ax = _mm512_abs_epi16(xv);\n"
                   "        __m512i lo = _mm512_mullo_epi16(ax, kl);\n"
                   "        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));\n");
     if (is_cos)
-        pf_put(&kern, "        hi = _mm512_add_epi16(hi, ho);\n");
+        pf_put(&s1, "        hi = _mm512_add_epi16(hi, ho);\n");
     else
-        pf_put(&kern, "        (void)ho;\n");
-    pf_printf(&kern, "        __m512i j = _mm512_srli_epi16(hi, %d); /* vpermw reads the low 5 bits */\n"
+        pf_put(&s1, "        (void)ho;\n");
+    pf_printf(&s1, "        __m512i j = _mm512_srli_epi16(hi, %d); /* vpermw reads the low 5 bits */\n"
                      "        /* (hi << %d | lo >> %d) & 0x7fff: one vpternlog */\n"
                      "        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, %d), _mm512_srli_epi16(lo, %d), m15, 0xa8);\n",
               15 - nb, nb, 16 - nb, nb, 16 - nb);
     if (ord == 3)
-        pf_put(&kern, "        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),\n"
+        pf_put(&s2, "        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),\n"
                       "                                     _mm512_permutexvar_epi16(j, c2));\n"
                       "        q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));\n");
     else
-        pf_put(&kern, "        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),\n"
+        pf_put(&s2, "        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c2)),\n"
                       "                                     _mm512_permutexvar_epi16(j, c1));\n");
-    pf_put(&kern, "        __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));\n"
+    pf_put(&s2, "        __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));\n"
                   "        __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);\n");
     if (is_cos)
-        pf_put(&kern, "        __mmask32 neg = _mm512_movepi16_mask(hi);\n");
+        pf_put(&s2, "        __mmask32 neg = _mm512_movepi16_mask(hi);\n");
     else
-        pf_put(&kern, "        __mmask32 neg = _mm512_movepi16_mask(_mm512_xor_si512(hi, xv));\n");
-    pf_printf(&kern, "        r = _mm512_mask_sub_epi16(r, neg, zero, r);\n"
-                     "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-              N);
+        pf_put(&s2, "        __mmask32 neg = _mm512_movepi16_mask(_mm512_xor_si512(hi, xv));\n");
+    pf_put(&s2, "        r = _mm512_mask_sub_epi16(r, neg, zero, r);\n");
+    /* software pipelined (fx_pipe_loop): block i's reduction beside block
+       i - 32's lookups and polynomial */
+    static const char *const cv4[] = {"j", "t", "hi", "xv"};
+    fx_pipe_loop(&kern, "__m512i", 32, s1.s, s2.s, cv4, is_cos ? 3 : 4, "_mm512_storeu_si512(y + i - 32, r);", N);
+    free(s1.s);
+    free(s2.s);
+    s1 = s2 = (pf_buf){0};
     /* AVX2 (16 lanes): no vpermw.  Each table is held as byte planes, its
        low and its high bytes, 16 entries per register (vpshufb reads 4
        index bits per 128-bit lane and zeroes a byte whose index has bit 7

@@ -296,23 +296,58 @@ static void pf_sin_q12_q14_array_bw(const int16_t *restrict x, int16_t *restrict
     const __m512i ho = _mm512_set1_epi16(0), m15 = _mm512_set1_epi16(0x7fff);
     const __m512i half = _mm512_set1_epi16(8192), zero = _mm512_setzero_si512();
     size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m512i xv = _mm512_loadu_si512(x + i);
-        __m512i ax = _mm512_abs_epi16(xv);
-        __m512i lo = _mm512_mullo_epi16(ax, kl);
-        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
-        (void)ho;
-        __m512i j = _mm512_srli_epi16(hi, 11); /* vpermw reads the low 5 bits */
-        /* (hi << 4 | lo >> 12) & 0x7fff: one vpternlog */
-        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 4), _mm512_srli_epi16(lo, 12), m15, 0xa8);
-        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),
-                                     _mm512_permutexvar_epi16(j, c2));
-        q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));
-        __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
-        __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
-        __mmask32 neg = _mm512_movepi16_mask(_mm512_xor_si512(hi, xv));
-        r = _mm512_mask_sub_epi16(r, neg, zero, r);
-        _mm512_storeu_si512(y + i, r);
+    if (n >= 32) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
+        __m512i p_j, p_t, p_hi, p_xv;
+        {
+            __m512i xv = _mm512_loadu_si512(x + i);
+            __m512i ax = _mm512_abs_epi16(xv);
+            __m512i lo = _mm512_mullo_epi16(ax, kl);
+            __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
+            (void)ho;
+            __m512i j = _mm512_srli_epi16(hi, 11); /* vpermw reads the low 5 bits */
+            /* (hi << 4 | lo >> 12) & 0x7fff: one vpternlog */
+            __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 4), _mm512_srli_epi16(lo, 12), m15, 0xa8);
+            p_j = j, p_t = t, p_hi = hi, p_xv = xv;
+        }
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m512i n_j, n_t, n_hi, n_xv;
+            {
+                __m512i xv = _mm512_loadu_si512(x + i);
+                __m512i ax = _mm512_abs_epi16(xv);
+                __m512i lo = _mm512_mullo_epi16(ax, kl);
+                __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
+                (void)ho;
+                __m512i j = _mm512_srli_epi16(hi, 11); /* vpermw reads the low 5 bits */
+                /* (hi << 4 | lo >> 12) & 0x7fff: one vpternlog */
+                __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 4), _mm512_srli_epi16(lo, 12), m15, 0xa8);
+                n_j = j, n_t = t, n_hi = hi, n_xv = xv;
+            }
+            {
+                __m512i j = p_j, t = p_t, hi = p_hi, xv = p_xv;
+                __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),
+                                             _mm512_permutexvar_epi16(j, c2));
+                q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));
+                __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
+                __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
+                __mmask32 neg = _mm512_movepi16_mask(_mm512_xor_si512(hi, xv));
+                r = _mm512_mask_sub_epi16(r, neg, zero, r);
+                _mm512_storeu_si512(y + i - 32, r);
+            }
+            p_j = n_j, p_t = n_t, p_hi = n_hi, p_xv = n_xv;
+        }
+        {
+            __m512i j = p_j, t = p_t, hi = p_hi, xv = p_xv;
+            __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),
+                                         _mm512_permutexvar_epi16(j, c2));
+            q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));
+            __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
+            __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
+            __mmask32 neg = _mm512_movepi16_mask(_mm512_xor_si512(hi, xv));
+            r = _mm512_mask_sub_epi16(r, neg, zero, r);
+            _mm512_storeu_si512(y + i - 32, r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_sin_q12_q14(x[i]);
