@@ -1184,22 +1184,21 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
     else
         pf_put(&kern, "    const __m256i m31 = _mm256_set1_epi16(31), ka = _mm256_set1_epi16((short)0x8070);\n"
                       "    const __m256i kb = _mm256_set1_epi16(0x0080), kc = _mm256_set1_epi16(0x7080), kd = _mm256_set1_epi16((short)0x8000);\n");
-    pf_put(&kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
-                  "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
+    pf_put(&s1, "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
                   "        __m256i ax = _mm256_abs_epi16(xv);\n"
                   "        __m256i lo = _mm256_mullo_epi16(ax, kl);\n"
                   "        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_mullo_epi16(ax, kh));\n");
-    pf_put(&kern, is_cos ? "        hi = _mm256_add_epi16(hi, ho);\n" : "        (void)ho;\n");
+    pf_put(&s1, is_cos ? "        hi = _mm256_add_epi16(hi, ho);\n" : "        (void)ho;\n");
     const char *ix;
     if (ns == 16) {
-        pf_put(&kern, "        /* hi >> 11 = h 16 + j in the low byte (vpshufb reads bits 3..0, bit 7 clear),\n"
+        pf_put(&s1, "        /* hi >> 11 = h 16 + j in the low byte (vpshufb reads bits 3..0, bit 7 clear),\n"
                       "           0x80 in the high byte; ib: hi >> 3, the same in the high byte, 0x80 in the\n"
                       "           low one */\n"
                       "        __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);\n"
                       "        __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);\n");
         ix = "ia, ib";
     } else {
-        pf_put(&kern, "        /* j in the low byte: + 0x70 keeps bit 7 clear for j < 16 (0x8070: the high\n"
+        pf_put(&s1, "        /* j in the low byte: + 0x70 keeps bit 7 clear for j < 16 (0x8070: the high\n"
                       "           byte's bit 7 set), xor 0x80 flips that for j >= 16; the same in the\n"
                       "           high byte for the high bytes' planes */\n"
                       "        __m256i jl = _mm256_and_si256(_mm256_srli_epi16(hi, 10), m31);\n"
@@ -1207,22 +1206,36 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
                       "        __m256i ja = _mm256_add_epi16(_mm256_slli_epi16(jl, 8), kc), jb = _mm256_xor_si256(ja, kd);\n");
         ix = "ia, ib, ja, jb";
     }
-    pf_printf(&kern, "        __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, %d), _mm256_srli_epi16(lo, %d)), m15);\n",
+    pf_printf(&s1, "        __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, %d), _mm256_srli_epi16(lo, %d)), m15);\n",
               nb, 16 - nb);
     if (ord == 3)
-        pf_printf(&kern, "        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, %s_lk(c[3], %s)), %s_lk(c[2], %s));\n"
+        pf_printf(&s2, "        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, %s_lk(c[3], %s)), %s_lk(c[2], %s));\n"
                          "        q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), %s_lk(c[1], %s));\n",
                   N, ix, N, ix, N, ix);
     else
-        pf_printf(&kern, "        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, %s_lk(c[2], %s)), %s_lk(c[1], %s));\n",
+        pf_printf(&s2, "        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, %s_lk(c[2], %s)), %s_lk(c[1], %s));\n",
                   N, ix, N, ix);
-    pf_printf(&kern, "        __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), %s_lk(c[0], %s));\n"
+    pf_printf(&s2, "        __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), %s_lk(c[0], %s));\n"
                      "        __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(p, kr), half);\n",
               N, ix);
-    pf_put(&kern, is_cos ? "        r = _mm256_sign_epi16(r, _mm256_or_si256(hi, one)); /* negated when h */\n"
+    pf_put(&s2, is_cos ? "        r = _mm256_sign_epi16(r, _mm256_or_si256(hi, one)); /* negated when h */\n"
                          : "        r = _mm256_sign_epi16(r, _mm256_or_si256(_mm256_xor_si256(hi, xv), one)); /* negated when h xor x < 0 */\n");
-    pf_printf(&kern, "        _mm256_storeu_si256((__m256i *)(y + i), r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-              N);
+    /* pipelined as the AVX-512 loop */
+    const char *cv16[7];
+    int nc16 = 0;
+    cv16[nc16++] = "t";
+    cv16[nc16++] = "hi";
+    if (!is_cos)
+        cv16[nc16++] = "xv";
+    cv16[nc16++] = "ia";
+    cv16[nc16++] = "ib";
+    if (ns != 16) {
+        cv16[nc16++] = "ja";
+        cv16[nc16++] = "jb";
+    }
+    fx_pipe_loop(&kern, "__m256i", 16, s1.s, s2.s, cv16, nc16, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
+    free(s1.s);
+    free(s2.s);
     G->bw16 = 3;
     snprintf(G->wide_text, sizeof G->wide_text,
              "every step in 16-bit lanes; the lookups (vpermw, %s registers of %s) in the AVX-512BW "
