@@ -972,3 +972,73 @@ void fx_emit_horner(fx_gen *G, pf_buf *b, const char *x, const char *ind)
         pf_printf(b, "%sp = p > %s ? %s : p < %s ? %s : p; /* p0 saturated to %s */\n", ind, hi, hi, lo, lo, t);
     }
 }
+
+/* s with each line indented by 4 more spaces */
+static void put_indented(pf_buf *b, const char *s)
+{
+    while (*s) {
+        const char *e = strchr(s, '\n');
+        size_t n = e ? (size_t)(e - s) + 1 : strlen(s);
+        if (n > 1)
+            pf_put(b, "    ");
+        pf_putn(b, s, n);
+        s += n;
+    }
+}
+
+/* The vector loop over blocks of L words, software pipelined: one pass
+   runs stage 1 (s1: x + i loaded, up to the variables cv[]) of block i and
+   stage 2 (s2: from cv[] to r) of block i - L.  One block's steps are a
+   chain of some 40 dependent instructions, longer than the scheduler can
+   overlap over consecutive blocks (the loops measured latency-bound); two
+   blocks' halves in one pass halve it.  Then the scalar form for the last
+   n % L (and all of n < L).  s1 and s2 are written at the 8-space indent
+   of a plain loop body. */
+void fx_pipe_loop(pf_buf *kern, const char *vt, int L, const char *s1, const char *s2, const char *const *cv, int nc,
+                      const char *store, const char *scalar)
+{
+    pf_printf(kern, "    size_t i = 0;\n    if (n >= %d) {\n        /* software pipelined: a pass runs the first steps of block i and the\n"
+                    "           rest of block i - %d (one block's chain is longer than the CPU overlaps) */\n        %s",
+              L, L, vt);
+    for (int k = 0; k < nc; k++)
+        pf_printf(kern, "%s p_%s", k ? "," : "", cv[k]);
+    pf_put(kern, ";\n        {\n");
+    put_indented(kern, s1);
+    pf_put(kern, "            ");
+    for (int k = 0; k < nc; k++)
+        pf_printf(kern, "%sp_%s = %s", k ? ", " : "", cv[k], cv[k]);
+    pf_printf(kern, ";\n        }\n        for (i = %d; i + %d <= n; i += %d) {\n            %s", L, L, L, vt);
+    for (int k = 0; k < nc; k++)
+        pf_printf(kern, "%s n_%s", k ? "," : "", cv[k]);
+    pf_put(kern, ";\n            {\n");
+    pf_buf t = {0};
+    put_indented(&t, s1);
+    put_indented(kern, t.s);
+    free(t.s);
+    pf_put(kern, "                ");
+    for (int k = 0; k < nc; k++)
+        pf_printf(kern, "%sn_%s = %s", k ? ", " : "", cv[k], cv[k]);
+    for (int pass = 0; pass < 2; pass++) {
+        const char *in = pass ? "        " : "            ";
+        pf_printf(kern, pass ? "        {\n            %s" : ";\n            }\n            {\n                %s", vt);
+        for (int k = 0; k < nc; k++)
+            pf_printf(kern, "%s %s = p_%s", k ? "," : "", cv[k], cv[k]);
+        pf_put(kern, ";\n");
+        if (pass)
+            put_indented(kern, s2);
+        else {
+            pf_buf u = {0};
+            put_indented(&u, s2);
+            put_indented(kern, u.s);
+            free(u.s);
+        }
+        pf_printf(kern, "%s    %s\n%s}\n", in, store, in);
+        if (!pass) {
+            pf_put(kern, "            ");
+            for (int k = 0; k < nc; k++)
+                pf_printf(kern, "%sp_%s = n_%s", k ? ", " : "", cv[k], cv[k]);
+            pf_put(kern, ";\n        }\n");
+        }
+    }
+    pf_printf(kern, "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif", scalar);
+}

@@ -70,7 +70,7 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
  * vpermi2w, a table U[j] = 2^(j/64) 2^15 and pmulhuw(U[j], E)) where J = 4
  * and 5 miss the bound (it has no AVX2 loop); exp: J = 4 only (see
  * prep_tab_noclamp).  The vector loops are software pipelined
- * (fx_exp_pipe_loop).
+ * (fx_pipe_loop).
  * Every step is a 16-bit word; exp's x log2(e) to 2^-F (the error model
  * needs t to ~2^-19) is a 16x16 -> 32-bit product from a low/high pair,
  * plus the fraction's high half and one carry.  The error bound is taken
@@ -414,76 +414,6 @@ static void bw_clamp_load(pf_buf *s1, const fx_exp_red *X)
         pf_put(s1, "        xc = _mm512_min_epi16(xc, xhi);\n");
 }
 
-/* s with each line indented by 4 more spaces */
-static void put_indented(pf_buf *b, const char *s)
-{
-    while (*s) {
-        const char *e = strchr(s, '\n');
-        size_t n = e ? (size_t)(e - s) + 1 : strlen(s);
-        if (n > 1)
-            pf_put(b, "    ");
-        pf_putn(b, s, n);
-        s += n;
-    }
-}
-
-/* The vector loop over blocks of L words, software pipelined: one pass
-   runs stage 1 (s1: x + i loaded, up to the variables cv[]) of block i and
-   stage 2 (s2: from cv[] to r) of block i - L.  One block's steps are a
-   chain of some 40 dependent instructions, longer than the scheduler can
-   overlap over consecutive blocks (the loops measured latency-bound); two
-   blocks' halves in one pass halve it.  Then the scalar form for the last
-   n % L (and all of n < L).  s1 and s2 are written at the 8-space indent
-   of a plain loop body. */
-void fx_exp_pipe_loop(pf_buf *kern, const char *vt, int L, const char *s1, const char *s2, const char *const *cv, int nc,
-                      const char *store, const char *scalar)
-{
-    pf_printf(kern, "    size_t i = 0;\n    if (n >= %d) {\n        /* software pipelined: a pass runs the first steps of block i and the\n"
-                    "           rest of block i - %d (one block's chain is longer than the CPU overlaps) */\n        %s",
-              L, L, vt);
-    for (int k = 0; k < nc; k++)
-        pf_printf(kern, "%s p_%s", k ? "," : "", cv[k]);
-    pf_put(kern, ";\n        {\n");
-    put_indented(kern, s1);
-    pf_put(kern, "            ");
-    for (int k = 0; k < nc; k++)
-        pf_printf(kern, "%sp_%s = %s", k ? ", " : "", cv[k], cv[k]);
-    pf_printf(kern, ";\n        }\n        for (i = %d; i + %d <= n; i += %d) {\n            %s", L, L, L, vt);
-    for (int k = 0; k < nc; k++)
-        pf_printf(kern, "%s n_%s", k ? "," : "", cv[k]);
-    pf_put(kern, ";\n            {\n");
-    pf_buf t = {0};
-    put_indented(&t, s1);
-    put_indented(kern, t.s);
-    free(t.s);
-    pf_put(kern, "                ");
-    for (int k = 0; k < nc; k++)
-        pf_printf(kern, "%sn_%s = %s", k ? ", " : "", cv[k], cv[k]);
-    for (int pass = 0; pass < 2; pass++) {
-        const char *in = pass ? "        " : "            ";
-        pf_printf(kern, pass ? "        {\n            %s" : ";\n            }\n            {\n                %s", vt);
-        for (int k = 0; k < nc; k++)
-            pf_printf(kern, "%s %s = p_%s", k ? "," : "", cv[k], cv[k]);
-        pf_put(kern, ";\n");
-        if (pass)
-            put_indented(kern, s2);
-        else {
-            pf_buf u = {0};
-            put_indented(&u, s2);
-            put_indented(kern, u.s);
-            free(u.s);
-        }
-        pf_printf(kern, "%s    %s\n%s}\n", in, store, in);
-        if (!pass) {
-            pf_put(kern, "            ");
-            for (int k = 0; k < nc; k++)
-                pf_printf(kern, "%sp_%s = n_%s", k ? ", " : "", cv[k], cv[k]);
-            pf_put(kern, ";\n        }\n");
-        }
-    }
-    pf_printf(kern, "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif", scalar);
-}
-
 static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int base2)
 {
     const fx_exp_red *X = &G->exp;
@@ -636,7 +566,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                        "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));\n",
                   F - 17, Ei);
         static const char *const cv[] = {"tn", "hn", "e"};
-        fx_exp_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 3, "_mm512_storeu_si512(y + i - 32, r);", N);
+        fx_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 3, "_mm512_storeu_si512(y + i - 32, r);", N);
         free(s1.s);
         free(s2.s);
     }
@@ -716,7 +646,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(&s2, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
                      "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
         static const char *const cv[] = {"hi", "e"};
-        fx_exp_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 2, "_mm512_storeu_si512(y + i - 32, r);", N);
+        fx_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 2, "_mm512_storeu_si512(y + i - 32, r);", N);
         free(s1.s);
         free(s2.s);
     }
@@ -853,7 +783,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     if (X->sat)
         pf_put(&s2, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */\n");
     static const char *const cv[] = {"hi", "e"};
-    fx_exp_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
+    fx_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
     free(s1.s);
     free(s2.s);
     G->bw16 = 3;

@@ -320,7 +320,7 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
                    "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), rr));\n"
                    "        __m512i r = _mm512_srlv_epi16(v, _mm512_srli_epi16(w, %d));\n",
               rb, 16 - rb, fb);
-    fx_exp_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 1, "_mm512_storeu_si512(y + i - 32, r);", N);
+    fx_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 1, "_mm512_storeu_si512(y + i - 32, r);", N);
     free(s1.s);
     free(s2.s);
     s1 = s2 = (pf_buf){0};
@@ -370,7 +370,7 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
                    "        __m256i r = _mm256_blend_epi16(ev, od, 0xaa);\n",
               16 - rb, fb);
     static const char *const cv2[] = {"w", "j"};
-    fx_exp_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv2, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
+    fx_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv2, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
     free(s1.s);
     free(s2.s);
     G->bw16 = 3;

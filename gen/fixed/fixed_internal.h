@@ -269,4 +269,12 @@ void fx_report_json(FILE *o, const fx_gen *G);
 /* emitted C (malloc'ed, NUL-terminated) */
 char *fx_emit(const fx_gen *G, size_t *len);
 
+/* (fixed_core.c) a vector loop over blocks of L words, software pipelined:
+   stage 1 (s1, from x + i up to the variables cv[0..nc-1]) of block i and
+   stage 2 (s2, from them to r) of block i - L in one pass; store (of r at
+   y + i - L) after stage 2; the scalar form for the rest; closes the
+   function and its #if */
+void fx_pipe_loop(pf_buf *kern, const char *vt, int L, const char *s1, const char *s2, const char *const *cv, int nc,
+                      const char *store, const char *scalar);
+
 #endif

@@ -576,26 +576,31 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     if (L->tlo)
         pf_printf(kern, "    const __m512i tl = %s_w16(%s_tl);\n", N, N);
     pf_printf(kern, "    const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(%d);\n", 1 << (15 - L->td));
-    pf_printf(kern, "    size_t i = 0;\n    for (; i + 32 <= n; i += 32) {\n"
-                    "        __m512i xv = _mm512_loadu_si512(x + i);\n"
-                    "        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),\n"
-                    "                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));\n"
-                    "        __m512i u = _mm512_sllv_epi16(xv, lz);\n");
+    pf_buf s1 = {0}, s2 = {0};
+    pf_put(&s1, "        __m512i xv = _mm512_loadu_si512(x + i);\n"
+                "        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),\n"
+                "                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));\n"
+                "        __m512i u = _mm512_sllv_epi16(xv, lz);\n");
     if (fs)
-        pf_printf(kern, "        __m512i j = _mm512_srli_epi16(u, %d); /* vpermw reads its low 5 bits */\n"
-                        "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
-                        "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));\n",
-                  15 - jb);
+        pf_printf(&s1, "        __m512i j = _mm512_srli_epi16(u, %d); /* vpermw reads its low 5 bits */\n", 15 - jb);
     else
-        pf_printf(kern, "        __m512i j = _mm512_srli_epi16(u, %d), f = _mm512_slli_epi16(u, %d); /* vpermw reads j's low 5 bits */\n"
-                        "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
-                        "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), f));\n",
+        pf_printf(&s1, "        __m512i j = _mm512_srli_epi16(u, %d), f = _mm512_slli_epi16(u, %d); /* vpermw reads j's low 5 bits */\n",
                   15 - jb, jb + 1);
+    pf_printf(&s2, "        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),\n"
+                   "                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), %s));\n",
+              fs ? "u" : "f");
     if (L->tlo)
-        pf_put(kern, "        w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));\n");
-    pf_printf(kern, "        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));\n"
-                    "        _mm512_storeu_si512(y + i, r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n",
-              N);
+        pf_put(&s2, "        w = _mm512_add_epi16(w, _mm512_permutexvar_epi16(lz, tl));\n");
+    pf_put(&s2, "        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));\n");
+    /* pipelined as the AVX2 loop below: block i's leading-zero count and
+       shift beside block i - 32's lookups and multiplies */
+    const char *cv5[] = {"j", fs ? "u" : "f", "lz"};
+    fx_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv5, 3, "_mm512_storeu_si512(y + i - 32, r);", N);
+    free(s1.s);
+    free(s2.s);
+    s1 = s2 = (pf_buf){0};
+    kern->n -= strlen("#endif"); /* fx_pipe_loop closed the #if: the AVX2 loop (or the #endif) follows */
+    kern->s[kern->n] = 0;
     int tha, tlb, thm = 0, ta = 0, tk = 0, tc0 = 0, tc = 0, tb = 0, tq = 0, ts = 0;
     if (!tab_avx2(G, &tha, &tlb)) {
         pf_put(kern, "#endif");
@@ -755,66 +760,70 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                   tc0, tc, ta, tk);
     if ((L->tlo && !tlq) || (!tha && !thm && !tlq))
         pf_printf(kern, "    const __m256i c127 = _mm256_set1_epi16(127)%s;\n", tha || thm ? "" : ", sgn = _mm256_set1_epi16(-32768)");
-    pf_put(kern, "    size_t i = 0;\n    for (; i + 16 <= n; i += 16) {\n"
-                 "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
+    pf_put(&s1, "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
                  "        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));\n"
                  "        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));\n"
                  "        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */\n"
                  "        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);\n");
     if (jb == 3) /* j in the low byte, j + 8 in the high: one vpshufb gives the word */
-        pf_put(kern, "        __m256i jj = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_srli_epi16(u, 13), dup), c800);\n");
+        pf_put(&s1, "        __m256i jj = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_srli_epi16(u, 13), dup), c800);\n");
     else if (jb == 4) /* j and f by multiplies: the shifts' ports are the busier (measured 2% faster; not so at 32) */
-        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup)%s;\n",
+        pf_printf(&s1, "        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup)%s;\n",
                   fs ? "" : ", f = _mm256_mullo_epi16(u, c16)");
     else if (fs)
-        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup);\n", 16 - jb);
+        pf_printf(&s1, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup);\n", 16 - jb);
     else
-        pf_printf(kern, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup), f = _mm256_slli_epi16(u, %d);\n",
+        pf_printf(&s1, "        __m256i jj = _mm256_mullo_epi16(_mm256_srli_epi16(u, %d), dup), f = _mm256_slli_epi16(u, %d);\n",
                   16 - jb, jb);
     if (jb == 3)
-        pf_printf(kern, "        __m256i v = _mm256_shuffle_epi8(q%d, jj), s = _mm256_shuffle_epi8(q%d, jj);\n", qv, qs);
+        pf_printf(&s2, "        __m256i v = _mm256_shuffle_epi8(q%d, jj), s = _mm256_shuffle_epi8(q%d, jj);\n", qv, qs);
     else if (jb == 4)
-        pf_printf(kern,
+        pf_printf(&s2,
                   "        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, jj), _mm256_shuffle_epi8(q%d, jj), hib);\n"
                   "        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, jj), _mm256_shuffle_epi8(q%d, jj), hib);\n",
                   qv, qv + 1, qs, qs + 1);
     else
-        pf_printf(kern,
+        pf_printf(&s2,
                   "        __m256i a0 = _mm256_add_epi8(jj, c70); /* bit 7 set (lookup 0) for j >= 16 */\n"
                   "        __m256i v = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)),\n"
                   "                                       _mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)), hib);\n"
                   "        __m256i s = _mm256_blendv_epi8(_mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)),\n"
                   "                                       _mm256_add_epi8(_mm256_shuffle_epi8(q%d, a0), _mm256_shuffle_epi8(q%d, jj)), hib);\n",
                   qv, qv + 1, qv + 2, qv + 3, qs, qs + 1, qs + 2, qs + 3);
-    pf_printf(kern, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, %s));%s\n", fs ? "u" : "f",
+    pf_printf(&s2, "        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, %s));%s\n", fs ? "u" : "f",
               fs ? " /* S 2^jb u 2^-16 = S j + S f 2^-16 */" : "");
     if ((L->tlo && !tlq) || (!tha && !thm && !tlq))
-        pf_put(kern, "        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */\n");
+        pf_put(&s2, "        __m256i kk = _mm256_mullo_epi16(_mm256_sub_epi16(ex, c127), dup); /* bitlen(x) - 1 */\n");
     if (L->tlo && !tlq) {
         if (tlb)
-            pf_printf(kern, "        w = _mm256_add_epi16(w, _mm256_srai_epi16(_mm256_shuffle_epi8(q%d, kk), 8));\n", ql);
+            pf_printf(&s2, "        w = _mm256_add_epi16(w, _mm256_srai_epi16(_mm256_shuffle_epi8(q%d, kk), 8));\n", ql);
         else
-            pf_printf(kern, "        w = _mm256_add_epi16(w, _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib));\n",
+            pf_printf(&s2, "        w = _mm256_add_epi16(w, _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib));\n",
                       ql, ql + 1);
     }
     if (tha)
-        pf_printf(kern, "        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), %d);\n"
+        pf_printf(&s2, "        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), %d);\n"
                         "        __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));\n",
                   Eo);
     else if (tlq)
-        pf_put(kern, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
+        pf_put(&s2, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
                      "        w = _mm256_add_epi16(w, _mm256_mullo_epi16(e, kb));\n"
                      "        __m256i r = _mm256_adds_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(w, kr));\n");
     else if (thm)
-        pf_put(kern, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
+        pf_put(&s2, "        __m256i e = _mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo);\n"
                      "        __m256i th = _mm256_add_epi16(_mm256_mullo_epi16(e, ka), _mm256_mulhrs_epi16(e, kb)); /* TH + B */\n"
                      "        __m256i r = _mm256_adds_epi16(th, _mm256_mulhrs_epi16(w, kr));\n");
     else
-        pf_printf(kern, "        __m256i th = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib);\n"
+        pf_printf(&s2, "        __m256i th = _mm256_blendv_epi8(_mm256_shuffle_epi8(q%d, kk), _mm256_shuffle_epi8(q%d, kk), hib);\n"
                         "        __m256i r = _mm256_xor_si256(_mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr)), sgn);\n",
                   qh, qh + 1);
-    pf_printf(kern, "        _mm256_storeu_si256((__m256i *)(y + i), r);\n    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
-              N);
+    /* one block's chain (float conversion, shifts, multiply, lookups, two
+       multiplies) is longer than the CPU overlaps over blocks: pipelined,
+       the lookups on block i - 16 beside block i's conversion */
+    const char *cv[] = {"jj", fs ? "u" : "f", "ex"};
+    fx_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 3, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
+    free(s1.s);
+    free(s2.s);
     G->bw16 = 3;
 }
 

@@ -296,23 +296,58 @@ static void pf_cos_q12_q14_array_bw(const int16_t *restrict x, int16_t *restrict
     const __m512i ho = _mm512_set1_epi16(16384), m15 = _mm512_set1_epi16(0x7fff);
     const __m512i half = _mm512_set1_epi16(8192), zero = _mm512_setzero_si512();
     size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m512i xv = _mm512_loadu_si512(x + i);
-        __m512i ax = _mm512_abs_epi16(xv);
-        __m512i lo = _mm512_mullo_epi16(ax, kl);
-        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
-        hi = _mm512_add_epi16(hi, ho);
-        __m512i j = _mm512_srli_epi16(hi, 11); /* vpermw reads the low 5 bits */
-        /* (hi << 4 | lo >> 12) & 0x7fff: one vpternlog */
-        __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 4), _mm512_srli_epi16(lo, 12), m15, 0xa8);
-        __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),
-                                     _mm512_permutexvar_epi16(j, c2));
-        q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));
-        __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
-        __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
-        __mmask32 neg = _mm512_movepi16_mask(hi);
-        r = _mm512_mask_sub_epi16(r, neg, zero, r);
-        _mm512_storeu_si512(y + i, r);
+    if (n >= 32) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
+        __m512i p_j, p_t, p_hi;
+        {
+            __m512i xv = _mm512_loadu_si512(x + i);
+            __m512i ax = _mm512_abs_epi16(xv);
+            __m512i lo = _mm512_mullo_epi16(ax, kl);
+            __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
+            hi = _mm512_add_epi16(hi, ho);
+            __m512i j = _mm512_srli_epi16(hi, 11); /* vpermw reads the low 5 bits */
+            /* (hi << 4 | lo >> 12) & 0x7fff: one vpternlog */
+            __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 4), _mm512_srli_epi16(lo, 12), m15, 0xa8);
+            p_j = j, p_t = t, p_hi = hi;
+        }
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m512i n_j, n_t, n_hi;
+            {
+                __m512i xv = _mm512_loadu_si512(x + i);
+                __m512i ax = _mm512_abs_epi16(xv);
+                __m512i lo = _mm512_mullo_epi16(ax, kl);
+                __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_mullo_epi16(ax, kh));
+                hi = _mm512_add_epi16(hi, ho);
+                __m512i j = _mm512_srli_epi16(hi, 11); /* vpermw reads the low 5 bits */
+                /* (hi << 4 | lo >> 12) & 0x7fff: one vpternlog */
+                __m512i t = _mm512_ternarylogic_epi64(_mm512_slli_epi16(hi, 4), _mm512_srli_epi16(lo, 12), m15, 0xa8);
+                n_j = j, n_t = t, n_hi = hi;
+            }
+            {
+                __m512i j = p_j, t = p_t, hi = p_hi;
+                __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),
+                                             _mm512_permutexvar_epi16(j, c2));
+                q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));
+                __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
+                __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
+                __mmask32 neg = _mm512_movepi16_mask(hi);
+                r = _mm512_mask_sub_epi16(r, neg, zero, r);
+                _mm512_storeu_si512(y + i - 32, r);
+            }
+            p_j = n_j, p_t = n_t, p_hi = n_hi;
+        }
+        {
+            __m512i j = p_j, t = p_t, hi = p_hi;
+            __m512i q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, _mm512_permutexvar_epi16(j, c3)),
+                                         _mm512_permutexvar_epi16(j, c2));
+            q = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c1));
+            __m512i p = _mm512_add_epi16(_mm512_mulhrs_epi16(t, q), _mm512_permutexvar_epi16(j, c0));
+            __m512i r = _mm512_add_epi16(_mm512_mulhrs_epi16(p, kr), half);
+            __mmask32 neg = _mm512_movepi16_mask(hi);
+            r = _mm512_mask_sub_epi16(r, neg, zero, r);
+            _mm512_storeu_si512(y + i - 32, r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_cos_q12_q14(x[i]);
@@ -348,24 +383,60 @@ static void pf_cos_q12_q14_array_avx2(const int16_t *restrict x, int16_t *restri
     const __m256i half = _mm256_set1_epi16(8192), one = _mm256_set1_epi16(1);
     const __m256i ka = _mm256_set1_epi16((short)0x8000), kb = _mm256_set1_epi16(0x0080);
     size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
-        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-        __m256i ax = _mm256_abs_epi16(xv);
-        __m256i lo = _mm256_mullo_epi16(ax, kl);
-        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_mullo_epi16(ax, kh));
-        hi = _mm256_add_epi16(hi, ho);
-        /* hi >> 11 = h 16 + j in the low byte (vpshufb reads bits 3..0, bit 7 clear),
-           0x80 in the high byte; ib: hi >> 3, the same in the high byte, 0x80 in the
-           low one */
-        __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);
-        __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);
-        __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, 4), _mm256_srli_epi16(lo, 12)), m15);
-        __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, pf_cos_q12_q14_lk(c[3], ia, ib)), pf_cos_q12_q14_lk(c[2], ia, ib));
-        q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_cos_q12_q14_lk(c[1], ia, ib));
-        __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_cos_q12_q14_lk(c[0], ia, ib));
-        __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(p, kr), half);
-        r = _mm256_sign_epi16(r, _mm256_or_si256(hi, one)); /* negated when h */
-        _mm256_storeu_si256((__m256i *)(y + i), r);
+    if (n >= 16) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
+        __m256i p_t, p_hi, p_ia, p_ib;
+        {
+            __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+            __m256i ax = _mm256_abs_epi16(xv);
+            __m256i lo = _mm256_mullo_epi16(ax, kl);
+            __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_mullo_epi16(ax, kh));
+            hi = _mm256_add_epi16(hi, ho);
+            /* hi >> 11 = h 16 + j in the low byte (vpshufb reads bits 3..0, bit 7 clear),
+               0x80 in the high byte; ib: hi >> 3, the same in the high byte, 0x80 in the
+               low one */
+            __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);
+            __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);
+            __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, 4), _mm256_srli_epi16(lo, 12)), m15);
+            p_t = t, p_hi = hi, p_ia = ia, p_ib = ib;
+        }
+        for (i = 16; i + 16 <= n; i += 16) {
+            __m256i n_t, n_hi, n_ia, n_ib;
+            {
+                __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+                __m256i ax = _mm256_abs_epi16(xv);
+                __m256i lo = _mm256_mullo_epi16(ax, kl);
+                __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_mullo_epi16(ax, kh));
+                hi = _mm256_add_epi16(hi, ho);
+                /* hi >> 11 = h 16 + j in the low byte (vpshufb reads bits 3..0, bit 7 clear),
+                   0x80 in the high byte; ib: hi >> 3, the same in the high byte, 0x80 in the
+                   low one */
+                __m256i ia = _mm256_or_si256(_mm256_srli_epi16(hi, 11), ka);
+                __m256i ib = _mm256_or_si256(_mm256_srli_epi16(hi, 3), kb);
+                __m256i t = _mm256_and_si256(_mm256_or_si256(_mm256_slli_epi16(hi, 4), _mm256_srli_epi16(lo, 12)), m15);
+                n_t = t, n_hi = hi, n_ia = ia, n_ib = ib;
+            }
+            {
+                __m256i t = p_t, hi = p_hi, ia = p_ia, ib = p_ib;
+                __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, pf_cos_q12_q14_lk(c[3], ia, ib)), pf_cos_q12_q14_lk(c[2], ia, ib));
+                q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_cos_q12_q14_lk(c[1], ia, ib));
+                __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_cos_q12_q14_lk(c[0], ia, ib));
+                __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(p, kr), half);
+                r = _mm256_sign_epi16(r, _mm256_or_si256(hi, one)); /* negated when h */
+                _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+            }
+            p_t = n_t, p_hi = n_hi, p_ia = n_ia, p_ib = n_ib;
+        }
+        {
+            __m256i t = p_t, hi = p_hi, ia = p_ia, ib = p_ib;
+            __m256i q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, pf_cos_q12_q14_lk(c[3], ia, ib)), pf_cos_q12_q14_lk(c[2], ia, ib));
+            q = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_cos_q12_q14_lk(c[1], ia, ib));
+            __m256i p = _mm256_add_epi16(_mm256_mulhrs_epi16(t, q), pf_cos_q12_q14_lk(c[0], ia, ib));
+            __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(p, kr), half);
+            r = _mm256_sign_epi16(r, _mm256_or_si256(hi, one)); /* negated when h */
+            _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_cos_q12_q14(x[i]);

@@ -270,17 +270,46 @@ static void pf_cos_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *res
     const __m512i one = _mm512_set1_epi16(0x4000);
     (void)kh;
     size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m512i xv = _mm512_loadu_si512(x + i);
-        __m512i ax = _mm512_min_epu16(xv, _mm512_sub_epi16(_mm512_setzero_si512(), xv)); /* |x| */
-        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_add_epi16(ax, ax));
-        __m512i z = _mm512_sub_epi16(one, _mm512_abs_epi16(hi));
-        z = _mm512_adds_epi16(z, z);
-        __m512i s = _mm512_mulhrs_epi16(z, z);
-        __m512i q = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s, c5));
-        __m512i p = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s, q));
-        __m512i r = _mm512_mulhrs_epi16(z, p);
-        _mm512_storeu_si512(y + i, r);
+    if (n >= 32) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
+        __m512i p_z, p_s;
+        {
+            __m512i xv = _mm512_loadu_si512(x + i);
+            __m512i ax = _mm512_min_epu16(xv, _mm512_sub_epi16(_mm512_setzero_si512(), xv)); /* |x| */
+            __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_add_epi16(ax, ax));
+            __m512i z = _mm512_sub_epi16(one, _mm512_abs_epi16(hi));
+            z = _mm512_adds_epi16(z, z);
+            __m512i s = _mm512_mulhrs_epi16(z, z);
+            p_z = z, p_s = s;
+        }
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m512i n_z, n_s;
+            {
+                __m512i xv = _mm512_loadu_si512(x + i);
+                __m512i ax = _mm512_min_epu16(xv, _mm512_sub_epi16(_mm512_setzero_si512(), xv)); /* |x| */
+                __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_add_epi16(ax, ax));
+                __m512i z = _mm512_sub_epi16(one, _mm512_abs_epi16(hi));
+                z = _mm512_adds_epi16(z, z);
+                __m512i s = _mm512_mulhrs_epi16(z, z);
+                n_z = z, n_s = s;
+            }
+            {
+                __m512i z = p_z, s = p_s;
+                __m512i q = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s, c5));
+                __m512i p = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s, q));
+                __m512i r = _mm512_mulhrs_epi16(z, p);
+                _mm512_storeu_si512(y + i - 32, r);
+            }
+            p_z = n_z, p_s = n_s;
+        }
+        {
+            __m512i z = p_z, s = p_s;
+            __m512i q = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s, c5));
+            __m512i p = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s, q));
+            __m512i r = _mm512_mulhrs_epi16(z, p);
+            _mm512_storeu_si512(y + i - 32, r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_cos_q12_q14_fast(x[i]);
@@ -298,17 +327,46 @@ static void pf_cos_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *r
     const __m256i one = _mm256_set1_epi16(0x4000);
     (void)kh;
     size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
-        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-        __m256i ax = _mm256_abs_epi16(xv);
-        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_add_epi16(ax, ax));
-        __m256i z = _mm256_sub_epi16(one, _mm256_abs_epi16(hi));
-        z = _mm256_adds_epi16(z, z);
-        __m256i s = _mm256_mulhrs_epi16(z, z);
-        __m256i q = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s, c5));
-        __m256i p = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s, q));
-        __m256i r = _mm256_mulhrs_epi16(z, p);
-        _mm256_storeu_si256((__m256i *)(y + i), r);
+    if (n >= 16) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
+        __m256i p_z, p_s;
+        {
+            __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+            __m256i ax = _mm256_abs_epi16(xv);
+            __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_add_epi16(ax, ax));
+            __m256i z = _mm256_sub_epi16(one, _mm256_abs_epi16(hi));
+            z = _mm256_adds_epi16(z, z);
+            __m256i s = _mm256_mulhrs_epi16(z, z);
+            p_z = z, p_s = s;
+        }
+        for (i = 16; i + 16 <= n; i += 16) {
+            __m256i n_z, n_s;
+            {
+                __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+                __m256i ax = _mm256_abs_epi16(xv);
+                __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_add_epi16(ax, ax));
+                __m256i z = _mm256_sub_epi16(one, _mm256_abs_epi16(hi));
+                z = _mm256_adds_epi16(z, z);
+                __m256i s = _mm256_mulhrs_epi16(z, z);
+                n_z = z, n_s = s;
+            }
+            {
+                __m256i z = p_z, s = p_s;
+                __m256i q = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s, c5));
+                __m256i p = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s, q));
+                __m256i r = _mm256_mulhrs_epi16(z, p);
+                _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+            }
+            p_z = n_z, p_s = n_s;
+        }
+        {
+            __m256i z = p_z, s = p_s;
+            __m256i q = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s, c5));
+            __m256i p = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s, q));
+            __m256i r = _mm256_mulhrs_epi16(z, p);
+            _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_cos_q12_q14_fast(x[i]);

@@ -292,16 +292,44 @@ static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *r
     const __m512i tv = pf_log2_uq8_q11_fast_w16(v2), ts = pf_log2_uq8_q11_fast_w16(s2), th = pf_log2_uq8_q11_fast_w16(pf_log2_uq8_q11_fast_th);
     const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(4096);
     size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m512i xv = _mm512_loadu_si512(x + i);
-        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
-                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
-        __m512i u = _mm512_sllv_epi16(xv, lz);
-        __m512i j = _mm512_srli_epi16(u, 11); /* vpermw reads its low 5 bits */
-        __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
-                                     _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
-        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
-        _mm512_storeu_si512(y + i, r);
+    if (n >= 32) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
+        __m512i p_j, p_u, p_lz;
+        {
+            __m512i xv = _mm512_loadu_si512(x + i);
+            __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
+                                             _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
+            __m512i u = _mm512_sllv_epi16(xv, lz);
+            __m512i j = _mm512_srli_epi16(u, 11); /* vpermw reads its low 5 bits */
+            p_j = j, p_u = u, p_lz = lz;
+        }
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m512i n_j, n_u, n_lz;
+            {
+                __m512i xv = _mm512_loadu_si512(x + i);
+                __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
+                                                 _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
+                __m512i u = _mm512_sllv_epi16(xv, lz);
+                __m512i j = _mm512_srli_epi16(u, 11); /* vpermw reads its low 5 bits */
+                n_j = j, n_u = u, n_lz = lz;
+            }
+            {
+                __m512i j = p_j, u = p_u, lz = p_lz;
+                __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
+                                             _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
+                __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
+                _mm512_storeu_si512(y + i - 32, r);
+            }
+            p_j = n_j, p_u = n_u, p_lz = n_lz;
+        }
+        {
+            __m512i j = p_j, u = p_u, lz = p_lz;
+            __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
+                                         _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
+            __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
+            _mm512_storeu_si512(y + i - 32, r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_log2_uq8_q11_fast(x[i]);
@@ -340,19 +368,50 @@ static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t 
     const __m256i kr = _mm256_set1_epi16(4096);
     const __m256i ce = _mm256_set1_epi16(135), lo = _mm256_set1_epi16(-16);
     size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
-        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-        __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
-        __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
-        __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
-        __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
-        __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup);
-        __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
-        __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
-        __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, u)); /* S 2^jb u 2^-16 = S j + S f 2^-16 */
-        __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
-        __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
-        _mm256_storeu_si256((__m256i *)(y + i), r);
+    if (n >= 16) {
+        /* software pipelined: a pass runs the first steps of block i and the
+           rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
+        __m256i p_jj, p_u, p_ex;
+        {
+            __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+            __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
+            __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
+            __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
+            __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
+            __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup);
+            p_jj = jj, p_u = u, p_ex = ex;
+        }
+        for (i = 16; i + 16 <= n; i += 16) {
+            __m256i n_jj, n_u, n_ex;
+            {
+                __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
+                __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
+                __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
+                __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
+                __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
+                __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup);
+                n_jj = jj, n_u = u, n_ex = ex;
+            }
+            {
+                __m256i jj = p_jj, u = p_u, ex = p_ex;
+                __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
+                __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
+                __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, u)); /* S 2^jb u 2^-16 = S j + S f 2^-16 */
+                __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
+                __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
+                _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+            }
+            p_jj = n_jj, p_u = n_u, p_ex = n_ex;
+        }
+        {
+            __m256i jj = p_jj, u = p_u, ex = p_ex;
+            __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
+            __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
+            __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, u)); /* S 2^jb u 2^-16 = S j + S f 2^-16 */
+            __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
+            __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
+            _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+        }
     }
     for (; i < n; i++)
         y[i] = pf_log2_uq8_q11_fast(x[i]);
