@@ -319,7 +319,7 @@ static void test_emitted_matches_library(void **st)
     for (int k = 0; k < 2; k++) {
         char a[256], err[512], sym[64];
         char path[64];
-        snprintf(path, sizeof path, "/tmp/pf-test-atrig-%ld.c", (long)getpid());
+        tu_scratch(path, "atrig.c");
         snprintf(a, sizeof a, "--func %s --no-sweep -o %s", fn[k], path);
         tu_run_result *r = malloc(sizeof *r);
         tu_runs("pfmathgen", a, r);

@@ -24,7 +24,7 @@ static uint32_t asu(float f) { uint32_t u; memcpy(&u, &f, 4); return u; }
 static void *emit_and_load(const char *args, const char *sym, void **fn)
 {
     char a[512], err[512], path[64];
-    snprintf(path, sizeof path, "/tmp/pf-test-exp-%d.c", (int)getpid());
+    tu_scratch(path, "exp.c");
     snprintf(a, sizeof a, "%s -o %s", args, path);
     tu_run_result *r = malloc(sizeof *r);
     tu_runs("pfmathgen", a, r);

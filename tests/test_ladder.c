@@ -27,7 +27,7 @@ static tu_run_result R;
 static void expect_error_v(const char *const *args, const char *what)
 {
     char out[96];
-    snprintf(out, sizeof out, "/tmp/pf-ladder-test-err-%ld.c", (long)getpid());
+    tu_scratch(out, "err.c");
     unlink(out);
     const char *v[40];
     int n = 0;
@@ -140,8 +140,8 @@ static void test_emitted_meets_bound(void **st)
     (void)st;
     /* per-process paths: the normal and the ASan build run this at once */
     char p2[96], p8192[96];
-    snprintf(p2, sizeof p2, "/tmp/pf-ladder-exp2-2-%ld.c", (long)getpid());
-    snprintf(p8192, sizeof p8192, "/tmp/pf-ladder-exp2-8192-%ld.c", (long)getpid());
+    tu_scratch(p2, "exp2-2.c");
+    tu_scratch(p8192, "exp2-8192.c");
     /* exp2: a cheap fit; two levels, the looser one no dearer */
     char *a = gen("exp2", "2", "lad_exp2_2", p2);
     char *b = gen("exp2", "2^13", "lad_exp2_8192", p8192);

@@ -77,7 +77,7 @@ static void check_unary(const char *f, const char *u, double U, const char *tmpl
 {
     char name[64], path[128];
     snprintf(name, sizeof name, "lad_%s_l%.0f", f, 100 * U);
-    snprintf(path, sizeof path, "/tmp/pf-ladder-atrig-%ld-%s.c", (long)getpid(), f);
+    snprintf(path, sizeof path, "%s/%s.c", tu_scratch_dir(), f);
     char *src = gen(f, u, name, path);
     assert_non_null(strstr(src, tmpl));   /* the named template was chosen */
     free(src);
@@ -147,7 +147,7 @@ static void check_atan2(const char *u, double U, const char *tmpl)
     snprintf(name, sizeof name, "lad_atan2_l%.0f", 100 * U);
     snprintf(arr, sizeof arr, "%s_array", name);
     char path[96];
-    snprintf(path, sizeof path, "/tmp/pf-ladder-atrig-%ld-atan2.c", (long)getpid());
+    tu_scratch(path, "atan2.c");
     char *src = gen("atan2", u, name, path);
     assert_non_null(strstr(src, tmpl));
     free(src);
