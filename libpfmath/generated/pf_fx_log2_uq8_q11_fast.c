@@ -23,7 +23,7 @@
  *              against MPFR (the cut of t and the floors included)
  * Constraints: p(0) = 0 (log2 of powers of 2 exact; x = 0 gives the most negative output)
  * Formats:     T, C3, D2, C1, a2, a4 unsigned words (a2 = D2 - floor(C3 T 2^-16), a4 = C1 - 
- *              floor(a2 T 2^-16) >= 2^11, checked over every T); result e 2^11 + floor(a4 T 
+ *              floor(a2 T 2^-16) >= 2048, checked over every T); result e 2^11 + floor(a4 T 
  *              2^-16), int16_t
  * Polynomial:  the fitter's cubic within 1.5790 LSB of log2(1+t) on [0, 1]
  * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.6098 LSB (polynomial 1.5790, 
@@ -222,12 +222,12 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 
 /* log2 in fixed point, in 16-bit lanes, by a cubic (gen/fixed/fixed_log.c,
    the cubic kernel).  x = 2^(15 - lz) (1 + t): lz = 16 - bitlen(x), t the
-   15 bits below the leading one, cut to T, its top bits.  log2(x) = e +
-   log2(1 + t), log2(1 + t) ~ p(T) = T (C1 - T (D2 - C3 T)) in three
+   15 bits below the leading one, cut to T, its top bits.  log2(x) =
+   e + log2(1 + t), log2(1 + t) ~ p(T) = T (C1 - T (D2 - C3 T)) in three
    unsigned multiply-highs, each a floor; no final rounding.  x = 0 gives
-   the most negative output, -32768 (T = 0, p = 0).  k[] holds C3, D2, C1;
-   bw is unused (the AVX-512 and AVX2 loops below have their own
-   intrinsics). */
+   the most negative output, -32768 (T = 0, p = 0).  k[] holds C3, D2, C1
+   (log: e ln2 from a table by lz); bw is unused (the AVX-512 and AVX2
+   loops below have their own intrinsics). */
 PF_FX_INLINE int16_t pf_log2_uq8_q11_fast_inline(uint16_t x, const int16_t *k, int bw)
 {
     (void)bw;
