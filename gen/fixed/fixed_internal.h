@@ -110,6 +110,12 @@ typedef struct {               /* log, log2 */
     int td, tlo, tjb;          /* the final shift; TL used; segment bits (3, 4 or 5) */
     int32_t tv[32], ts[32], th[32], tl[32];
     double terr, tseg;         /* max |y - f| (lsb, every input); max segment-line error (2^-Ef) */
+    /* 16-bit lanes, the cubic kernel (kind 2, fixed_log.c, fast): y = e's part
+       + floor(a4 t 2^-16), a4 = C1 - floor(a2 t 2^-16), a2 = D2 - floor(C3 t 2^-16),
+       t = t's top Eo bits at 2^-16 */
+    int32_t pc3, pd2, pc1;
+    int pbase2;                /* log2 (e's part e 2^Eo) or log (round(e 2^Eo k15 2^-15)) */
+    double pfit;               /* the fitter's cubic: max |p - log2(1+t)| on [0, 1] */
 } fx_log_red;
 
 typedef struct {               /* sqrt */

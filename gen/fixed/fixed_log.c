@@ -827,6 +827,387 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
     G->bw16 = 3;
 }
 
+/* ---- 16-bit lanes: the cubic kernel (kind 2, fast log2) ----
+ *
+ * x = 2^e (1 + t), u = x << lz as for the table kernel; t is cut to its top
+ * Eo bits (T = t's top Eo bits at 2^-16, the rest dropped), and log2(x) 2^Eo
+ * = e 2^Eo + F(t) 2^Eo with F(t) = log2(1 + t) a cubic p(T) = T (c1 - T (c2
+ * - c3 T)) (p(0) = 0: exact at powers of 2, and x = 0 gives TH[16] alone),
+ * three pmulhuw, each a floor: a2 = D2 - floor(C3 T 2^-16), a4 = C1 -
+ * floor(a2 T 2^-16), y = e 2^Eo + floor(a4 T 2^-16), every value an
+ * unsigned word.  On AVX2 the reduction is x's float: its bits shifted
+ * right by 23 - Eo are (127 + bitlen(x) - 1) 2^Eo + t's top Eo bits, so
+ * less (127 + Ei) 2^Eo they are e 2^Eo + T 2^(Eo-16) = U, the packing
+ * (vpackssdw) saturating x = 0 to -32768; T = U << (16 - Eo), and y = U +
+ * floor((a4 - 2^Eo) T 2^-16) (a4 >= 2^Eo, checked): the same values
+ * without e.  C1, D2, C3 start from the fitter's minimax cubic (p(0) = 0)
+ * at 2^Eo, then a search around it takes the least max error over every
+ * input, against MPFR, of these integer steps. */
+
+/* e's part at 2^-Eo: e 2^Eo (log2), round(e 2^Eo K 2^-15) with K = round(ln2
+   2^15) (log: one pmulhrsw) */
+static int32_t poly_e(const fx_gen *G, int lz)
+{
+    int32_t e = (15 - lz - G->in.exp) * (1 << G->out.exp);
+    return G->log.pbase2 ? e : mulhrs16(e, (int32_t)G->log.k15);
+}
+
+/* the emitted steps' value for one input (x > 0); 0 if a word overflows */
+static int poly_y(const fx_gen *G, uint32_t x, int32_t *y)
+{
+    const fx_log_red *L = &G->log;
+    int Eo = G->out.exp;
+    int lz = 16 - fx_bitlen(x);
+    uint32_t u = (x << lz) & 0xffffu;
+    uint32_t t = (u << 1) & (0xffffu << (16 - Eo)) & 0xffffu;
+    int32_t a2 = L->pd2 - (int32_t)(((uint32_t)L->pc3 * t) >> 16);
+    if (a2 < 0 || a2 > 65535)
+        return 0;
+    int32_t a4 = L->pc1 - (int32_t)(((uint32_t)a2 * t) >> 16);
+    if (a4 < (L->pbase2 ? 1 << Eo : 0) || a4 > 65535)
+        return 0;
+    *y = poly_e(G, lz) + (int32_t)(((uint32_t)a4 * t) >> 16);
+    return 1;
+}
+
+/* max error (output lsb) of C3, D2, C1 over every T, from lo[T], hi[T]: the
+   range of ref - e's part over the inputs with that T (lo > hi: none); a4
+   >= amin */
+static double poly_eval(int Eo, int32_t amin, int32_t c3, int32_t d2, int32_t c1, const double *lo, const double *hi)
+{
+    double w = 0;
+    if (c3 < 0 || c3 > 65535 || d2 < 0 || d2 > 65535 || c1 < 0 || c1 > 65535)
+        return INFINITY;
+    for (uint32_t k = 0; k < 1u << Eo; k++) {
+        if (lo[k] > hi[k])
+            continue;
+        uint32_t t = k << (16 - Eo);
+        int32_t a2 = d2 - (int32_t)(((uint32_t)c3 * t) >> 16);
+        if (a2 < 0)
+            return INFINITY;
+        int32_t a4 = c1 - (int32_t)(((uint32_t)a2 * t) >> 16);
+        if (a4 < amin)
+            return INFINITY;
+        double p = (double)(((uint32_t)a4 * t) >> 16);
+        double e = fmax(fabs(p - lo[k]), fabs(hi[k] - p));
+        if (e > w)
+            w = e;
+    }
+    return w;
+}
+
+/* 0: the cubic kernel is set up and bounded; -2: not for this type pair */
+static int prep_poly(fx_gen *G, int base2)
+{
+    int Ei = G->in.exp, Eo = G->out.exp;
+    int64_t mn = pf_type_min_stored(&G->out), mx = pf_type_max_stored(&G->out);
+    if (G->exact || G->in.is_signed || G->in.storage_bits != 16 || pf_type_max_stored(&G->in) != 65535 ||
+        G->out.storage_bits != 16 || !G->out.is_signed || mn != -32768 || Eo < 6 || Eo > 15 || Ei < -16 || Ei > 31)
+        return -2;
+    /* e 2^Eo + T: x = 1 above -32768, the largest below 2^15; the AVX2
+       packing saturates x = 0 (0 - (127 + Ei) 2^Eo) to -32768 */
+    if ((int64_t)-Ei * (1 << Eo) <= -32768 || (int64_t)(16 - Ei) * (1 << Eo) > 32767 ||
+        (int64_t)(127 + Ei) * (1 << Eo) < 32768)
+        return -2;
+    fit_problem pb;
+    memset(&pb, 0, sizeof pb);
+    pb.g = base2 ? g_log2_1p : g_log1p;
+    pb.a = 0;
+    pb.b = 1;
+    pb.order = 3;
+    pb.parity = FIT_PARITY_NONE;
+    pb.errkind = FIT_ABS;
+    pb.ncon = 1;
+    pb.con[0].kind = FIT_CON_VALUE;
+    pb.con[0].t = 0;
+    fit_poly fp;
+    char err[200];
+    if (fit_minimax(&pb, &fp, err, sizeof err) != 0)
+        return -2;
+    fit_measure(&pb, &fp);
+    fx_log_red *L = &G->log;
+    L->pfit = fp.max_err;
+    L->pbase2 = base2;
+    mpfr_t xr, lr;
+    mpfr_inits2(128, xr, lr, (mpfr_ptr)0);
+    mpfr_const_log2(lr, MPFR_RNDN);
+    mpfr_mul_2si(xr, lr, 15, MPFR_RNDN);
+    mpfr_rint(xr, xr, MPFR_RNDN);
+    L->k15 = (int64_t)mpfr_get_si(xr, MPFR_RNDN); /* log: round(ln2 2^15) */
+    int n = 1 << Eo;
+    double *lo = malloc(sizeof *lo * (size_t)n), *hi = malloc(sizeof *hi * (size_t)n), *ref = malloc(sizeof *ref * 65536);
+    if (!lo || !hi || !ref) {
+        free(lo);
+        free(hi);
+        free(ref);
+        mpfr_clears(xr, lr, (mpfr_ptr)0);
+        return -2;
+    }
+    for (int k = 0; k < n; k++)
+        lo[k] = INFINITY, hi[k] = -INFINITY;
+    for (uint32_t x = 1; x < 65536; x++) {
+        mpfr_set_ui(xr, x, MPFR_RNDN);
+        mpfr_mul_2si(xr, xr, -Ei, MPFR_RNDN);
+        mpfr_log(xr, xr, MPFR_RNDN);
+        if (base2)
+            mpfr_div(xr, xr, lr, MPFR_RNDN);
+        mpfr_mul_2si(xr, xr, Eo, MPFR_RNDN);
+        ref[x] = mpfr_get_d(xr, MPFR_RNDN);
+        int lz = 16 - fx_bitlen(x);
+        uint32_t u = (x << lz) & 0xffffu;
+        int k = (int)(((u << 1) & 0xffffu) >> (16 - Eo));
+        double r = ref[x] - (double)poly_e(G, lz);
+        lo[k] = r < lo[k] ? r : lo[k];
+        hi[k] = r > hi[k] ? r : hi[k];
+    }
+    mpfr_clears(xr, lr, (mpfr_ptr)0);
+    int32_t c3 = (int32_t)lround((double)fp.c[3] * n), d2 = (int32_t)lround(-(double)fp.c[2] * n),
+            c1 = (int32_t)lround((double)fp.c[1] * n);
+    /* the search: a box around the fit (the cut of t and the floors move the
+       best integer coefficients off the real fit's), then +-1 steps */
+    int r3 = n / 48 > 3 ? n / 48 : 3, r1 = n / 160 > 3 ? n / 160 : 3;
+    int32_t amin = base2 ? 1 << Eo : 0; /* log2's AVX2 loop adds U, not e 2^Eo: a4 - 2^Eo >= 0 */
+    double best = poly_eval(Eo, amin, c3, d2, c1, lo, hi);
+    int32_t b3 = c3, b2 = d2, b1 = c1;
+    for (int a = -r3; a <= r3; a++)
+        for (int b = -r3; b <= r3; b++)
+            for (int c = -r1; c <= r1; c++) {
+                double e = poly_eval(Eo, amin, c3 + a, d2 + b, c1 + c, lo, hi);
+                if (e < best)
+                    best = e, b3 = c3 + a, b2 = d2 + b, b1 = c1 + c;
+            }
+    for (int more = 1; more;) {
+        more = 0;
+        int32_t s3 = b3, s2 = b2, s1 = b1;
+        for (int a = -1; a <= 1; a++)
+            for (int b = -1; b <= 1; b++)
+                for (int c = -1; c <= 1; c++) {
+                    double e = poly_eval(Eo, amin, s3 + a, s2 + b, s1 + c, lo, hi);
+                    if (e < best)
+                        best = e, b3 = s3 + a, b2 = s2 + b, b1 = s1 + c, more = 1;
+                }
+    }
+    L->pc3 = b3, L->pd2 = b2, L->pc1 = b1;
+    /* the bound: every input, the emitted steps against MPFR */
+    double worst = 0;
+    int ok = best < INFINITY;
+    for (uint32_t x = 1; x < 65536 && ok; x++) {
+        int32_t y;
+        if (!poly_y(G, x, &y) || y <= mn || y > mx || ref[x] < (double)mn || ref[x] > (double)mx) {
+            ok = 0;
+            break;
+        }
+        double e = fabs((double)y - ref[x]);
+        worst = e > worst ? e : worst;
+    }
+    free(lo);
+    free(hi);
+    free(ref);
+    if (!ok)
+        return -2;
+    L->terr = worst * (1 + 1e-12) + 1e-12; /* MPFR to 128 bits, rounded to double: far below */
+    return fx_within(G, 0, L->terr * fx_lsb(G)) ? 0 : -2;
+}
+
+static void poly_texts(fx_gen *G)
+{
+    const fx_log_red *L = &G->log;
+    int Ei = G->in.exp, Eo = G->out.exp, b2 = L->pbase2;
+    const char *fn = b2 ? "log2" : "log", *F = b2 ? "log2(1 + t)" : "log(1 + t)";
+    char ek[160];
+    if (b2)
+        snprintf(ek, sizeof ek, "e 2^%d", Eo);
+    else
+        snprintf(ek, sizeof ek, "round(e 2^%d K 2^-15), K = %d = round(ln2 2^15) (MPFR; pmulhrsw)", Eo, (int)L->k15);
+    snprintf(G->red_text, sizeof G->red_text,
+             "x = 2^e (1 + t), e = 15 - lz - %d with lz = 16 - bitlen(x) (AVX-512: a leading-zero count of x 2^16 + "
+             "2^15, vplzcntd; AVX2: x converted to float, exact, whose bits >> %d less %d are e 2^%d + T 2^-%d, "
+             "vpackssdw saturating x = 0; else branch-free stages), u = x << lz (vpsllvw), T = t's top %d bits at "
+             "2^-16 (the rest dropped: in the bound); %s(x) = e%s + F(t), F(t) = %s; x = 0 -> -32768 "
+             "(most negative)",
+             Ei, 23 - Eo, (127 + Ei) * (1 << Eo), Eo, 16 - Eo, Eo, fn, b2 ? "" : " ln2", F);
+    snprintf(G->alt_domain, sizeof G->alt_domain, "%s on t in [0, 1], at t's top %d bits", b2 ? "log2(1+t)" : "log(1+t)",
+             Eo);
+    snprintf(G->alt_order, sizeof G->alt_order,
+             "3, p(T) = T (C1 - T (D2 - C3 T)) 2^-%d, three pmulhuw (unsigned words); int16_t words: 16-bit lanes", Eo);
+    snprintf(G->alt_method, sizeof G->alt_method,
+             "the fitter's minimax cubic for %s with p(0) = 0 (max error %.3e), its coefficients at 2^-%d, "
+             "then C3 = %d, D2 = %d, C1 = %d from a search around them for the least max error of the integer steps "
+             "over every input against MPFR (the cut of t and the floors included)",
+             b2 ? "log2(1+t)" : "log(1+t)", L->pfit, Eo, (int)L->pc3, (int)L->pd2, (int)L->pc1);
+    snprintf(G->alt_con, sizeof G->alt_con, "p(0) = 0 (%s; x = 0 gives the most negative output)",
+             b2 ? "log2 of powers of 2 exact" : "log(1) = 0 exactly");
+    snprintf(G->alt_formats, sizeof G->alt_formats,
+             "T, C3, D2, C1, a2, a4 unsigned words (a2 = D2 - floor(C3 T 2^-16), a4 = C1 - floor(a2 T 2^-16) >= %d, "
+             "checked over every T); result %s + floor(a4 T 2^-16), int16_t",
+             b2 ? 1 << Eo : 0, ek);
+    snprintf(G->alt_poly, sizeof G->alt_poly, "the fitter's cubic within %.4f LSB of %s on [0, 1]",
+             ldexp(L->pfit, Eo), b2 ? "log2(1+t)" : "log(1+t)");
+    snprintf(G->wide_text, sizeof G->wide_text,
+             "16-bit words throughout, but x's float (32-bit lanes: vcvtdq2ps on the unpacked words, the shift "
+             "and the bias, then vpackssdw) on x86-64-v3; x86-64-v4: leading-zero count (vplzcntd on x 2^16 + "
+             "2^15, packed to words), per-element shift (vpsllvw), e%s 2^%d by vpermw; other clones, scalar form: "
+             "plain C",
+             b2 ? "" : " ln2", Eo);
+    snprintf(G->alt_arith, sizeof G->alt_arith,
+             "integers only (no floating-point arithmetic: the AVX2 loop converts x to float, exact, and reads its "
+             "bits; no <math.h>); the three products floor (pmulhuw: in the bound)%s; bit-identical under any "
+             "compiler flags",
+             b2 ? "" : ", e ln2 rounds to nearest, ties up (pmulhrsw)");
+    snprintf(G->bound_note, sizeof G->bound_note,
+             "taken over every input from the emitted integer steps (the cubic kernel, floors included) against MPFR");
+}
+
+static void emit_poly(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern)
+{
+    const fx_log_red *L = &G->log;
+    const char *N = G->name;
+    int Ei = G->in.exp, Eo = G->out.exp;
+    uint32_t tm = (0xffffu << (16 - Eo)) & 0xffffu;
+    char w3[64], w2[64], w1[64], k3[16], k2[16], k1[16];
+    snprintf(w3, sizeof w3, "C3 = %d (unsigned word)", (int)L->pc3);
+    snprintf(w2, sizeof w2, "D2 = %d (unsigned word)", (int)L->pd2);
+    snprintf(w1, sizeof w1, "C1 = %d (unsigned word)", (int)L->pc1);
+    snprintf(k3, sizeof k3, "%s", fx_k16(G, (int16_t)(uint16_t)L->pc3, w3));
+    snprintf(k2, sizeof k2, "%s", fx_k16(G, (int16_t)(uint16_t)L->pd2, w2));
+    snprintf(k1, sizeof k1, "%s", fx_k16(G, (int16_t)(uint16_t)L->pc1, w1));
+    char epart[200], wk[160];
+    int b2 = L->pbase2;
+    if (b2)
+        snprintf(epart, sizeof epart, "(15 - lz - %d) * %d", Ei, 1 << Eo);
+    else {
+        /* e ln2 by lz: a table (the AVX-512 loop's vpermw), from the
+           pmulhrsw the AVX2 loop runs */
+        int32_t th[32] = {0};
+        for (int lz = 0; lz < 16; lz++)
+            th[lz] = poly_e(G, lz);
+        th[16] = -32768;
+        snprintf(wk, sizeof wk, "TH[lz] = round(e 2^%d K 2^-15), K = %d = round(ln2 2^15) (MPFR), e = 15 - lz - %d",
+                 Eo, (int)L->k15, Ei);
+        tab_table(tabs, N, "th", th, 32, wk);
+        snprintf(epart, sizeof epart, "%s_th[lz]", N);
+    }
+    pf_printf(body,
+              "    /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */\n"
+              "    int lz = 16 - pf_fx_bitlen(x);\n"
+              "    uint16_t u = (uint16_t)((uint32_t)x << lz);           /* leading one at bit 15; 0 for x = 0 */\n"
+              "    uint32_t t = ((uint32_t)u << 1) & 0x%xu;             /* T: t's top %d bits at 2^-16 */\n"
+              "    /* p(T) = T (C1 - T (D2 - C3 T)) 2^-%d, three floors (pmulhuw) */\n"
+              "    uint32_t a2 = (uint16_t)((uint16_t)%s - (((uint16_t)%s * t) >> 16));\n"
+              "    uint32_t a4 = (uint16_t)((uint16_t)%s - ((a2 * t) >> 16));\n"
+              "    int32_t e = %s%s%s; /* e%s 2^%d; x = 0: the most negative (p = 0) */\n"
+              "    return (%s)(e + (int32_t)((a4 * t) >> 16));",
+              (unsigned)tm, Eo, Eo, k2, k3, k1, b2 ? "lz < 16 ? " : "", epart, b2 ? " : -32768" : "", b2 ? "" : " ln2", Eo,
+              G->ot);
+    const char *cond = "#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)\n";
+    char epk[200];
+    if (b2)
+        snprintf(epk, sizeof epk, "(15 - k - %d) * %d", Ei, 1 << Eo);
+    else
+        snprintf(epk, sizeof epk, "%s_th[k]", N);
+    pf_printf(kern,
+              "\n\n/* AVX-512BW/CD: the same steps on 32 lanes, with intrinsics, as GCC does not\n"
+              "   turn a 16-bit leading-zero count into vplzcntd nor e%s 2^%d into vpermw: the\n"
+              "   array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the\n"
+              "   rest of the array and the other clones use the scalar steps above.  x 2^16\n"
+              "   + 2^15 in 32-bit lanes has lz leading zeros (16 for x = 0); unpack and\n"
+              "   pack keep the lanes' order; T = (2 x) << lz, cut (the add is off the\n"
+              "   leading-zero count's path: measured as fast as three lookups).  The same\n"
+              "   values (pfmathgen sweeps the array form on its machine against the scalar\n"
+              "   one). */\n%s#include <immintrin.h>\n"
+              "extern %s %s(%s x); /* the scalar form, for the last n %% 32 (or 16) */\n"
+              "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
+              "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+              "    int32_t e2[32]; /* e%s 2^%d by lz; x = 0 (lz = 16): the most negative */\n"
+              "    for (int k = 0; k < 32; k++)\n"
+              "        e2[k] = k < 16 ? %s : k == 16 ? -32768 : 0;\n"
+              "    const __m512i th = _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(e2))),\n"
+              "                                          _mm512_cvtepi32_epi16(_mm512_loadu_si512(e2 + 16)), 1);\n"
+              "    const __m512i c8 = _mm512_set1_epi16(-32768), tm = _mm512_set1_epi16(%d);\n"
+              "    const __m512i c3 = _mm512_set1_epi16(%d), d2 = _mm512_set1_epi16(%d), c1 = _mm512_set1_epi16(%d);\n",
+              b2 ? "" : " ln2", Eo, cond, G->ot, N, G->it, N, G->it, G->ot, b2 ? "" : " ln2", Eo, epk, (int)(int16_t)tm, (int)(int16_t)L->pc3,
+              (int)(int16_t)L->pd2, (int)(int16_t)L->pc1);
+    pf_buf s1 = {0}, s2 = {0};
+    pf_put(&s1, "        __m512i xv = _mm512_loadu_si512(x + i);\n"
+                "        __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),\n"
+                "                                         _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));\n"
+                "        __m512i t = _mm512_and_si512(_mm512_sllv_epi16(_mm512_add_epi16(xv, xv), lz), tm); /* u << 1, cut */\n");
+    pf_put(&s2, "        __m512i a2 = _mm512_sub_epi16(d2, _mm512_mulhi_epu16(c3, t));\n"
+                "        __m512i a4 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(a2, t));\n"
+                "        __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhi_epu16(a4, t));\n");
+    const char *cv5[] = {"t", "lz"};
+    fx_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv5, 2, "_mm512_storeu_si512(y + i - 32, r);", N);
+    free(s1.s);
+    free(s2.s);
+    s1 = s2 = (pf_buf){0};
+    kern->n -= strlen("#endif"); /* fx_pipe_loop closed the #if: the AVX2 loop follows */
+    kern->s[kern->n] = 0;
+    if (!b2)
+        pf_printf(kern,
+                  "\n/* AVX2 (x86-64-v3): the same values on 16 lanes, without a leading-zero\n"
+                  "   count or a per-element shift: x converted to float (the words unpacked to\n"
+                  "   32-bit lanes, in each 128-bit lane's order, as vpackssdw packs them back)\n"
+                  "   is exact, and its bits >> %d are (127 + bitlen(x) - 1) 2^%d + t's top %d\n"
+                  "   bits, so less %d they are U = e 2^%d + T 2^-%d, in a word for x > 0;\n"
+                  "   x = 0 (bits 0) gives -%d, which the packing saturates to -32768.  T =\n"
+                  "   U << %d, e 2^%d = U with its low %d bits cleared, and e ln2 2^%d =\n"
+                  "   round(e 2^%d K 2^-15) (pmulhrsw, as the table).  x = 0 (U = -32768, the\n"
+                  "   only such U): -32768 by a compare and a blend.  The same values. */\n"
+                  "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
+                  "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+                  "    const __m256i z = _mm256_setzero_si256(), cb = _mm256_set1_epi32(%d);\n"
+                  "    const __m256i c3 = _mm256_set1_epi16(%d), d2 = _mm256_set1_epi16(%d), c1 = _mm256_set1_epi16(%d);\n"
+                  "    const __m256i em = _mm256_set1_epi16(%d), kl = _mm256_set1_epi16(%d), c8 = _mm256_set1_epi16(-32768);\n",
+                  23 - Eo, Eo, Eo, (127 + Ei) * (1 << Eo), Eo, 16 - Eo, (127 + Ei) * (1 << Eo), 16 - Eo, Eo, Eo, Eo,
+                  Eo, N, G->it, G->ot, (127 + Ei) * (1 << Eo), (int)(int16_t)L->pc3, (int)(int16_t)L->pd2,
+                  (int)(int16_t)L->pc1, -(1 << Eo), (int)L->k15);
+    else
+    pf_printf(kern,
+              "\n/* AVX2 (x86-64-v3): the same values on 16 lanes, without a leading-zero\n"
+              "   count or a per-element shift: x converted to float (the words unpacked to\n"
+              "   32-bit lanes, in each 128-bit lane's order, as vpackssdw packs them back)\n"
+              "   is exact, and its bits >> %d are (127 + bitlen(x) - 1) 2^%d + t's top %d\n"
+              "   bits, so less %d they are U = e 2^%d + T 2^-%d, in a word for x > 0;\n"
+              "   x = 0 (bits 0) gives -%d, which the packing saturates to -32768.  T =\n"
+              "   U << %d, and floor((a4 - 2^%d) T 2^-16) = floor(a4 T 2^-16) - T 2^-%d\n"
+              "   (a4 >= 2^%d, checked), so y = U + floor((a4 - 2^%d) T 2^-16) without\n"
+              "   e: C1 - 2^%d is stored.  x = 0: T = 0, y = -32768.  The same values. */\n"
+              "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
+              "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+              "    const __m256i z = _mm256_setzero_si256(), cb = _mm256_set1_epi32(%d);\n"
+              "    const __m256i c3 = _mm256_set1_epi16(%d), d2 = _mm256_set1_epi16(%d), c1 = _mm256_set1_epi16(%d);\n",
+              23 - Eo, Eo, Eo, (127 + Ei) * (1 << Eo), Eo, 16 - Eo, (127 + Ei) * (1 << Eo), 16 - Eo, Eo, 16 - Eo,
+              Eo, Eo, Eo, N, G->it, G->ot, (127 + Ei) * (1 << Eo), (int)(int16_t)L->pc3, (int)(int16_t)L->pd2,
+              (int)(int16_t)(L->pc1 - (1 << Eo)));
+    pf_printf(&s1,
+              "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
+              "        __m256i fl = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv, z)));\n"
+              "        __m256i fh = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv, z)));\n"
+              "        __m256i u = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl, %d), cb),\n"
+              "                                       _mm256_sub_epi32(_mm256_srli_epi32(fh, %d), cb)); /* e 2^%d + T 2^-%d */\n",
+              23 - Eo, 23 - Eo, Eo, 16 - Eo);
+    if (b2)
+        pf_printf(&s2,
+                  "        __m256i t = _mm256_slli_epi16(u, %d);\n"
+                  "        __m256i a2 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t));\n"
+                  "        __m256i a4 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2, t)); /* a4 - 2^%d */\n"
+                  "        __m256i r = _mm256_add_epi16(u, _mm256_mulhi_epu16(a4, t));\n",
+                  16 - Eo, Eo);
+    else
+        pf_printf(&s2,
+                  "        __m256i t = _mm256_slli_epi16(u, %d);\n"
+                  "        __m256i a2 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t));\n"
+                  "        __m256i a4 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2, t));\n"
+                  "        __m256i r = _mm256_add_epi16(_mm256_mulhrs_epi16(_mm256_and_si256(u, em), kl), _mm256_mulhi_epu16(a4, t));\n"
+                  "        r = _mm256_blendv_epi8(r, c8, _mm256_cmpeq_epi16(u, c8)); /* x = 0 */\n",
+                  16 - Eo);
+    const char *cv[] = {"u"};
+    fx_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 1, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
+    free(s1.s);
+    free(s2.s);
+    G->bw16 = 3;
+}
+
 /* 16-bit lanes (see fx_log16.c.in): z = e K + P at 2^-a in an int16_t,
    then rounded once to the output; a >= Eo, and |z| 2^a must fit */
 static int prepare16(fx_gen *G, char *err, size_t errlen, int base2)
@@ -933,6 +1314,11 @@ static int prepare(fx_gen *G, char *err, size_t errlen, int base2)
              fn, (long long)pf_type_min_stored(&G->out));
     if (G->W == 16) {
         /* the table kernel where the type pair allows it, else the Horner form */
+        if (prep_poly(G, base2) == 0) {
+            G->kind = 2;
+            poly_texts(G);
+            return 0;
+        }
         if (prep_tab(G, base2) == 0) {
             G->kind = 1;
             tab_texts(G, base2);
@@ -955,6 +1341,15 @@ static int prep_log2(fx_gen *G, char *err, size_t n) { return prepare(G, err, n,
 
 static void budget16(fx_gen *G)
 {
+    if (G->kind == 2) {
+        /* the cubic kernel: the max error over every input, less the 1/2
+           lsb the bound adds for a final rounding (its final step is a floor,
+           in terr); the fitter's cubic error as the polynomial's share */
+        G->R = 0;
+        G->A = (G->log.terr > 0.5 ? G->log.terr - 0.5 : 0) * fx_lsb(G);
+        G->poly_err = G->log.pfit < G->A ? G->log.pfit : G->A;
+        return;
+    }
     if (G->kind == 1) {
         /* the table kernel: no Horner polynomial (the fit the pipeline makes
            is not used); the pre-rounding error over every input, of which the
@@ -1046,6 +1441,18 @@ static const char *rsh_mulhrs(fx_gen *G, char *buf, size_t n, const char *v, int
 
 static void emit16(fx_gen *G, pf_buf *b, int base2)
 {
+    if (G->kind == 2) {
+        pf_buf tb = {0}, tt = {0}, tk = {0};
+        emit_poly(G, &tb, &tt, &tk);
+        const char *kv[] = {"FUNC", base2 ? "log2" : "log", "KTEXT", base2 ? "" : " ln2", "PTEXT",
+                            base2 ? "log2(1 + t)" : "log(1 + t)", "NAME", G->name, "IT", G->it, "OT", G->ot,
+                            "BODY", tb.s, "TABLES", tt.s ? tt.s : "", "KERNEL", tk.s, NULL};
+        pf_subst(b, pf_template("fx_logpoly16.c"), kv);
+        free(tb.s);
+        free(tt.s);
+        free(tk.s);
+        return;
+    }
     if (G->kind == 1) {
         pf_buf tb = {0}, tt = {0}, tk = {0};
         emit_tab(G, &tb, &tt, &tk, base2);

@@ -5,41 +5,38 @@
  * Input:       uint16_t x, value x 2^-8 in [0, 255.996094]
  * Output:      int16_t y, value y 2^-11 in [-16, 15.9995117]
  * Reduction:   x = 2^e (1 + t), e = 15 - lz - 8 with lz = 16 - bitlen(x) (AVX-512: a 
- *              leading-zero count of x 2^16 + 2^15, vplzcntd; AVX2: the exponent and the 
- *              fraction bits of x converted to float, exact; else branch-free stages), u = x << 
- *              lz (vpsllvw), t in [0, 1) the 15 bits below u's leading one (exact): segment j = 
- *              t's top 4 bits, f = the other 11 (2^-16); log2(x) = e + F(t), F(t) = log2(1 + 
- *              t); x = 0 -> lz = 16, u = 0, TH[16] = -32768 (most negative)
- * Domain:      log2(1+t) on t in [0, 1]: 16 segments [j/16, (j+1)/16)
- * Order:       1 per segment (a line: V[j] + S[j] f), 16-entry tables V, S; TH by lz; int16_t 
+ *              leading-zero count of x 2^16 + 2^15, vplzcntd; AVX2: x converted to float, 
+ *              exact, whose bits >> 12 less 276480 are e 2^11 + T 2^-5, vpackssdw saturating x 
+ *              = 0; else branch-free stages), u = x << lz (vpsllvw), T = t's top 11 bits at 
+ *              2^-16 (the rest dropped: in the bound); log2(x) = e + F(t), F(t) = log2(1 + t); 
+ *              x = 0 -> -32768 (most negative)
+ * Domain:      log2(1+t) on t in [0, 1], at t's top 11 bits
+ * Order:       3, p(T) = T (C1 - T (D2 - C3 T)) 2^-11, three pmulhuw (unsigned words); int16_t 
  *              words: 16-bit lanes
- * Lanes:       16-bit words throughout; x86-64-v4: lookups (vpermw), leading-zero count 
- *              (vplzcntd on x 2^16 + 2^15, packed to words), per-element shift (vpsllvw) by 
- *              AVX-512BW/CD intrinsics; x86-64-v3: lookups by vpshufb on byte planes, lz and t 
- *              from x's float (vcvtdq2ps on even and odd words), TH = max(ex - c, lo) << Eo 
- *              from its exponent; other clones, scalar form: plain C
- * Method:      per segment: S[j] the chord's rise at 2^-14 through MPFR's F(j/16), F((j+1)/16) 
- *              (128 bits), searched +-2 for the least error; V[j] centres the error of V[j] + 
- *              floor(S[j] f 2^-16) - F(t) 2^14 over the segment's 2048 inputs (discrete minimax 
- *              of the integer step, floor included); TH[lz] = round(e 2^11) (MPFR, to nearest)
- * Constraints: none per segment (C0 only up to the tables' rounding); x = 0 gives the most 
- *              negative output
- * Formats:     V, S, TH int16_t; w = V[j] + pmulhuw(S[j], f) at 2^-14 (int16_t); result TH[lz] 
- *              + round(w 2^-3), the rounding multiply-high by 2^12 (pmulhrsw), ties up
- * Polynomial:  segment lines within 7.8596 2^-14 (0.9824 LSB) of F(t) at every segment input 
- *              (floor included)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.9824 LSB (polynomial 0.9824, 
- *              arithmetic and reduction 0.0000) = 1.4824 LSB; taken over every input from the 
- *              emitted integer steps (the table kernel) against MPFR
- * Sweep:       max 1.3542 LSB at x = 33717 (131.707031), mean 0.3191 LSB; exhaustive: all 65536 
+ * Lanes:       16-bit words throughout, but x's float (32-bit lanes: vcvtdq2ps on the unpacked 
+ *              words, the shift and the bias, then vpackssdw) on x86-64-v3; x86-64-v4: 
+ *              leading-zero count (vplzcntd on x 2^16 + 2^15, packed to words), per-element 
+ *              shift (vpsllvw), e 2^11 by vpermw; other clones, scalar form: plain C
+ * Method:      the fitter's minimax cubic for log2(1+t) with p(0) = 0 (max error 7.710e-04), 
+ *              its coefficients at 2^-11, then C3 = 352, D2 = 1228, C1 = 2927 from a search 
+ *              around them for the least max error of the integer steps over every input 
+ *              against MPFR (the cut of t and the floors included)
+ * Constraints: p(0) = 0 (log2 of powers of 2 exact; x = 0 gives the most negative output)
+ * Formats:     T, C3, D2, C1, a2, a4 unsigned words (a2 = D2 - floor(C3 T 2^-16), a4 = C1 - 
+ *              floor(a2 T 2^-16) >= 2048, checked over every T); result e 2^11 + floor(a4 T 
+ *              2^-16), int16_t
+ * Polynomial:  the fitter's cubic within 1.5790 LSB of log2(1+t) on [0, 1]
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 2.6098 LSB (polynomial 1.5790, 
+ *              arithmetic and reduction 1.0309) = 3.1098 LSB; taken over every input from the 
+ *              emitted integer steps (the cubic kernel, floors included) against MPFR
+ * Sweep:       max 3.1098 LSB at x = 34863 (136.183594), mean 1.2176 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  log2(x) for x <= 0 (undefined) gives -32768, the most negative output; results 
  *              beyond the output range give its max or min
  * Target:      fast: within max(2^-10 |f(x)|, 4 LSB) for every input
  * Arithmetic:  integers only (no floating-point arithmetic: the AVX2 loop converts x to float, 
- *              exact, and reads its bits; no <math.h>); the segment product floors (pmulhuw: in 
- *              the bound), the result is rounded once to nearest, ties up (pmulhrsw); 
- *              bit-identical under any compiler flags
+ *              exact, and reads its bits; no <math.h>); the three products floor (pmulhuw: in 
+ *              the bound); bit-identical under any compiler flags
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -223,111 +220,85 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
 #endif
 }
 
-/* log2 in fixed point, in 16-bit lanes, from tables (gen/fixed/fixed_log.c,
-   the table kernel).  x = 2^(15 - lz) (1 + t): lz = 16 - bitlen(x), t the
-   15 bits below the leading one (exact).  log2(x) = e + F(t),
-   F(t) = log2(1 + t), a line on each of 32 segments of t (V[j] + S[j] f, j the
-   segment, f the place in it), e from TH[lz]; one rounding at the
-   end.  x = 0 gives the most negative output, -32768 (TH[16]).  k[] holds
-   the rounding's multiplier; bw is unused (the AVX-512 and AVX2 loops below
-   have their own intrinsics). */
-/* V[j]: the segment line's value at its start, F = log2(1 + t) at 2^-14 */
-static const int32_t pf_log2_uq8_q11_fast_tv[16] = {
-    3, 1438, 2789, 4066, 5278, 6431, 7530, 8581,
-    9587, 10551, 11478, 12370, 13230, 14059, 14860, 15635,
-};
-/* S[j]: the segment line's rise across the segment, at 2^-14 */
-static const int32_t pf_log2_uq8_q11_fast_ts[16] = {
-    1435, 1351, 1278, 1213, 1154, 1100, 1052, 1006,
-    965, 928, 893, 860, 829, 802, 776, 751,
-};
-/* TH[lz] = round(e 2^11), e = 15 - lz - 8 (MPFR); TH[16] (x = 0): the most negative */
-static const int32_t pf_log2_uq8_q11_fast_th[32] = {
-    14336, 12288, 10240, 8192, 6144, 4096, 2048, 0,
-    -2048, -4096, -6144, -8192, -10240, -12288, -14336, -16384,
-    -32768, 0, 0, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0, 0, 0, 0,
-};
+/* log2 in fixed point, in 16-bit lanes, by a cubic (gen/fixed/fixed_log.c,
+   the cubic kernel).  x = 2^(15 - lz) (1 + t): lz = 16 - bitlen(x), t the
+   15 bits below the leading one, cut to T, its top bits.  log2(x) =
+   e + log2(1 + t), log2(1 + t) ~ p(T) = T (C1 - T (D2 - C3 T)) in three
+   unsigned multiply-highs, each a floor; no final rounding.  x = 0 gives
+   the most negative output, -32768 (T = 0, p = 0).  k[] holds C3, D2, C1
+   (log: e ln2 from a table by lz); bw is unused (the AVX-512 and AVX2
+   loops below have their own intrinsics). */
 PF_FX_INLINE int16_t pf_log2_uq8_q11_fast_inline(uint16_t x, const int16_t *k, int bw)
 {
     (void)bw;
     /* x = 2^(15 - lz) (1 + t), lz = 16 - bitlen(x) (16 for x = 0) */
     int lz = 16 - pf_fx_bitlen(x);
-    uint16_t u = (uint16_t)((uint32_t)x << lz); /* leading one at bit 15; 0 for x = 0 */
-    unsigned j = (u >> 11) & 15u;               /* segment: t's top 4 bits */
-    uint16_t f = (uint16_t)(u << 5);            /* t's other 11 bits: the place in it, 2^-16 */
-    /* F(t) on segment j, at 2^-14: V[j] + floor(S[j] f 2^-16) (pmulhuw) */
-    int16_t w = (int16_t)(pf_log2_uq8_q11_fast_tv[j] + (int32_t)(((uint32_t)pf_log2_uq8_q11_fast_ts[j] * f) >> 16));
-    /* e at 2^-11 plus w rounded once to it */
-    return (int16_t)(pf_log2_uq8_q11_fast_th[lz] + pf_fx_mulhrs(w, k[0]));
+    uint16_t u = (uint16_t)((uint32_t)x << lz);           /* leading one at bit 15; 0 for x = 0 */
+    uint32_t t = ((uint32_t)u << 1) & 0xffe0u;             /* T: t's top 11 bits at 2^-16 */
+    /* p(T) = T (C1 - T (D2 - C3 T)) 2^-11, three floors (pmulhuw) */
+    uint32_t a2 = (uint16_t)((uint16_t)k[1] - (((uint16_t)k[0] * t) >> 16));
+    uint32_t a4 = (uint16_t)((uint16_t)k[2] - ((a2 * t) >> 16));
+    int32_t e = lz < 16 ? (15 - lz - 8) * 2048 : -32768; /* e 2^11; x = 0: the most negative (p = 0) */
+    return (int16_t)(e + (int32_t)((a4 * t) >> 16));
 }
 
 /* AVX-512BW/CD: the same steps on 32 lanes, with intrinsics, as GCC does not
-   turn the table lookups into vpermw nor a 16-bit leading-zero count into
-   vplzcntd: the array form runs this loop on a CPU with x86-64-v4 (see its
-   dispatch), the rest of the array and the other clones use the scalar steps
-   above.  x 2^16 + 2^15 in 32-bit lanes has lz leading zeros (16 for x = 0);
-   unpack and pack keep the lanes' order.  The same values (pfmathgen sweeps
-   the array form on its machine against the scalar one). */
+   turn a 16-bit leading-zero count into vplzcntd nor e 2^11 into vpermw: the
+   array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the
+   rest of the array and the other clones use the scalar steps above.  x 2^16
+   + 2^15 in 32-bit lanes has lz leading zeros (16 for x = 0); unpack and
+   pack keep the lanes' order; T = (2 x) << lz, cut (the add is off the
+   leading-zero count's path: measured as fast as three lookups).  The same
+   values (pfmathgen sweeps the array form on its machine against the scalar
+   one). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
 extern int16_t pf_log2_uq8_q11_fast(uint16_t x); /* the scalar form, for the last n % 32 (or 16) */
-/* 32 table entries as 16-bit words, for vpermw */
-__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log2_uq8_q11_fast_w16(const int32_t *t)
-{
-    return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
-                              _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
-}
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    /* pmulhuw(S 2^5, u) = S (16 + j) + floor(S f 2^-16), exact: V - S (16 + j) is
-       stored (words, mod 2^16), and f is not formed */
-    int32_t v2[32], s2[32];
-    for (int k = 0; k < 32; k++) {
-        v2[k] = pf_log2_uq8_q11_fast_tv[k & 15] - pf_log2_uq8_q11_fast_ts[k & 15] * (16 + (k & 15));
-        s2[k] = pf_log2_uq8_q11_fast_ts[k & 15] * 32;
-    }
-    v2[0] = pf_log2_uq8_q11_fast_tv[0]; /* index 0 (u = 0): x = 0 alone */
-    const __m512i tv = pf_log2_uq8_q11_fast_w16(v2), ts = pf_log2_uq8_q11_fast_w16(s2), th = pf_log2_uq8_q11_fast_w16(pf_log2_uq8_q11_fast_th);
-    const __m512i c8 = _mm512_set1_epi16(-32768), kr = _mm512_set1_epi16(4096);
+    int32_t e2[32]; /* e 2^11 by lz; x = 0 (lz = 16): the most negative */
+    for (int k = 0; k < 32; k++)
+        e2[k] = k < 16 ? (15 - k - 8) * 2048 : k == 16 ? -32768 : 0;
+    const __m512i th = _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(e2))),
+                                          _mm512_cvtepi32_epi16(_mm512_loadu_si512(e2 + 16)), 1);
+    const __m512i c8 = _mm512_set1_epi16(-32768), tm = _mm512_set1_epi16(-32);
+    const __m512i c3 = _mm512_set1_epi16(352), d2 = _mm512_set1_epi16(1228), c1 = _mm512_set1_epi16(2927);
     size_t i = 0;
     if (n >= 32) {
         /* software pipelined: a pass runs the first steps of block i and the
            rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
-        __m512i p_j, p_u, p_lz;
+        __m512i p_t, p_lz;
         {
             __m512i xv = _mm512_loadu_si512(x + i);
             __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
                                              _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
-            __m512i u = _mm512_sllv_epi16(xv, lz);
-            __m512i j = _mm512_srli_epi16(u, 11); /* vpermw reads its low 5 bits */
-            p_j = j, p_u = u, p_lz = lz;
+            __m512i t = _mm512_and_si512(_mm512_sllv_epi16(_mm512_add_epi16(xv, xv), lz), tm); /* u << 1, cut */
+            p_t = t, p_lz = lz;
         }
         for (i = 32; i + 32 <= n; i += 32) {
-            __m512i n_j, n_u, n_lz;
+            __m512i n_t, n_lz;
             {
                 __m512i xv = _mm512_loadu_si512(x + i);
                 __m512i lz = _mm512_packus_epi32(_mm512_lzcnt_epi32(_mm512_unpacklo_epi16(c8, xv)),
                                                  _mm512_lzcnt_epi32(_mm512_unpackhi_epi16(c8, xv)));
-                __m512i u = _mm512_sllv_epi16(xv, lz);
-                __m512i j = _mm512_srli_epi16(u, 11); /* vpermw reads its low 5 bits */
-                n_j = j, n_u = u, n_lz = lz;
+                __m512i t = _mm512_and_si512(_mm512_sllv_epi16(_mm512_add_epi16(xv, xv), lz), tm); /* u << 1, cut */
+                n_t = t, n_lz = lz;
             }
             {
-                __m512i j = p_j, u = p_u, lz = p_lz;
-                __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
-                                             _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
-                __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
+                __m512i t = p_t, lz = p_lz;
+                __m512i a2 = _mm512_sub_epi16(d2, _mm512_mulhi_epu16(c3, t));
+                __m512i a4 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(a2, t));
+                __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhi_epu16(a4, t));
                 _mm512_storeu_si512(y + i - 32, r);
             }
-            p_j = n_j, p_u = n_u, p_lz = n_lz;
+            p_t = n_t, p_lz = n_lz;
         }
         {
-            __m512i j = p_j, u = p_u, lz = p_lz;
-            __m512i w = _mm512_add_epi16(_mm512_permutexvar_epi16(j, tv),
-                                         _mm512_mulhi_epu16(_mm512_permutexvar_epi16(j, ts), u));
-            __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhrs_epi16(w, kr));
+            __m512i t = p_t, lz = p_lz;
+            __m512i a2 = _mm512_sub_epi16(d2, _mm512_mulhi_epu16(c3, t));
+            __m512i a4 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(a2, t));
+            __m512i r = _mm512_add_epi16(_mm512_permutexvar_epi16(lz, th), _mm512_mulhi_epu16(a4, t));
             _mm512_storeu_si512(y + i - 32, r);
         }
     }
@@ -335,81 +306,59 @@ static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *r
         y[i] = pf_log2_uq8_q11_fast(x[i]);
 }
 
-/* AVX2 (x86-64-v3): the same steps on 16 lanes.  lz and t from x converted
-   to float, exact (even and odd words apart, in 32-bit lanes): its fraction
-   bits are t, its exponent ex = 126 + bitlen(x), 0 for x = 0; two blends put
-   them back in the words' order.  No vpermw: a table of 16 words is two
-   vpshufb (its low and its high bytes), the index in both bytes of the word,
-   merged by vpblendvb.
-   u = t 2^16 = j 2^(16 - jb) + f 2^-jb (jb segment bits), so pmulhuw(S 2^jb,
-   u) = S j + floor(S f 2^-16), exact: V - S j and S 2^jb are stored, and f
-   is not formed.
-   TH = max(ex - 135, -16) << 11 from ex, no lookup: -32768 for x = 0, whose w =
-   V[0] rounds to 0 (the scalar form's check).  The same values. */
+/* AVX2 (x86-64-v3): the same values on 16 lanes, without a leading-zero
+   count or a per-element shift: x converted to float (the words unpacked to
+   32-bit lanes, in each 128-bit lane's order, as vpackssdw packs them back)
+   is exact, and its bits >> 12 are (127 + bitlen(x) - 1) 2^11 + t's top 11
+   bits, so less 276480 they are U = e 2^11 + T 2^-5, in a word for x > 0;
+   x = 0 (bits 0) gives -276480, which the packing saturates to -32768.  T =
+   U << 5, and floor((a4 - 2^11) T 2^-16) = floor(a4 T 2^-16) - T 2^-5
+   (a4 >= 2^11, checked), so y = U + floor((a4 - 2^11) T 2^-16) without
+   e: C1 - 2^11 is stored.  x = 0: T = 0, y = -32768.  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
-    uint8_t b[4][16]; /* byte planes: V low, high; S low, high */
-    for (int k = 0; k < 16; k++) {
-        b[0][k] = (uint8_t)(uint32_t)(pf_log2_uq8_q11_fast_tv[k] - pf_log2_uq8_q11_fast_ts[k] * (k));
-        b[1][k] = (uint8_t)((uint32_t)(pf_log2_uq8_q11_fast_tv[k] - pf_log2_uq8_q11_fast_ts[k] * (k)) >> 8);
-        b[2][k] = (uint8_t)(pf_log2_uq8_q11_fast_ts[k] * 16);
-        b[3][k] = (uint8_t)((uint32_t)(pf_log2_uq8_q11_fast_ts[k] * 16) >> 8);
-    }
-    const __m256i q0 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
-    const __m256i q1 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
-    const __m256i q2 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
-    const __m256i q3 = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
-    __m256i dup = _mm256_set1_epi16(0x101); /* x 0x101: a byte in both bytes of its word */
-    __asm__("" : "+x"(dup));              /* (a vpmullw, not shifts and adds) */
-    __m256i c16 = _mm256_set1_epi16(16);    /* u >> 12 as vpmulhuw */
-    __asm__("" : "+x"(c16));
-    const __m256i lo16 = _mm256_set1_epi32(0xffff), hib = _mm256_set1_epi16(-256);
-    const __m256i kr = _mm256_set1_epi16(4096);
-    const __m256i ce = _mm256_set1_epi16(135), lo = _mm256_set1_epi16(-16);
+    const __m256i z = _mm256_setzero_si256(), cb = _mm256_set1_epi32(276480);
+    const __m256i c3 = _mm256_set1_epi16(352), d2 = _mm256_set1_epi16(1228), c1 = _mm256_set1_epi16(879);
     size_t i = 0;
     if (n >= 16) {
         /* software pipelined: a pass runs the first steps of block i and the
            rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
-        __m256i p_jj, p_u, p_ex;
+        __m256i p_u;
         {
             __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-            __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
-            __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
-            __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
-            __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
-            __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup);
-            p_jj = jj, p_u = u, p_ex = ex;
+            __m256i fl = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv, z)));
+            __m256i fh = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv, z)));
+            __m256i u = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl, 12), cb),
+                                           _mm256_sub_epi32(_mm256_srli_epi32(fh, 12), cb)); /* e 2^11 + T 2^-5 */
+            p_u = u;
         }
         for (i = 16; i + 16 <= n; i += 16) {
-            __m256i n_jj, n_u, n_ex;
+            __m256i n_u;
             {
                 __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-                __m256i fe = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_and_si256(xv, lo16)));
-                __m256i fo = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_srli_epi32(xv, 16)));
-                __m256i u = _mm256_blend_epi16(_mm256_srli_epi32(fe, 7), _mm256_slli_epi32(fo, 9), 0xaa); /* t 2^16 */
-                __m256i ex = _mm256_blend_epi16(_mm256_srli_epi32(fe, 23), _mm256_srli_epi32(fo, 7), 0xaa);
-                __m256i jj = _mm256_mullo_epi16(_mm256_mulhi_epu16(u, c16), dup);
-                n_jj = jj, n_u = u, n_ex = ex;
+                __m256i fl = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv, z)));
+                __m256i fh = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv, z)));
+                __m256i u = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl, 12), cb),
+                                               _mm256_sub_epi32(_mm256_srli_epi32(fh, 12), cb)); /* e 2^11 + T 2^-5 */
+                n_u = u;
             }
             {
-                __m256i jj = p_jj, u = p_u, ex = p_ex;
-                __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
-                __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
-                __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, u)); /* S 2^jb u 2^-16 = S j + S f 2^-16 */
-                __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
-                __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
+                __m256i u = p_u;
+                __m256i t = _mm256_slli_epi16(u, 5);
+                __m256i a2 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t));
+                __m256i a4 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2, t)); /* a4 - 2^11 */
+                __m256i r = _mm256_add_epi16(u, _mm256_mulhi_epu16(a4, t));
                 _mm256_storeu_si256((__m256i *)(y + i - 16), r);
             }
-            p_jj = n_jj, p_u = n_u, p_ex = n_ex;
+            p_u = n_u;
         }
         {
-            __m256i jj = p_jj, u = p_u, ex = p_ex;
-            __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(q0, jj), _mm256_shuffle_epi8(q1, jj), hib);
-            __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(q2, jj), _mm256_shuffle_epi8(q3, jj), hib);
-            __m256i w = _mm256_add_epi16(v, _mm256_mulhi_epu16(s, u)); /* S 2^jb u 2^-16 = S j + S f 2^-16 */
-            __m256i th = _mm256_slli_epi16(_mm256_max_epi16(_mm256_sub_epi16(ex, ce), lo), 11);
-            __m256i r = _mm256_add_epi16(th, _mm256_mulhrs_epi16(w, kr));
+            __m256i u = p_u;
+            __m256i t = _mm256_slli_epi16(u, 5);
+            __m256i a2 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t));
+            __m256i a4 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2, t)); /* a4 - 2^11 */
+            __m256i r = _mm256_add_epi16(u, _mm256_mulhi_epu16(a4, t));
             _mm256_storeu_si256((__m256i *)(y + i - 16), r);
         }
     }
@@ -419,8 +368,10 @@ static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t 
 #endif
 
 /* The constants the body reads (Horner coefficients and multipliers) */
-static const int16_t pf_log2_uq8_q11_fast_k[1] = {
-    4096,   /* k[0]: 2^12: round(w / 2^3), a rounding multiply-high */
+static const int16_t pf_log2_uq8_q11_fast_k[3] = {
+    352,    /* k[0]: C3 = 352 (unsigned word) */
+    1228,   /* k[1]: D2 = 1228 (unsigned word) */
+    2927,   /* k[2]: C1 = 2927 (unsigned word) */
 };
 
 int16_t pf_log2_uq8_q11_fast(uint16_t x)
