@@ -229,12 +229,22 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
         }
     }
     mpfr_clear(a);
-    /* k + K0 over the clamped inputs: the power-of-two table and s */
+    /* k + K0 over the clamped inputs: the power-of-two table and s.
+       exp2, J = 4: no clamp at the top where every input from xsat up keeps
+       (t + K0) 2^Ei in the uint16_t and k + K0 within the 32 entries of P
+       beside the others' (checked below): those inputs' own steps then give
+       the max, as P = 65535 for every k + K0 > tcc (the shift count wraps:
+       0), and one vpminsw fewer per vector */
     X->tcc = 15 - Eo + X->tk0;
+    int nohi = base2 && X->sat && J == 4 && pf_type_max_stored(&G->in) + (X->tk0 << Ei) <= 65535;
+    int64_t xtopc = xtop;
+    tab_val v;
+retry:
     memset(X->tp, 0, sizeof X->tp);
     int64_t kbmin = INT64_MAX, kbmax = INT64_MIN;
-    tab_val v;
     X->tcarry0 = 0;
+    X->tnohi = nohi;
+    xtop = nohi ? pf_type_max_stored(&G->in) : xtopc;
     for (int64_t x = xlo; x <= xtop; x++) {
         tab_eval(G, base2, x, &v);
         int64_t kb = v.hi >> J;
@@ -251,7 +261,11 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
         tab_eval(G, base2, x, &v);
         kbhi = (int64_t)(v.hi >> J) > kbhi ? (int64_t)(v.hi >> J) : kbhi;
     }
-    if (kbmax - kbmin >= 32 || kbhi > X->tcc || kbmax > X->tcc + 1 || X->tcc - kbmin > 31)
+    if (nohi && (kbmax - kbmin >= 32 || kbhi > X->tcc || X->tcc - kbmin > 31)) {
+        nohi = 0;
+        goto retry;
+    }
+    if (kbmax - kbmin >= 32 || kbhi > X->tcc || (kbmax > X->tcc + 1 && !X->tnohi) || X->tcc - kbmin > 31)
         return -2;
     for (int64_t kb = kbmin; kb <= kbmax; kb++) {
         int64_t s = X->tcc - kb + 1;
@@ -259,10 +273,16 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
     }
     X->klo = kbmin - X->tk0;
     X->khi = kbhi - X->tk0;
-    if (X->sat) { /* xsat: f(x) >= the max, and so must the result be */
-        tab_eval(G, base2, xtop, &v);
-        if (v.y != 65535)
-            return -2;
+    if (X->sat) { /* from xsat: f(x) >= the max, and so must the result be */
+        for (int64_t x = X->xsat; x <= xtop; x++) {
+            tab_eval(G, base2, x, &v);
+            if (v.y != 65535 && nohi) {
+                nohi = 0;
+                goto retry;
+            }
+            if (v.y != 65535)
+                return -2;
+        }
     }
     /* the bound: every clamped input, the pre-rounding value (2^16 + M) 2^-s
        against f(x) 2^Eo; with the kernel's and the reduction's parts */
@@ -306,13 +326,21 @@ static void tab_texts(fx_gen *G, int base2)
     int Ei = G->in.exp, Eo = G->out.exp, J = X->tj, F = 16 + J, NJ = 1 << J;
     int smin = (int)(X->tcc - (X->khi + X->tk0)) + 1, smax = (int)(X->tcc - (X->klo + X->tk0)) + 1;
     long long xtop = (long long)(X->sat ? X->xsat : X->xhi);
+    char nohi[160] = "";
+    if (X->tnohi)
+        snprintf(nohi, sizeof nohi,
+                 "; no clamp at the top: from %lld (stored) up, k + %lld > %lld reads P = 65535 (the shift count "
+                 "wraps: 0) and the saturating add gives the max",
+                 (long long)X->xsat, (long long)X->tk0, (long long)X->tcc);
     if (base2)
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x; T = (t + %lld) 2^%d = hi 2^16 + lo from the stored integer biased by %lld 2^%d (exact): "
-                 "j = hi & %d, k + %lld = hi >> %d, r = lo 2^-%d in [0, 2^-%d), t = k + j/%d + r; inputs clamped to "
+                 "j = hi & %d, k + %lld = hi >> %d, r = lo 2^-%d in [0, 2^-%d), t = k + j/%d + r; inputs %s "
                  "[%lld, %lld] (stored)%s",
                  (long long)X->tk0, F, (long long)X->tk0, Ei, NJ - 1, (long long)X->tk0, J, F, J, NJ,
-                 (long long)X->xlo, xtop, X->sat ? ", the last one saturating" : "");
+                 X->tnohi ? (X->loclamp ? "clamped below, computed in" : "computed in") : "clamped to",
+                 (long long)X->xlo, X->tnohi ? (long long)X->xhi : xtop,
+                 X->tnohi ? nohi : X->sat ? ", the last one saturating" : "");
     else
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x log2(e); T = (t + %lld) 2^%d = hi 2^16 + lo in two 16-bit words: u = x + %lld (a uint16_t), "
@@ -342,11 +370,11 @@ static void tab_texts(fx_gen *G, int base2)
              "r uint16_t at 2^-%d; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^%d (floors; c1 = %lld, c2 = %lld); "
              "M = A[j] + ((%s + D[j]) >> %d), saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of "
              "the sum, D carrying A's); result round((2^16 + M) 2^-s), s = %d - k in [%d, %d], as avg(M >> (s - 1), 0) "
-             "(pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the saturating add gives the max "
-             "there, at the clamped top input)%s",
+             "(pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s %s 0: the saturating add gives the max "
+             "there, %s)%s",
              F, F, (long long)X->tc1, (long long)X->tc2,
              J != 6 ? avgt : "pmulhuw(U[j], E)", F - 17, 16 - Eo,
-             smin, smax,
+             smin, smax, X->tnohi ? "<=" : "=", X->tnohi ? "at every saturating input" : "at the clamped top input",
              J != 6 ? "; AVX2: round(M 2^-s) + P as avg(Q, pmulhuw(M, Q)) with Q = 2^(17 - s) for s >= 2 (vpshufb "
                       "table, 0 from s = 18), and 2^15 + avg(M, 0) (saturating) at s = 1: the same values"
                     : "");
@@ -400,7 +428,7 @@ static void bw_clamp_consts(pf_buf *kern, const fx_exp_red *X)
 {
     if (X->loclamp)
         pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
-    if (X->sat)
+    if (X->sat && !X->tnohi)
         pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
 }
 
@@ -410,7 +438,7 @@ static void bw_clamp_load(pf_buf *s1, const fx_exp_red *X)
     pf_put(s1, "        __m512i xc = _mm512_loadu_si512(x + i);\n");
     if (X->loclamp)
         pf_put(s1, "        xc = _mm512_max_epi16(xc, xlo);\n");
-    if (X->sat)
+    if (X->sat && !X->tnohi)
         pf_put(s1, "        xc = _mm512_min_epi16(xc, xhi);\n");
 }
 
@@ -425,7 +453,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         snprintf(w, sizeof w, "%lld: lowest input computed (clamp)", (long long)X->xlo);
         kl = fx_k16(G, X->xlo, w);
     }
-    if (X->sat) {
+    if (X->sat && !X->tnohi) {
         snprintf(w, sizeof w, "%lld: highest input computed (clamp: saturates)", (long long)X->xsat);
         kh = fx_k16(G, X->xsat, w);
     }
@@ -730,14 +758,14 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
               cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21, s16(X->tc1), s16(X->tc2), s16(16 - X->tcc - 2048), s16(X->tcc),
               base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
-              X->loclamp ? s16(X->xlo) : 0, X->sat ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
+              X->loclamp ? s16(X->xlo) : 0, X->sat && !X->tnohi ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
               J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n");
     free(tb5.s);
     pf_buf s1 = {0}, s2 = {0};
     pf_put(&s1, "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
     if (X->loclamp)
         pf_put(&s1, "        xc = _mm256_max_epi16(xc, xlo);\n");
-    if (X->sat)
+    if (X->sat && !X->tnohi)
         pf_put(&s1, "        xc = _mm256_min_epi16(xc, xhi);\n");
     if (base2)
         pf_printf(&s1, "        __m256i tb = _mm256_add_epi16(xc, bias);\n"
@@ -781,7 +809,8 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                  "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),\n"
                  "                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */\n");
     if (X->sat)
-        pf_put(&s2, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */\n");
+        pf_printf(&s2, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s %s 0: %s, the max */\n",
+                  X->tnohi ? "<=" : "=", X->tnohi ? "the saturating inputs" : "the clamped top input");
     static const char *const cv[] = {"hi", "e"};
     fx_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
     free(s1.s);
@@ -799,15 +828,16 @@ static int prep_tab_noclamp(fx_gen *G, int base2, char *err, size_t errlen)
     fx_exp_red *X = &G->exp, save = *X;
     int64_t imin = pf_type_min_stored(&G->in), one = (int64_t)1 << G->in.exp;
     int64_t k0 = imin >= 0 ? 0 : (-imin + one - 1) / one, xtop = X->sat ? X->xsat : X->xhi;
-    /* 16-entry tables first (AVX2 has a loop for them), then 32, then 64;
-       exp2 whose r would have 7 bits with 16 entries: 32 first (r has 6,
-       and the AVX-512 loop reads E from a 64-entry table).  exp: 16
-       entries only; where they miss the bound, so did 32 and 64 for every
-       type pair tried (fixed<15,5..15> -> ufixed<16,-5..17>), and a path
-       no type takes is a path no test runs */
+    /* 16-entry tables first, then 32, then 64.  Also for exp2 whose r has
+       7 bits with 16 entries (fixed<15,11>), where 32 entries would leave
+       6 and let the AVX-512 loop read E from a 64-entry table: the AVX2
+       loop's 32-entry lookups (four vpshufb and three vpblendvb a table)
+       cost more than that saves (fixed<15,11> -> ufixed<16,8>, ns/element
+       AVX2 0.220 -> 0.165, AVX-512 0.078 -> 0.096).  exp: 16 entries only;
+       where they miss the bound, so did 32 and 64 for every type pair
+       tried (fixed<15,5..15> -> ufixed<16,-5..17>), and a path no type
+       takes is a path no test runs */
     int order[3] = {4, 5, 6}, norder = base2 ? 3 : 1;
-    if (base2 && G->in.exp - 4 == 7)
-        order[0] = 5, order[1] = 4;
     for (int oi = 0; oi < norder; oi++) {
         int J = order[oi];
         if (base2 && X->loclamp && xtop + k0 * one <= 65535) {
