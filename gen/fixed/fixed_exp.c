@@ -607,31 +607,42 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         free(te.s);
     }
     if (!cmpl) {
+        if (base2) {
+            uint16_t rv[32];
+            pf_buf t = {0};
+            for (int i = 0; i < 32; i++)
+                rv[i] = X->tp[(i + X->tk0) & 31];
+            tab_table(&t, N, "tpk", rv, 32, "P[(k + K0) & 31] at k & 31 = i (P above rotated by K0)");
+            pf_put(kern, t.s);
+            free(t.s);
+        }
         if (J == 5)
-            pf_printf(kern, "    const __m512i ta = %s_w16(%s_ta), td = %s_w16(%s_td);\n"
-                            "    const __m512i tp = %s_w16(%s_tp);\n",
-                      N, N, N, N, N, N);
+            pf_printf(kern, "    const __m512i ta = %s_w16(%s_ta), td = %s_w16(%s_td);\n", N, N, N, N);
         else if (J == 4)
-            pf_printf(kern, "    const __m512i ta = %s_w16b(%s_ta), td = %s_w16b(%s_td);\n"
-                            "    const __m512i tp = %s_w16(%s_tp);\n",
-                      N, N, N, N, N, N);
+            pf_printf(kern, "    const __m512i ta = %s_w16b(%s_ta), td = %s_w16b(%s_td);\n", N, N, N, N);
         else
             pf_printf(kern, "    const __m512i ta0 = %s_w16(%s_ta), ta1 = %s_w16(%s_ta + 32);\n"
                             "    const __m512i tu0 = %s_w16(%s_tu), tu1 = %s_w16(%s_tu + 32);\n"
-                            "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
-                            "    const __m512i tp = %s_w16(%s_tp);\n",
-                      N, N, N, N, N, N, N, N, N, N, N, N, N, N);
+                            "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n",
+                      N, N, N, N, N, N, N, N, N, N, N, N);
+        if (!base2)
+            pf_printf(kern, "    const __m512i tp = %s_w16(%s_tp);\n", N, N);
         if (X->tet && Ei - J == 6)
             pf_printf(kern, "    const __m512i te0 = %s_w16(%s_te), te1 = %s_w16(%s_te + 32);\n", N, N, N, N);
         else if (X->tet)
             pf_printf(kern, "    const __m512i te = %s_w16(%s_te);\n", N, N);
+        /* exp2: no bias (one vpaddw fewer): hi - K0 2^J = x >> (Ei - J)
+           (arithmetic; the lookups read hi mod 2^J, or mod 32 of tables
+           repeated or of 32 entries, the same), lo = x << (16 - Ei + J), and
+           k = (hi - K0 2^J) >> J reads P rotated by K0 */
+        int64_t cc = base2 ? X->tcc - X->tk0 : X->tcc;
         if (X->tet)
-            pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(X->tcc));
+            pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(cc));
         else
         pf_printf(kern, "    const __m512i c1 = _mm512_set1_epi16(%lld), c2 = _mm512_set1_epi16(%lld), cc = _mm512_set1_epi16(%lld);\n",
-                  s16(X->tc1), s16(X->tc2), s16(X->tcc));
+                  s16(X->tc1), s16(X->tc2), s16(cc));
         if (base2)
-            pf_printf(kern, "    const __m512i bias = _mm512_set1_epi16(%lld);\n", s16(X->tk0 << Ei));
+            pf_printf(kern, "    const __m512i tpk = %s_w16(%s_tpk); /* P at k = (hi - K0 2^J) >> J */\n", N, N);
         else
             pf_printf(kern, "    const __m512i off = _mm512_set1_epi16(%lld), l1 = _mm512_set1_epi16(%lld), l2 = _mm512_set1_epi16(%lld),\n"
                             "                  cl = _mm512_set1_epi16(%lld), one = _mm512_set1_epi16(1);\n",
@@ -640,16 +651,13 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_buf s1 = {0}, s2 = {0};
         bw_clamp_load(&s1, X);
         if (base2 && X->tet && Ei - J == 6)
-            pf_printf(&s1, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                            "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutex2var_epi16(te0, tb, te1);\n",
+            pf_printf(&s1, "        __m512i hi = _mm512_srai_epi16(xc, %d), e = _mm512_permutex2var_epi16(te0, xc, te1);\n",
                       Ei - J);
         else if (base2 && X->tet)
-            pf_printf(&s1, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                            "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
+            pf_printf(&s1, "        __m512i hi = _mm512_srai_epi16(xc, %d), e = _mm512_permutexvar_epi16(xc, te);\n",
                       Ei - J);
         else if (base2)
-            pf_printf(&s1, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                            "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
+            pf_printf(&s1, "        __m512i hi = _mm512_srai_epi16(xc, %d), lo = _mm512_slli_epi16(xc, %d);\n",
                       Ei - J, 16 - Ei + J);
         else
             pf_put(&s1, "        __m512i u = _mm512_add_epi16(xc, off);\n"
@@ -664,15 +672,18 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                             "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
                             "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));\n"
                             "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
-                            "        __m512i kb = _mm512_srli_epi16(hi, %d);\n",
-                      F - 17, J);
+                            "        __m512i kb = _mm512_sr%si_epi16(hi, %d);\n",
+                      F - 17, base2 ? "a" : "l", J);
         else
             pf_put(&s2, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
                          "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
                          "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
                          "        __m512i kb = _mm512_srli_epi16(hi, 6);\n");
-        pf_put(&s2, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
-                     "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
+        if (base2 && J == 6)
+            memcpy(strstr(s2.s, "kb = _mm512_srli_epi16(hi, 6)") + 12, "srai", 4);
+        pf_printf(&s2, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
+                       "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, %s));\n",
+                  base2 ? "tpk" : "tp");
         static const char *const cv[] = {"hi", "e"};
         fx_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 2, "_mm512_storeu_si512(y + i - 32, r);", N);
         free(s1.s);
@@ -741,7 +752,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    kc[8] = _mm256_set1_epi16(%lld); /* c2 */\n"
               "    kc[9] = _mm256_set1_epi16(%lld); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */\n"
               "    kc[10] = _mm256_set1_epi16(%lld); /* kb at s = 1 */\n"
-              "    kc[11] = _mm256_set1_epi16(%lld); /* off, or the bias (exp2) */\n"
+              "    kc[11] = _mm256_set1_epi16(%lld); /* off (exp2: none, unused) */\n"
               "    kc[12] = _mm256_set1_epi16(%lld); /* L1 */\n"
               "    kc[13] = _mm256_set1_epi16(%lld); /* L2 */\n"
               "    kc[14] = _mm256_set1_epi16(%lld); /* Cl */\n"
@@ -755,11 +766,12 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    const __m256i jmask = kc[17];\n%s"
               "    const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,\n"
               "                                          0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);\n"
-              "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
-              cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21, s16(X->tc1), s16(X->tc2), s16(16 - X->tcc - 2048), s16(X->tcc),
-              base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
+              "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi%s;\n",
+              cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21, s16(X->tc1), s16(X->tc2),
+              s16(16 - X->tcc - 2048 + (base2 ? X->tk0 : 0)), s16(base2 ? X->tcc - X->tk0 : X->tcc),
+              base2 ? 0 : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
               X->loclamp ? s16(X->xlo) : 0, X->sat && !X->tnohi ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
-              J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n");
+              J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n", base2 ? ", (void)bias" : "");
     free(tb5.s);
     pf_buf s1 = {0}, s2 = {0};
     pf_put(&s1, "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
@@ -767,9 +779,8 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(&s1, "        xc = _mm256_max_epi16(xc, xlo);\n");
     if (X->sat && !X->tnohi)
         pf_put(&s1, "        xc = _mm256_min_epi16(xc, xhi);\n");
-    if (base2)
-        pf_printf(&s1, "        __m256i tb = _mm256_add_epi16(xc, bias);\n"
-                        "        __m256i hi = _mm256_srli_epi16(tb, %d), lo = _mm256_slli_epi16(tb, %d);\n",
+    if (base2) /* no bias: hi - K0 2^J, k and its constants as in the AVX-512 loop */
+        pf_printf(&s1, "        __m256i hi = _mm256_srai_epi16(xc, %d), lo = _mm256_slli_epi16(xc, %d);\n",
                   Ei - J, 16 - Ei + J);
     else {
         pf_put(&s1, "        __m256i u = _mm256_add_epi16(xc, off);\n"
@@ -800,6 +811,8 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                      "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));\n"
                      "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));\n"
                      "        __m256i kb = _mm256_srli_epi16(hi, 5);\n");
+    if (base2) /* k, not k + K0 */
+        memcpy(strstr(s2.s, "kb = _mm256_srli_epi16(hi, ") + 12, "srai", 4);
     pf_put(&s2, "        /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at\n"
                  "           e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in\n"
                  "           [8, 15] for the low byte, where the table holds 0) */\n"

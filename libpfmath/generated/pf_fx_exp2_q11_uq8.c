@@ -301,10 +301,16 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
+/* P[(k + K0) & 31] at k & 31 = i (P above rotated by K0) */
+static const uint32_t pf_exp2_q11_uq8_tpk[32] = {
+    256, 512, 1024, 2048, 4096, 8192, 16384, 32768,
+    65535, 65535, 65535, 65535, 65535, 65535, 65535, 65535,
+    0, 0, 0, 0, 0, 0, 0, 1,
+    1, 2, 4, 8, 16, 32, 64, 128,
+};
     const __m512i ta = pf_exp2_q11_uq8_w16b(pf_exp2_q11_uq8_ta), td = pf_exp2_q11_uq8_w16b(pf_exp2_q11_uq8_td);
-    const __m512i tp = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tp);
-    const __m512i c1 = _mm512_set1_epi16(-20116), c2 = _mm512_set1_epi16(1004), cc = _mm512_set1_epi16(23);
-    const __m512i bias = _mm512_set1_epi16(-32768);
+    const __m512i c1 = _mm512_set1_epi16(-20116), c2 = _mm512_set1_epi16(1004), cc = _mm512_set1_epi16(7);
+    const __m512i tpk = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tpk); /* P at k = (hi - K0 2^J) >> J */
     size_t i = 0;
     if (n >= 32) {
         /* software pipelined: a pass runs the first steps of block i and the
@@ -312,8 +318,7 @@ static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restri
         __m512i p_hi, p_e;
         {
             __m512i xc = _mm512_loadu_si512(x + i);
-            __m512i tb = _mm512_add_epi16(xc, bias);
-            __m512i hi = _mm512_srli_epi16(tb, 7), lo = _mm512_slli_epi16(tb, 9);
+            __m512i hi = _mm512_srai_epi16(xc, 7), lo = _mm512_slli_epi16(xc, 9);
             __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
             p_hi = hi, p_e = e;
         }
@@ -321,8 +326,7 @@ static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restri
             __m512i n_hi, n_e;
             {
                 __m512i xc = _mm512_loadu_si512(x + i);
-                __m512i tb = _mm512_add_epi16(xc, bias);
-                __m512i hi = _mm512_srli_epi16(tb, 7), lo = _mm512_slli_epi16(tb, 9);
+                __m512i hi = _mm512_srai_epi16(xc, 7), lo = _mm512_slli_epi16(xc, 9);
                 __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
                 n_hi = hi, n_e = e;
             }
@@ -332,9 +336,9 @@ static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restri
                 __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
                 v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
                 __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
-                __m512i kb = _mm512_srli_epi16(hi, 4);
+                __m512i kb = _mm512_srai_epi16(hi, 4);
                 __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
-                r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
+                r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tpk));
                 _mm512_storeu_si512(y + i - 32, r);
             }
             p_hi = n_hi, p_e = n_e;
@@ -345,9 +349,9 @@ static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restri
             __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
             v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
             __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
-            __m512i kb = _mm512_srli_epi16(hi, 4);
+            __m512i kb = _mm512_srai_epi16(hi, 4);
             __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
-            r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));
+            r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tpk));
             _mm512_storeu_si512(y + i - 32, r);
         }
     }
@@ -383,9 +387,9 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
     kc[6] = _mm256_set1_epi16(-32768);
     kc[7] = _mm256_set1_epi16(-20116); /* c1 */
     kc[8] = _mm256_set1_epi16(1004); /* c2 */
-    kc[9] = _mm256_set1_epi16(-2055); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
-    kc[10] = _mm256_set1_epi16(23); /* kb at s = 1 */
-    kc[11] = _mm256_set1_epi16(-32768); /* off, or the bias (exp2) */
+    kc[9] = _mm256_set1_epi16(-2039); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
+    kc[10] = _mm256_set1_epi16(7); /* kb at s = 1 */
+    kc[11] = _mm256_set1_epi16(0); /* off (exp2: none, unused) */
     kc[12] = _mm256_set1_epi16(0); /* L1 */
     kc[13] = _mm256_set1_epi16(0); /* L2 */
     kc[14] = _mm256_set1_epi16(0); /* Cl */
@@ -399,7 +403,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
     const __m256i jmask = kc[17];
     const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
                                           0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
-    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
+    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi, (void)bias;
     size_t i = 0;
     if (n >= 16) {
         /* software pipelined: a pass runs the first steps of block i and the
@@ -407,8 +411,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
         __m256i p_hi, p_e;
         {
             __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
-            __m256i tb = _mm256_add_epi16(xc, bias);
-            __m256i hi = _mm256_srli_epi16(tb, 7), lo = _mm256_slli_epi16(tb, 9);
+            __m256i hi = _mm256_srai_epi16(xc, 7), lo = _mm256_slli_epi16(xc, 9);
             __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
             p_hi = hi, p_e = e;
         }
@@ -416,8 +419,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
             __m256i n_hi, n_e;
             {
                 __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
-                __m256i tb = _mm256_add_epi16(xc, bias);
-                __m256i hi = _mm256_srli_epi16(tb, 7), lo = _mm256_slli_epi16(tb, 9);
+                __m256i hi = _mm256_srai_epi16(xc, 7), lo = _mm256_slli_epi16(xc, 9);
                 __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
                 n_hi = hi, n_e = e;
             }
@@ -428,7 +430,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
                 __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
                 v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
                 __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
-                __m256i kb = _mm256_srli_epi16(hi, 4);
+                __m256i kb = _mm256_srai_epi16(hi, 4);
                 /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
                    e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
                    [8, 15] for the low byte, where the table holds 0) */
@@ -449,7 +451,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
             __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
             v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
             __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
-            __m256i kb = _mm256_srli_epi16(hi, 4);
+            __m256i kb = _mm256_srai_epi16(hi, 4);
             /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
                e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
                [8, 15] for the low byte, where the table holds 0) */

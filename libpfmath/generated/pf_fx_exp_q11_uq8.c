@@ -404,7 +404,7 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
     kc[8] = _mm256_set1_epi16(1004); /* c2 */
     kc[9] = _mm256_set1_epi16(-2050); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
     kc[10] = _mm256_set1_epi16(18); /* kb at s = 1 */
-    kc[11] = _mm256_set1_epi16(15586); /* off, or the bias (exp2) */
+    kc[11] = _mm256_set1_epi16(15586); /* off (exp2: none, unused) */
     kc[12] = _mm256_set1_epi16(738); /* L1 */
     kc[13] = _mm256_set1_epi16(-22291); /* L2 */
     kc[14] = _mm256_set1_epi16(21584); /* Cl */
