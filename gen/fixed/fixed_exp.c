@@ -747,11 +747,11 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));\n"
               "    kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */\n"
               "    kc[5] = _mm256_set1_epi16(0x101);\n"
-              "    kc[6] = _mm256_set1_epi16(-32768);\n"
+              "%s"
               "    kc[7] = _mm256_set1_epi16(%lld); /* c1 */\n"
               "    kc[8] = _mm256_set1_epi16(%lld); /* c2 */\n"
               "    kc[9] = _mm256_set1_epi16(%lld); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */\n"
-              "    kc[10] = _mm256_set1_epi16(%lld); /* kb at s = 1 */\n"
+              "    kc[10] = _mm256_set1_epi16(%lld); /* kb at s = %d */\n"
               "    kc[11] = _mm256_set1_epi16(%lld); /* off (exp2: none, unused) */\n"
               "    kc[12] = _mm256_set1_epi16(%lld); /* L1 */\n"
               "    kc[13] = _mm256_set1_epi16(%lld); /* L2 */\n"
@@ -767,8 +767,13 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,\n"
               "                                          0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);\n"
               "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi%s;\n",
-              cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21, s16(X->tc1), s16(X->tc2),
-              s16(16 - X->tcc - 2048 + (base2 ? X->tk0 : 0)), s16(base2 ? X->tcc - X->tk0 : X->tcc),
+              cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21,
+              X->sat && !X->tnohi ? "    kc[6] = _mm256_setr_epi8(0, -1, 0, 0, 0, 0, 0, 0, -128, -1, 0, 0, 0, 0, 0, 0,\n"
+                                    "                             0, -1, 0, 0, 0, 0, 0, 0, -128, -1, 0, 0, 0, 0, 0, 0); /* H's bytes */\n"
+                                  : "    kc[6] = _mm256_set1_epi16(-32768);\n",
+              s16(X->tc1), s16(X->tc2),
+              s16(16 - X->tcc - 2048 + (base2 ? X->tk0 : 0)),
+              s16((base2 ? X->tcc - X->tk0 : X->tcc) - (X->sat && !X->tnohi)), X->sat && !X->tnohi ? 2 : 1,
               base2 ? 0 : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
               X->loclamp ? s16(X->xlo) : 0, X->sat && !X->tnohi ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
               J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n", base2 ? ", (void)bias" : "");
@@ -818,10 +823,19 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                  "           [8, 15] for the low byte, where the table holds 0) */\n"
                  "        __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);\n"
                  "        __m256i qq = _mm256_shuffle_epi8(pw, qi);\n"
-                 "        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));\n"
-                 "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),\n"
-                 "                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */\n");
-    if (X->sat)
+                 "        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));\n");
+    /* clamped at the top: s = 1 and s = 0 (the clamped top input) in one
+       select, 2^15 + avg(M, 0) and 65535 as avg(M, 0) + H (saturating), H =
+       2^15 or 65535 by a vpshufb of a byte table on the same index (e = 16:
+       bytes 0 and 8, e = 17: bytes 1 and 9); one vpor fewer */
+    int s01 = X->sat && !X->tnohi;
+    if (s01)
+        pf_put(&s2, "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), _mm256_shuffle_epi8(h15, qi)),\n"
+                     "                               _mm256_cmpgt_epi16(kb, k1)); /* s = 1: 2^15 + avg(M, 0); s = 0: the max */\n");
+    else
+        pf_put(&s2, "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),\n"
+                     "                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */\n");
+    if (X->sat && !s01)
         pf_printf(&s2, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s %s 0: %s, the max */\n",
                   X->tnohi ? "<=" : "=", X->tnohi ? "the saturating inputs" : "the clamped top input");
     static const char *const cv[] = {"hi", "e"};
