@@ -63,14 +63,15 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
  * avg(M >> (s - 1), 0) + 2^(16 - s).
  * J = 4 (16-entry tables) first: one vpermw per table on AVX-512BW, two
  * vpshufb on AVX2; 2^(j/16) E is avg(E, pmulhuw(A[j], E)) (A = (2^(j/16) -
- * 1) 2^16, so no table of 2^(j/16) itself).  exp2 whose r would have 7
- * bits takes J = 5 (32 entries: one vpermw; four vpshufb on AVX2): r has
- * 6, and the AVX-512 loop reads E from a 64-entry table (vpermi2w) where
- * the polynomial took four steps.  exp2: J = 6 (64-entry tables,
- * vpermi2w, a table U[j] = 2^(j/64) 2^15 and pmulhuw(U[j], E)) where J = 4
- * and 5 miss the bound (it has no AVX2 loop); exp: J = 4 only (see
- * prep_tab_noclamp).  The vector loops are software pipelined
- * (fx_pipe_loop).
+ * 1) 2^16, so no table of 2^(j/16) itself).  exp2: J = 5 (32 entries:
+ * one vpermw; four vpshufb and three vpblendvb on AVX2; with r of 6 bits
+ * the AVX-512 loop reads E from a 64-entry table, vpermi2w) where J = 4
+ * misses the bound, and J = 6 (64-entry tables, vpermi2w, a table U[j] =
+ * 2^(j/64) 2^15 and pmulhuw(U[j], E)) where 5 does too (it has no AVX2
+ * loop); exp: J = 4 only (see prep_tab_noclamp).  exp2 with J = 4: no
+ * clamp at the top where the inputs above XSAT fit (prep_tab), and the
+ * loops take hi and lo from x itself (no bias add; emit_tab).  The vector
+ * loops are software pipelined (fx_pipe_loop).
  * Every step is a 16-bit word; exp's x log2(e) to 2^-F (the error model
  * needs t to ~2^-19) is a 16x16 -> 32-bit product from a low/high pair,
  * plus the fraction's high half and one carry.  The error bound is taken
