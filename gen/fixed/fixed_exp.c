@@ -153,6 +153,10 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
         X->td[j] = (uint16_t)scaled_int(b, F - 17, MPFR_RNDN);
     }
     mpfr_clear(b);
+    if (X->ta[0] != 0) { /* 2^0 - 1: the AVX2 loop's lookups rely on it */
+        mpfr_clear(a);
+        return -2;
+    }
     /* 2^r - 1 on [0, 2^-J]: minimax (absolute), p(0) = 1 */
     fit_problem pb;
     memset(&pb, 0, sizeof pb);
@@ -777,7 +781,9 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               s16((base2 ? X->tcc - X->tk0 : X->tcc) - (X->sat && !X->tnohi)), X->sat && !X->tnohi ? 2 : 1,
               base2 ? 0 : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
               X->loclamp ? s16(X->xlo) : 0, X->sat && !X->tnohi ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
-              J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n", base2 ? ", (void)bias" : "");
+              J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n",
+              base2 ? (J == 4 ? ", (void)bias, (void)jdup, (void)hib" : ", (void)bias")
+                    : (J == 4 ? ", (void)jdup, (void)hib" : ""));
     free(tb5.s);
     pf_buf s1 = {0}, s2 = {0};
     pf_put(&s1, "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
@@ -801,11 +807,16 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(&s1, "        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);\n");
     }
     pf_put(&s1, "        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));\n");
+    /* J = 4: A's low byte by j in the low byte of its index word, its high
+       byte by j in the high byte (j << 8), merged by vpor: the other byte of
+       each reads entry 0, and A[0] = 0; D by the second index, its byte
+       shifted down (a vpsllw and a vpor where a vpshufb and a vpblendvb
+       were: AVX2 exp2 0.153 -> 0.145 ns/element) */
     if (J == 4)
-        pf_put(&s2, "        __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */\n"
-                     "        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);\n"
+        pf_put(&s2, "        __m256i jl = _mm256_and_si256(hi, jmask), jh = _mm256_slli_epi16(jl, 8); /* j, j << 8 */\n"
+                     "        __m256i a = _mm256_or_si256(_mm256_shuffle_epi8(al, jl), _mm256_shuffle_epi8(ah, jh));\n"
                      "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
-                     "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));\n"
+                     "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jh), 8));\n"
                      "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));\n"
                      "        __m256i kb = _mm256_srli_epi16(hi, 4);\n");
     else

@@ -403,7 +403,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
     const __m256i jmask = kc[17];
     const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
                                           0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
-    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi, (void)bias;
+    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi, (void)bias, (void)jdup, (void)hib;
     size_t i = 0;
     if (n >= 16) {
         /* software pipelined: a pass runs the first steps of block i and the
@@ -425,10 +425,10 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
             }
             {
                 __m256i hi = p_hi, e = p_e;
-                __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
-                __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
+                __m256i jl = _mm256_and_si256(hi, jmask), jh = _mm256_slli_epi16(jl, 8); /* j, j << 8 */
+                __m256i a = _mm256_or_si256(_mm256_shuffle_epi8(al, jl), _mm256_shuffle_epi8(ah, jh));
                 __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-                v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
+                v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jh), 8));
                 __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
                 __m256i kb = _mm256_srai_epi16(hi, 4);
                 /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
@@ -446,10 +446,10 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
         }
         {
             __m256i hi = p_hi, e = p_e;
-            __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
-            __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
+            __m256i jl = _mm256_and_si256(hi, jmask), jh = _mm256_slli_epi16(jl, 8); /* j, j << 8 */
+            __m256i a = _mm256_or_si256(_mm256_shuffle_epi8(al, jl), _mm256_shuffle_epi8(ah, jh));
             __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-            v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
+            v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jh), 8));
             __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
             __m256i kb = _mm256_srai_epi16(hi, 4);
             /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
