@@ -63,14 +63,15 @@ static int64_t t16(const fx_gen *G, int64_t xc, int base2)
  * avg(M >> (s - 1), 0) + 2^(16 - s).
  * J = 4 (16-entry tables) first: one vpermw per table on AVX-512BW, two
  * vpshufb on AVX2; 2^(j/16) E is avg(E, pmulhuw(A[j], E)) (A = (2^(j/16) -
- * 1) 2^16, so no table of 2^(j/16) itself).  exp2 whose r would have 7
- * bits takes J = 5 (32 entries: one vpermw; four vpshufb on AVX2): r has
- * 6, and the AVX-512 loop reads E from a 64-entry table (vpermi2w) where
- * the polynomial took four steps.  exp2: J = 6 (64-entry tables,
- * vpermi2w, a table U[j] = 2^(j/64) 2^15 and pmulhuw(U[j], E)) where J = 4
- * and 5 miss the bound (it has no AVX2 loop); exp: J = 4 only (see
- * prep_tab_noclamp).  The vector loops are software pipelined
- * (fx_pipe_loop).
+ * 1) 2^16, so no table of 2^(j/16) itself).  exp2: J = 5 (32 entries:
+ * one vpermw; four vpshufb and three vpblendvb on AVX2; with r of 6 bits
+ * the AVX-512 loop reads E from a 64-entry table, vpermi2w) where J = 4
+ * misses the bound, and J = 6 (64-entry tables, vpermi2w, a table U[j] =
+ * 2^(j/64) 2^15 and pmulhuw(U[j], E)) where 5 does too (it has no AVX2
+ * loop); exp: J = 4 only (see prep_tab_noclamp).  exp2 with J = 4: no
+ * clamp at the top where the inputs above XSAT fit (prep_tab), and the
+ * loops take hi and lo from x itself (no bias add; emit_tab).  The vector
+ * loops are software pipelined (fx_pipe_loop).
  * Every step is a 16-bit word; exp's x log2(e) to 2^-F (the error model
  * needs t to ~2^-19) is a 16x16 -> 32-bit product from a low/high pair,
  * plus the fraction's high half and one carry.  The error bound is taken
@@ -152,6 +153,10 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
         X->td[j] = (uint16_t)scaled_int(b, F - 17, MPFR_RNDN);
     }
     mpfr_clear(b);
+    if (X->ta[0] != 0) { /* 2^0 - 1: the AVX2 loop's lookups rely on it */
+        mpfr_clear(a);
+        return -2;
+    }
     /* 2^r - 1 on [0, 2^-J]: minimax (absolute), p(0) = 1 */
     fit_problem pb;
     memset(&pb, 0, sizeof pb);
@@ -229,12 +234,22 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
         }
     }
     mpfr_clear(a);
-    /* k + K0 over the clamped inputs: the power-of-two table and s */
+    /* k + K0 over the clamped inputs: the power-of-two table and s.
+       exp2, J = 4: no clamp at the top where every input from xsat up keeps
+       (t + K0) 2^Ei in the uint16_t and k + K0 within the 32 entries of P
+       beside the others' (checked below): those inputs' own steps then give
+       the max, as P = 65535 for every k + K0 > tcc (the shift count wraps:
+       0), and one vpminsw fewer per vector */
     X->tcc = 15 - Eo + X->tk0;
+    int nohi = base2 && X->sat && J == 4 && pf_type_max_stored(&G->in) + (X->tk0 << Ei) <= 65535;
+    int64_t xtopc = xtop;
+    tab_val v;
+retry:
     memset(X->tp, 0, sizeof X->tp);
     int64_t kbmin = INT64_MAX, kbmax = INT64_MIN;
-    tab_val v;
     X->tcarry0 = 0;
+    X->tnohi = nohi;
+    xtop = nohi ? pf_type_max_stored(&G->in) : xtopc;
     for (int64_t x = xlo; x <= xtop; x++) {
         tab_eval(G, base2, x, &v);
         int64_t kb = v.hi >> J;
@@ -251,7 +266,11 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
         tab_eval(G, base2, x, &v);
         kbhi = (int64_t)(v.hi >> J) > kbhi ? (int64_t)(v.hi >> J) : kbhi;
     }
-    if (kbmax - kbmin >= 32 || kbhi > X->tcc || kbmax > X->tcc + 1 || X->tcc - kbmin > 31)
+    if (nohi && (kbmax - kbmin >= 32 || kbhi > X->tcc || X->tcc - kbmin > 31)) {
+        nohi = 0;
+        goto retry;
+    }
+    if (kbmax - kbmin >= 32 || kbhi > X->tcc || (kbmax > X->tcc + 1 && !X->tnohi) || X->tcc - kbmin > 31)
         return -2;
     for (int64_t kb = kbmin; kb <= kbmax; kb++) {
         int64_t s = X->tcc - kb + 1;
@@ -259,10 +278,16 @@ static int prep_tab(fx_gen *G, int base2, int J, char *err, size_t errlen)
     }
     X->klo = kbmin - X->tk0;
     X->khi = kbhi - X->tk0;
-    if (X->sat) { /* xsat: f(x) >= the max, and so must the result be */
-        tab_eval(G, base2, xtop, &v);
-        if (v.y != 65535)
-            return -2;
+    if (X->sat) { /* from xsat: f(x) >= the max, and so must the result be */
+        for (int64_t x = X->xsat; x <= xtop; x++) {
+            tab_eval(G, base2, x, &v);
+            if (v.y != 65535 && nohi) {
+                nohi = 0;
+                goto retry;
+            }
+            if (v.y != 65535)
+                return -2;
+        }
     }
     /* the bound: every clamped input, the pre-rounding value (2^16 + M) 2^-s
        against f(x) 2^Eo; with the kernel's and the reduction's parts */
@@ -306,13 +331,21 @@ static void tab_texts(fx_gen *G, int base2)
     int Ei = G->in.exp, Eo = G->out.exp, J = X->tj, F = 16 + J, NJ = 1 << J;
     int smin = (int)(X->tcc - (X->khi + X->tk0)) + 1, smax = (int)(X->tcc - (X->klo + X->tk0)) + 1;
     long long xtop = (long long)(X->sat ? X->xsat : X->xhi);
+    char nohi[160] = "";
+    if (X->tnohi)
+        snprintf(nohi, sizeof nohi,
+                 "; no clamp at the top: from %lld (stored) up, k + %lld > %lld reads P = 65535 (the shift count "
+                 "wraps: 0) and the saturating add gives the max",
+                 (long long)X->xsat, (long long)X->tk0, (long long)X->tcc);
     if (base2)
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x; T = (t + %lld) 2^%d = hi 2^16 + lo from the stored integer biased by %lld 2^%d (exact): "
-                 "j = hi & %d, k + %lld = hi >> %d, r = lo 2^-%d in [0, 2^-%d), t = k + j/%d + r; inputs clamped to "
+                 "j = hi & %d, k + %lld = hi >> %d, r = lo 2^-%d in [0, 2^-%d), t = k + j/%d + r; inputs %s "
                  "[%lld, %lld] (stored)%s",
                  (long long)X->tk0, F, (long long)X->tk0, Ei, NJ - 1, (long long)X->tk0, J, F, J, NJ,
-                 (long long)X->xlo, xtop, X->sat ? ", the last one saturating" : "");
+                 X->tnohi ? (X->loclamp ? "clamped below, computed in" : "computed in") : "clamped to",
+                 (long long)X->xlo, X->tnohi ? (long long)X->xhi : xtop,
+                 X->tnohi ? nohi : X->sat ? ", the last one saturating" : "");
     else
         snprintf(G->red_text, sizeof G->red_text,
                  "t = x log2(e); T = (t + %lld) 2^%d = hi 2^16 + lo in two 16-bit words: u = x + %lld (a uint16_t), "
@@ -342,11 +375,11 @@ static void tab_texts(fx_gen *G, int base2)
              "r uint16_t at 2^-%d; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^%d (floors; c1 = %lld, c2 = %lld); "
              "M = A[j] + ((%s + D[j]) >> %d), saturated at 65535 (2^f 2^16 = 2^16 + M: one rounding of "
              "the sum, D carrying A's); result round((2^16 + M) 2^-s), s = %d - k in [%d, %d], as avg(M >> (s - 1), 0) "
-             "(pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s = 0: the saturating add gives the max "
-             "there, at the clamped top input)%s",
+             "(pavgw) + P[k] (P = 2^(16 - s), 1 at s = 17, 0 beyond, 65535 at s %s 0: the saturating add gives the max "
+             "there, %s)%s",
              F, F, (long long)X->tc1, (long long)X->tc2,
              J != 6 ? avgt : "pmulhuw(U[j], E)", F - 17, 16 - Eo,
-             smin, smax,
+             smin, smax, X->tnohi ? "<=" : "=", X->tnohi ? "at every saturating input" : "at the clamped top input",
              J != 6 ? "; AVX2: round(M 2^-s) + P as avg(Q, pmulhuw(M, Q)) with Q = 2^(17 - s) for s >= 2 (vpshufb "
                       "table, 0 from s = 18), and 2^15 + avg(M, 0) (saturating) at s = 1: the same values"
                     : "");
@@ -400,7 +433,7 @@ static void bw_clamp_consts(pf_buf *kern, const fx_exp_red *X)
 {
     if (X->loclamp)
         pf_printf(kern, "    const __m512i xlo = _mm512_set1_epi16(%lld);\n", (long long)X->xlo);
-    if (X->sat)
+    if (X->sat && !X->tnohi)
         pf_printf(kern, "    const __m512i xhi = _mm512_set1_epi16(%lld);\n", (long long)X->xsat);
 }
 
@@ -410,7 +443,7 @@ static void bw_clamp_load(pf_buf *s1, const fx_exp_red *X)
     pf_put(s1, "        __m512i xc = _mm512_loadu_si512(x + i);\n");
     if (X->loclamp)
         pf_put(s1, "        xc = _mm512_max_epi16(xc, xlo);\n");
-    if (X->sat)
+    if (X->sat && !X->tnohi)
         pf_put(s1, "        xc = _mm512_min_epi16(xc, xhi);\n");
 }
 
@@ -425,7 +458,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         snprintf(w, sizeof w, "%lld: lowest input computed (clamp)", (long long)X->xlo);
         kl = fx_k16(G, X->xlo, w);
     }
-    if (X->sat) {
+    if (X->sat && !X->tnohi) {
         snprintf(w, sizeof w, "%lld: highest input computed (clamp: saturates)", (long long)X->xsat);
         kh = fx_k16(G, X->xsat, w);
     }
@@ -579,31 +612,42 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         free(te.s);
     }
     if (!cmpl) {
+        if (base2) {
+            uint16_t rv[32];
+            pf_buf t = {0};
+            for (int i = 0; i < 32; i++)
+                rv[i] = X->tp[(i + X->tk0) & 31];
+            tab_table(&t, N, "tpk", rv, 32, "P[(k + K0) & 31] at k & 31 = i (P above rotated by K0)");
+            pf_put(kern, t.s);
+            free(t.s);
+        }
         if (J == 5)
-            pf_printf(kern, "    const __m512i ta = %s_w16(%s_ta), td = %s_w16(%s_td);\n"
-                            "    const __m512i tp = %s_w16(%s_tp);\n",
-                      N, N, N, N, N, N);
+            pf_printf(kern, "    const __m512i ta = %s_w16(%s_ta), td = %s_w16(%s_td);\n", N, N, N, N);
         else if (J == 4)
-            pf_printf(kern, "    const __m512i ta = %s_w16b(%s_ta), td = %s_w16b(%s_td);\n"
-                            "    const __m512i tp = %s_w16(%s_tp);\n",
-                      N, N, N, N, N, N);
+            pf_printf(kern, "    const __m512i ta = %s_w16b(%s_ta), td = %s_w16b(%s_td);\n", N, N, N, N);
         else
             pf_printf(kern, "    const __m512i ta0 = %s_w16(%s_ta), ta1 = %s_w16(%s_ta + 32);\n"
                             "    const __m512i tu0 = %s_w16(%s_tu), tu1 = %s_w16(%s_tu + 32);\n"
-                            "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n"
-                            "    const __m512i tp = %s_w16(%s_tp);\n",
-                      N, N, N, N, N, N, N, N, N, N, N, N, N, N);
+                            "    const __m512i td0 = %s_w16(%s_td), td1 = %s_w16(%s_td + 32);\n",
+                      N, N, N, N, N, N, N, N, N, N, N, N);
+        if (!base2)
+            pf_printf(kern, "    const __m512i tp = %s_w16(%s_tp);\n", N, N);
         if (X->tet && Ei - J == 6)
             pf_printf(kern, "    const __m512i te0 = %s_w16(%s_te), te1 = %s_w16(%s_te + 32);\n", N, N, N, N);
         else if (X->tet)
             pf_printf(kern, "    const __m512i te = %s_w16(%s_te);\n", N, N);
+        /* exp2: no bias (one vpaddw fewer): hi - K0 2^J = x >> (Ei - J)
+           (arithmetic; the lookups read hi mod 2^J, or mod 32 of tables
+           repeated or of 32 entries, the same), lo = x << (16 - Ei + J), and
+           k = (hi - K0 2^J) >> J reads P rotated by K0 */
+        int64_t cc = base2 ? X->tcc - X->tk0 : X->tcc;
         if (X->tet)
-            pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(X->tcc));
+            pf_printf(kern, "    const __m512i cc = _mm512_set1_epi16(%lld);\n", s16(cc));
         else
         pf_printf(kern, "    const __m512i c1 = _mm512_set1_epi16(%lld), c2 = _mm512_set1_epi16(%lld), cc = _mm512_set1_epi16(%lld);\n",
-                  s16(X->tc1), s16(X->tc2), s16(X->tcc));
+                  s16(X->tc1), s16(X->tc2), s16(cc));
         if (base2)
-            pf_printf(kern, "    const __m512i bias = _mm512_set1_epi16(%lld);\n", s16(X->tk0 << Ei));
+            pf_printf(kern, "    const __m512i tpk = %s_w16(%s_tpk); /* P at k = (hi - K0 2^J) >> J */\n", N, N);
         else
             pf_printf(kern, "    const __m512i off = _mm512_set1_epi16(%lld), l1 = _mm512_set1_epi16(%lld), l2 = _mm512_set1_epi16(%lld),\n"
                             "                  cl = _mm512_set1_epi16(%lld), one = _mm512_set1_epi16(1);\n",
@@ -612,16 +656,13 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_buf s1 = {0}, s2 = {0};
         bw_clamp_load(&s1, X);
         if (base2 && X->tet && Ei - J == 6)
-            pf_printf(&s1, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                            "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutex2var_epi16(te0, tb, te1);\n",
+            pf_printf(&s1, "        __m512i hi = _mm512_srai_epi16(xc, %d), e = _mm512_permutex2var_epi16(te0, xc, te1);\n",
                       Ei - J);
         else if (base2 && X->tet)
-            pf_printf(&s1, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                            "        __m512i hi = _mm512_srli_epi16(tb, %d), e = _mm512_permutexvar_epi16(tb, te);\n",
+            pf_printf(&s1, "        __m512i hi = _mm512_srai_epi16(xc, %d), e = _mm512_permutexvar_epi16(xc, te);\n",
                       Ei - J);
         else if (base2)
-            pf_printf(&s1, "        __m512i tb = _mm512_add_epi16(xc, bias);\n"
-                            "        __m512i hi = _mm512_srli_epi16(tb, %d), lo = _mm512_slli_epi16(tb, %d);\n",
+            pf_printf(&s1, "        __m512i hi = _mm512_srai_epi16(xc, %d), lo = _mm512_slli_epi16(xc, %d);\n",
                       Ei - J, 16 - Ei + J);
         else
             pf_put(&s1, "        __m512i u = _mm512_add_epi16(xc, off);\n"
@@ -636,15 +677,18 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                             "        __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));\n"
                             "        v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));\n"
                             "        __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, %d));\n"
-                            "        __m512i kb = _mm512_srli_epi16(hi, %d);\n",
-                      F - 17, J);
+                            "        __m512i kb = _mm512_sr%si_epi16(hi, %d);\n",
+                      F - 17, base2 ? "a" : "l", J);
         else
             pf_put(&s2, "        __m512i v = _mm512_mulhi_epu16(_mm512_permutex2var_epi16(tu0, hi, tu1), e);\n"
                          "        v = _mm512_add_epi16(v, _mm512_permutex2var_epi16(td0, hi, td1));\n"
                          "        __m512i m = _mm512_adds_epu16(_mm512_permutex2var_epi16(ta0, hi, ta1), _mm512_srli_epi16(v, 5));\n"
                          "        __m512i kb = _mm512_srli_epi16(hi, 6);\n");
-        pf_put(&s2, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
-                     "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tp));\n");
+        if (base2 && J == 6)
+            memcpy(strstr(s2.s, "kb = _mm512_srli_epi16(hi, 6)") + 12, "srai", 4);
+        pf_printf(&s2, "        __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());\n"
+                       "        r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, %s));\n",
+                  base2 ? "tpk" : "tp");
         static const char *const cv[] = {"hi", "e"};
         fx_pipe_loop(kern, "__m512i", 32, s1.s, s2.s, cv, 2, "_mm512_storeu_si512(y + i - 32, r);", N);
         free(s1.s);
@@ -708,12 +752,12 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));\n"
               "    kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */\n"
               "    kc[5] = _mm256_set1_epi16(0x101);\n"
-              "    kc[6] = _mm256_set1_epi16(-32768);\n"
+              "%s"
               "    kc[7] = _mm256_set1_epi16(%lld); /* c1 */\n"
               "    kc[8] = _mm256_set1_epi16(%lld); /* c2 */\n"
               "    kc[9] = _mm256_set1_epi16(%lld); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */\n"
-              "    kc[10] = _mm256_set1_epi16(%lld); /* kb at s = 1 */\n"
-              "    kc[11] = _mm256_set1_epi16(%lld); /* off, or the bias (exp2) */\n"
+              "    kc[10] = _mm256_set1_epi16(%lld); /* kb at s = %d */\n"
+              "    kc[11] = _mm256_set1_epi16(%lld); /* off (exp2: none, unused) */\n"
               "    kc[12] = _mm256_set1_epi16(%lld); /* L1 */\n"
               "    kc[13] = _mm256_set1_epi16(%lld); /* L2 */\n"
               "    kc[14] = _mm256_set1_epi16(%lld); /* Cl */\n"
@@ -727,21 +771,28 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "    const __m256i jmask = kc[17];\n%s"
               "    const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,\n"
               "                                          0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);\n"
-              "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;\n",
-              cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21, s16(X->tc1), s16(X->tc2), s16(16 - X->tcc - 2048), s16(X->tcc),
-              base2 ? s16(X->tk0 << Ei) : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
-              X->loclamp ? s16(X->xlo) : 0, X->sat ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
-              J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n");
+              "    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi%s;\n",
+              cond, N, G->it, G->ot, tb5.s, J == 4 ? 18 : 21,
+              X->sat && !X->tnohi ? "    kc[6] = _mm256_setr_epi8(0, -1, 0, 0, 0, 0, 0, 0, -128, -1, 0, 0, 0, 0, 0, 0,\n"
+                                    "                             0, -1, 0, 0, 0, 0, 0, 0, -128, -1, 0, 0, 0, 0, 0, 0); /* H's bytes */\n"
+                                  : "    kc[6] = _mm256_set1_epi16(-32768);\n",
+              s16(X->tc1), s16(X->tc2),
+              s16(16 - X->tcc - 2048 + (base2 ? X->tk0 : 0)),
+              s16((base2 ? X->tcc - X->tk0 : X->tcc) - (X->sat && !X->tnohi)), X->sat && !X->tnohi ? 2 : 1,
+              base2 ? 0 : s16(X->toff), s16(X->tl1), s16(X->tl2), s16(X->tcl),
+              X->loclamp ? s16(X->xlo) : 0, X->sat && !X->tnohi ? s16(X->xsat) : 0, k18, base2 ? "bias" : "off",
+              J == 4 ? "" : "    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];\n",
+              base2 ? (J == 4 ? ", (void)bias, (void)jdup, (void)hib" : ", (void)bias")
+                    : (J == 4 ? ", (void)jdup, (void)hib" : ""));
     free(tb5.s);
     pf_buf s1 = {0}, s2 = {0};
     pf_put(&s1, "        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));\n");
     if (X->loclamp)
         pf_put(&s1, "        xc = _mm256_max_epi16(xc, xlo);\n");
-    if (X->sat)
+    if (X->sat && !X->tnohi)
         pf_put(&s1, "        xc = _mm256_min_epi16(xc, xhi);\n");
-    if (base2)
-        pf_printf(&s1, "        __m256i tb = _mm256_add_epi16(xc, bias);\n"
-                        "        __m256i hi = _mm256_srli_epi16(tb, %d), lo = _mm256_slli_epi16(tb, %d);\n",
+    if (base2) /* no bias: hi - K0 2^J, k and its constants as in the AVX-512 loop */
+        pf_printf(&s1, "        __m256i hi = _mm256_srai_epi16(xc, %d), lo = _mm256_slli_epi16(xc, %d);\n",
                   Ei - J, 16 - Ei + J);
     else {
         pf_put(&s1, "        __m256i u = _mm256_add_epi16(xc, off);\n"
@@ -756,11 +807,16 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
         pf_put(&s1, "        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);\n");
     }
     pf_put(&s1, "        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));\n");
+    /* J = 4: A's low byte by j in the low byte of its index word, its high
+       byte by j in the high byte (j << 8), merged by vpor: the other byte of
+       each reads entry 0, and A[0] = 0; D by the second index, its byte
+       shifted down (a vpsllw and a vpor where a vpshufb and a vpblendvb
+       were: AVX2 exp2 0.153 -> 0.145 ns/element) */
     if (J == 4)
-        pf_put(&s2, "        __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */\n"
-                     "        __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);\n"
+        pf_put(&s2, "        __m256i jl = _mm256_and_si256(hi, jmask), jh = _mm256_slli_epi16(jl, 8); /* j, j << 8 */\n"
+                     "        __m256i a = _mm256_or_si256(_mm256_shuffle_epi8(al, jl), _mm256_shuffle_epi8(ah, jh));\n"
                      "        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));\n"
-                     "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));\n"
+                     "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jh), 8));\n"
                      "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));\n"
                      "        __m256i kb = _mm256_srli_epi16(hi, 4);\n");
     else
@@ -772,16 +828,28 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                      "        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));\n"
                      "        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));\n"
                      "        __m256i kb = _mm256_srli_epi16(hi, 5);\n");
+    if (base2) /* k, not k + K0 */
+        memcpy(strstr(s2.s, "kb = _mm256_srli_epi16(hi, ") + 12, "srai", 4);
     pf_put(&s2, "        /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at\n"
                  "           e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in\n"
                  "           [8, 15] for the low byte, where the table holds 0) */\n"
                  "        __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);\n"
                  "        __m256i qq = _mm256_shuffle_epi8(pw, qi);\n"
-                 "        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));\n"
-                 "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),\n"
-                 "                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */\n");
-    if (X->sat)
-        pf_put(&s2, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */\n");
+                 "        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));\n");
+    /* clamped at the top: s = 1 and s = 0 (the clamped top input) in one
+       select, 2^15 + avg(M, 0) and 65535 as avg(M, 0) + H (saturating), H =
+       2^15 or 65535 by a vpshufb of a byte table on the same index (e = 16:
+       bytes 0 and 8, e = 17: bytes 1 and 9); one vpor fewer */
+    int s01 = X->sat && !X->tnohi;
+    if (s01)
+        pf_put(&s2, "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), _mm256_shuffle_epi8(h15, qi)),\n"
+                     "                               _mm256_cmpgt_epi16(kb, k1)); /* s = 1: 2^15 + avg(M, 0); s = 0: the max */\n");
+    else
+        pf_put(&s2, "        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),\n"
+                     "                               _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */\n");
+    if (X->sat && !s01)
+        pf_printf(&s2, "        r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s %s 0: %s, the max */\n",
+                  X->tnohi ? "<=" : "=", X->tnohi ? "the saturating inputs" : "the clamped top input");
     static const char *const cv[] = {"hi", "e"};
     fx_pipe_loop(kern, "__m256i", 16, s1.s, s2.s, cv, 2, "_mm256_storeu_si256((__m256i *)(y + i - 16), r);", N);
     free(s1.s);
@@ -799,15 +867,16 @@ static int prep_tab_noclamp(fx_gen *G, int base2, char *err, size_t errlen)
     fx_exp_red *X = &G->exp, save = *X;
     int64_t imin = pf_type_min_stored(&G->in), one = (int64_t)1 << G->in.exp;
     int64_t k0 = imin >= 0 ? 0 : (-imin + one - 1) / one, xtop = X->sat ? X->xsat : X->xhi;
-    /* 16-entry tables first (AVX2 has a loop for them), then 32, then 64;
-       exp2 whose r would have 7 bits with 16 entries: 32 first (r has 6,
-       and the AVX-512 loop reads E from a 64-entry table).  exp: 16
-       entries only; where they miss the bound, so did 32 and 64 for every
-       type pair tried (fixed<15,5..15> -> ufixed<16,-5..17>), and a path
-       no type takes is a path no test runs */
+    /* 16-entry tables first, then 32, then 64.  Also for exp2 whose r has
+       7 bits with 16 entries (fixed<15,11>), where 32 entries would leave
+       6 and let the AVX-512 loop read E from a 64-entry table: the AVX2
+       loop's 32-entry lookups (four vpshufb and three vpblendvb a table)
+       cost more than that saves (fixed<15,11> -> ufixed<16,8>, ns/element
+       AVX2 0.220 -> 0.165, AVX-512 0.078 -> 0.096).  exp: 16 entries only;
+       where they miss the bound, so did 32 and 64 for every type pair
+       tried (fixed<15,5..15> -> ufixed<16,-5..17>), and a path no type
+       takes is a path no test runs */
     int order[3] = {4, 5, 6}, norder = base2 ? 3 : 1;
-    if (base2 && G->in.exp - 4 == 7)
-        order[0] = 5, order[1] = 4;
     for (int oi = 0; oi < norder; oi++) {
         int J = order[oi];
         if (base2 && X->loclamp && xtop + k0 * one <= 65535) {

@@ -84,6 +84,7 @@ typedef struct {               /* exp, exp2 */
     uint16_t ta[64], tu[64], td[64], tp[32];
     double terr, tkern, tred, tpoly; /* pre-rounding error (lsb); kernel (2^-16), t (2^-22), E (2^-22) */
     int tet;                   /* exp2 with r of <= 5 bits (6 with J < 6): E from a table te (vpermw, vpermi2w) */
+    int tnohi;                 /* exp2, J = 4: no clamp at the top (from xsat up, P = 65535 saturates) */
     uint16_t te[64];
     /* 16-bit lanes, fast: the segment-table kernel (kind 2, fixed_exp.c) */
     int64_t fd, fl;            /* u = fd - min(x, fd); exp: w = u fl 2^-16 (w = (t(fd) - t) 2^fb) */

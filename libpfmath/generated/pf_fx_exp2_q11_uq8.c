@@ -4,38 +4,38 @@
  * Regenerate:  pfmathgen --func exp2 --type 'fixed<15,11>' --out-type 'ufixed<16,8>' -o libpfmath/generated/pf_fx_exp2_q11_uq8.c
  * Input:       int16_t x, value x 2^-11 in [-16, 15.9995117]
  * Output:      uint16_t y, value y 2^-8 in [0, 255.996094]
- * Reduction:   t = x; T = (t + 16) 2^21 = hi 2^16 + lo from the stored integer biased by 16 
- *              2^11 (exact): j = hi & 31, k + 16 = hi >> 5, r = lo 2^-21 in [0, 2^-5), t = k + 
- *              j/32 + r; inputs clamped to [-32768, 16384] (stored), the last one saturating
- * Domain:      2^r - 1 on r in [0, 2^-5]; 2^(j/32) for j in [0, 31] from tables (2^t = 2^k 
- *              2^(j/32) 2^r)
- * Order:       2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and two 32-entry tables 
- *              of 2^(j/32); uint16_t words: 16-bit lanes
+ * Reduction:   t = x; T = (t + 16) 2^20 = hi 2^16 + lo from the stored integer biased by 16 
+ *              2^11 (exact): j = hi & 15, k + 16 = hi >> 4, r = lo 2^-20 in [0, 2^-4), t = k + 
+ *              j/16 + r; inputs computed in [-32768, 16383] (stored); no clamp at the top: from 
+ *              16384 (stored) up, k + 16 > 23 reads P = 65535 (the shift count wraps: 0) and 
+ *              the saturating add gives the max
+ * Domain:      2^r - 1 on r in [0, 2^-4]; 2^(j/16) for j in [0, 15] from tables (2^t = 2^k 
+ *              2^(j/16) 2^r)
+ * Order:       2 (2^r - 1 = r (c1 + c2 r): 2 fixed-point coefficients), and two 16-entry tables 
+ *              of 2^(j/16); uint16_t words: 16-bit lanes
  * Lanes:       16-bit words throughout; AVX-512BW (x86-64-v4): lookups vpermw, the shift 
  *              vpsrlvw; AVX2 (x86-64-v3): a lookup two vpshufb and a vpblendvb, the shift a 
  *              pmulhuw by 2^(17 - s); the default clone, scalar form: the same steps in plain C
- * Method:      minimax absolute error of 2^r on [0, 2^-5] (nlopt SLSQP, epigraph form), c1 and 
- *              c2 rounded to nearest at 2^-16 and 2^-11 (their multiply-highs' lsbs); tables 
- *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/32) - 1) 2^16, D[j] = 
- *              (A[j]'s residual + 1/2) 2^4
+ * Method:      minimax absolute error of 2^r on [0, 2^-4] (nlopt SLSQP, epigraph form), c1 and 
+ *              c2 rounded to nearest at 2^-16 and 2^-12 (their multiply-highs' lsbs); tables 
+ *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/16) - 1) 2^16, D[j] = 
+ *              (A[j]'s residual + 1/2) 2^3
  * Constraints: p(0) = 1 (2^r - 1 has no constant term; exact at r = 0)
- * Formats:     r uint16_t at 2^-21; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^21 
- *              (floors; c1 = 45425, c2 = 497); M = A[j] + ((avg(E, pmulhuw(A[j], E)) (= 
- *              2^(j/32) E 2^-1, pavgw) + D[j]) >> 4), saturated at 65535 (2^f 2^16 = 2^16 + M: 
+ * Formats:     r uint16_t at 2^-20; E = pmulhuw(r, c1 + pmulhuw(r, c2)) = (2^r - 1) 2^20 
+ *              (floors; c1 = 45420, c2 = 1004); M = A[j] + ((avg(E, pmulhuw(A[j], E)) (= 
+ *              2^(j/16) E 2^-1, pavgw) + D[j]) >> 3), saturated at 65535 (2^f 2^16 = 2^16 + M: 
  *              one rounding of the sum, D carrying A's); result round((2^16 + M) 2^-s), s = 8 - 
  *              k in [1, 24], as avg(M >> (s - 1), 0) (pavgw) + P[k] (P = 2^(16 - s), 1 at s = 
- *              17, 0 beyond, 65535 at s = 0: the saturating add gives the max there, at the 
- *              clamped top input); AVX2: round(M 2^-s) + P as avg(Q, pmulhuw(M, Q)) with Q = 
+ *              17, 0 beyond, 65535 at s <= 0: the saturating add gives the max there, at every 
+ *              saturating input); AVX2: round(M 2^-s) + P as avg(Q, pmulhuw(M, Q)) with Q = 
  *              2^(17 - s) for s >= 2 (vpshufb table, 0 from s = 18), and 2^15 + avg(M, 0) 
- *              (saturating) at s = 1: the same values; r has 6 bits (r = m 2^-11): the AVX-512 
- *              loop reads E from a 64-entry table of these same values (vpermi2w on the biased 
- *              input's low bits)
- * Polynomial:  E within 1.572 of (2^r - 1) 2^21 for every r (polynomial and floors, all 2^16 
- *              r); M within 0.5550 of (2^f - 1) 2^16 for every input's (j, r)
- * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.2775 LSB (polynomial 0.0491, 
- *              arithmetic and reduction 0.2284) = 0.7775 LSB; taken over every clamped input 
+ *              (saturating) at s = 1: the same values
+ * Polynomial:  E within 2.311 of (2^r - 1) 2^20 for every r (polynomial and floors, all 2^16 
+ *              r); M within 0.6185 of (2^f - 1) 2^16 for every input's (j, r)
+ * Error bound: |result - f(x)| <= 0.5 LSB (final rounding) + 0.3093 LSB (polynomial 0.1444, 
+ *              arithmetic and reduction 0.1649) = 0.8093 LSB; taken over every clamped input 
  *              from the emitted integer steps (the table kernel)
- * Sweep:       max 0.7665 LSB at x = 16024 (7.82421875), mean 0.1585 LSB; exhaustive: all 65536 
+ * Sweep:       max 0.7800 LSB at x = 15987 (7.80615234), mean 0.1585 LSB; exhaustive: all 65536 
  *              inputs
  * Saturation:  x >= 16384 (stored; 8) overflows: 65535 (the max); results beyond the output 
  *              range give its max or min
@@ -234,47 +234,43 @@ PF_FX_INLINE int32_t pf_fx_rsh32(int32_t z, int d)
    k[] holds the constants; bw picks the form of the per-element
    shift (1: 16-bit lanes, for AVX-512BW's vpsrlvw; 0: 32-bit lanes), which
    give the same values. */
-/* A[j] = round((2^(j/32) - 1) 2^16) (MPFR) */
-static const uint32_t pf_exp2_q11_uq8_ta[32] = {
-    0, 1435, 2902, 4400, 5932, 7496, 9096, 10730,
-    12400, 14106, 15850, 17633, 19454, 21315, 23216, 25160,
-    27146, 29175, 31249, 33369, 35534, 37747, 40009, 42320,
-    44682, 47095, 49562, 52082, 54658, 57289, 59979, 62727,
+/* A[j] = round((2^(j/16) - 1) 2^16) (MPFR) */
+static const uint32_t pf_exp2_q11_uq8_ta[16] = {
+    0, 2902, 5932, 9096, 12400, 15850, 19454, 23216,
+    27146, 31249, 35534, 40009, 44682, 49562, 54658, 59979,
 };
-/* D[j] = round(((2^(j/32) - 1) 2^16 - A[j] + 1/2) 2^4), in [0, 16] (MPFR) */
-static const uint32_t pf_exp2_q11_uq8_td[32] = {
-    8, 9, 0, 10, 0, 15, 2, 6,
-    6, 15, 14, 0, 3, 3, 16, 7,
-    6, 14, 12, 2, 13, 16, 10, 12,
-    8, 15, 4, 9, 1, 15, 8, 14,
+/* D[j] = round(((2^(j/16) - 1) 2^16 - A[j] + 1/2) 2^3), in [0, 8] (MPFR) */
+static const uint32_t pf_exp2_q11_uq8_td[16] = {
+    4, 0, 0, 1, 3, 7, 1, 8,
+    3, 6, 7, 5, 4, 2, 0, 4,
 };
 /* P[(k + K0) & 31] = round(2^(16 - s)), s = 16 - Eo - k (0 off the range) */
 static const uint32_t pf_exp2_q11_uq8_tp[32] = {
     0, 0, 0, 0, 0, 0, 0, 1,
     1, 2, 4, 8, 16, 32, 64, 128,
     256, 512, 1024, 2048, 4096, 8192, 16384, 32768,
-    65535, 0, 0, 0, 0, 0, 0, 0,
+    65535, 65535, 65535, 65535, 65535, 65535, 65535, 65535,
 };
 PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x, const int16_t *k, int bw)
 {
     (void)bw; /* unused where no step has an AVX-512BW form */
     int16_t xc = (int16_t)x;
-    xc = (int16_t)(xc > k[0] ? k[0] : xc); /* 16384 */
-    /* T = (t + 16) 2^21 = hi 2^16 + lo: j = hi & 31, k + 16 = hi >> 5, r = lo 2^-21 */
+    (void)k;
+    /* T = (t + 16) 2^20 = hi 2^16 + lo: j = hi & 15, k + 16 = hi >> 4, r = lo 2^-20 */
     uint16_t tb = (uint16_t)((uint16_t)xc + 32768u); /* (t + 16) 2^11 */
-    uint16_t hi = (uint16_t)(tb >> 6);
-    uint16_t lo = (uint16_t)((uint32_t)tb << 10);
-    /* E = (2^r - 1) 2^21 = r (c1 + c2 r), floors */
-    uint16_t g = (uint16_t)(45425u + ((uint32_t)lo * 497u >> 16));
+    uint16_t hi = (uint16_t)(tb >> 7);
+    uint16_t lo = (uint16_t)((uint32_t)tb << 9);
+    /* E = (2^r - 1) 2^20 = r (c1 + c2 r), floors */
+    uint16_t g = (uint16_t)(45420u + ((uint32_t)lo * 1004u >> 16));
     uint16_t e = (uint16_t)((uint32_t)lo * g >> 16);
-    /* M = (2^(j/32 + r) - 1) 2^16, one rounding: A[j] + round(2^(j/32) E 2^-5 + A[j]'s residual),
-       2^(j/32) E 2^-1 = avg(E, pmulhuw(A[j], E)) (pavgw) */
-    unsigned j = hi & 31u;
+    /* M = (2^(j/16 + r) - 1) 2^16, one rounding: A[j] + round(2^(j/16) E 2^-4 + A[j]'s residual),
+       2^(j/16) E 2^-1 = avg(E, pmulhuw(A[j], E)) (pavgw) */
+    unsigned j = hi & 15u;
     uint16_t v = (uint16_t)((((uint32_t)e + ((uint32_t)pf_exp2_q11_uq8_ta[j] * e >> 16) + 1u) >> 1) + pf_exp2_q11_uq8_td[j]);
-    uint32_t ms = (uint32_t)pf_exp2_q11_uq8_ta[j] + (uint32_t)(v >> 4);
+    uint32_t ms = (uint32_t)pf_exp2_q11_uq8_ta[j] + (uint32_t)(v >> 3);
     uint16_t m = (uint16_t)(ms < 65535u ? ms : 65535u);
     /* round((2^16 + M) 2^-s), s = c + 1 >= 1: avg(M >> c, 0) + 2^(16 - s) */
-    uint16_t kb = (uint16_t)(hi >> 5);
+    uint16_t kb = (uint16_t)(hi >> 4);
     uint16_t c = (uint16_t)(23 - kb); /* in [0, 23]; wraps at s = 0 (saturated by P) */
     uint16_t y0 = (uint16_t)(((uint32_t)(c < 16 ? m >> c : 0) + 1u) >> 1); /* pavgw; vpsrlvw's 0 */
     uint32_t ys = (uint32_t)y0 + pf_exp2_q11_uq8_tp[kb & 31u];
@@ -283,7 +279,7 @@ PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x, const int16_t *k, int bw
 }
 
 /* AVX-512BW: the same steps on 32 lanes, with intrinsics, as GCC does not turn
-   the table lookups into vpermi2w/vpermw (nor the carry into a mask): the
+   the table lookups into vpermw (nor the carry into a mask): the
    array form runs this loop on a CPU with x86-64-v4 (see its dispatch), the
    rest of the array and the other clones use the scalar steps above.  The
    same values (pfmathgen sweeps the array form on its machine against the
@@ -291,94 +287,71 @@ PF_FX_INLINE uint16_t pf_exp2_q11_uq8_inline(int16_t x, const int16_t *k, int bw
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #include <immintrin.h>
 extern uint16_t pf_exp2_q11_uq8(int16_t x); /* the scalar form, for the last n % 32 */
-/* 32 table entries as 16-bit words, for vpermw/vpermi2w */
+/* 32 table entries as 16-bit words, for vpermw */
 __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_w16(const uint32_t *t)
 {
     return _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t))),
                               _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
 }
+/* 16 entries as 16-bit words, twice (vpermw reads 5 index bits: hi's low 4 are j) */
+__attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_w16b(const uint32_t *t)
+{
+    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
+}
 __attribute__((target("arch=x86-64-v4"), noinline))
 static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-/* E[63 - i] (tbn's low 6 bits are 63 - r's) */
-static const uint32_t pf_exp2_q11_uq8_ter[64] = {
-    45196, 44471, 43746, 43021, 42298, 41574, 40850, 40126,
-    39404, 38680, 37957, 37235, 36513, 35791, 35069, 34347,
-    33626, 32905, 32184, 31464, 30743, 30024, 29304, 28584,
-    27864, 27146, 26427, 25708, 24990, 24272, 23554, 22836,
-    22118, 21401, 20685, 19968, 19251, 18535, 17819, 17104,
-    16388, 15673, 14958, 14243, 13529, 12814, 12101, 11387,
-    10673, 9960, 9247, 8534, 7822, 7109, 6397, 5685,
-    4974, 4262, 3551, 2841, 2130, 1420, 709, 0,
+/* P[(k + K0) & 31] at k & 31 = i (P above rotated by K0) */
+static const uint32_t pf_exp2_q11_uq8_tpk[32] = {
+    256, 512, 1024, 2048, 4096, 8192, 16384, 32768,
+    65535, 65535, 65535, 65535, 65535, 65535, 65535, 65535,
+    0, 0, 0, 0, 0, 0, 0, 1,
+    1, 2, 4, 8, 16, 32, 64, 128,
 };
-/* A[31 - i] (j = 31 - (tbn >> 6) mod 32) */
-static const uint32_t pf_exp2_q11_uq8_tar[32] = {
-    62727, 59979, 57289, 54658, 52082, 49562, 47095, 44682,
-    42320, 40009, 37747, 35534, 33369, 31249, 29175, 27146,
-    25160, 23216, 21315, 19454, 17633, 15850, 14106, 12400,
-    10730, 9096, 7496, 5932, 4400, 2902, 1435, 0,
-};
-/* D[31 - i] */
-static const uint32_t pf_exp2_q11_uq8_tdr[32] = {
-    14, 8, 15, 1, 9, 4, 15, 8,
-    12, 10, 16, 13, 2, 12, 14, 6,
-    7, 16, 3, 3, 0, 14, 15, 6,
-    6, 2, 15, 0, 10, 0, 9, 8,
-};
-/* P at c = s - 1 = i (P[(k + K0) & 31] above, k + K0 = tcc - c); 31: s = 0 */
-static const uint32_t pf_exp2_q11_uq8_tpr[32] = {
-    32768, 16384, 8192, 4096, 2048, 1024, 512, 256,
-    128, 64, 32, 16, 8, 4, 2, 1,
-    1, 0, 0, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0, 0, 0, 65535,
-};
-    const __m512i ta = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tar), td = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tdr), tp = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tpr);
-    const __m512i te0 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ter), te1 = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_ter + 32);
-    const __m512i cb = _mm512_set1_epi16(16383); /* CB = (tcc + 1 - K0) 2^11 - 1 */
-    const __m512i xhi = _mm512_set1_epi16(16384);
+    const __m512i ta = pf_exp2_q11_uq8_w16b(pf_exp2_q11_uq8_ta), td = pf_exp2_q11_uq8_w16b(pf_exp2_q11_uq8_td);
+    const __m512i c1 = _mm512_set1_epi16(-20116), c2 = _mm512_set1_epi16(1004), cc = _mm512_set1_epi16(7);
+    const __m512i tpk = pf_exp2_q11_uq8_w16(pf_exp2_q11_uq8_tpk); /* P at k = (hi - K0 2^J) >> J */
     size_t i = 0;
     if (n >= 32) {
         /* software pipelined: a pass runs the first steps of block i and the
            rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
-        __m512i p_tn, p_hn, p_e;
+        __m512i p_hi, p_e;
         {
             __m512i xc = _mm512_loadu_si512(x + i);
-            xc = _mm512_min_epi16(xc, xhi);
-            __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^11 - 1 - (tb mod 2^11) */
-            __m512i hn = _mm512_srli_epi16(tn, 6), e = _mm512_permutex2var_epi16(te0, tn, te1);
-            p_tn = tn, p_hn = hn, p_e = e;
+            __m512i hi = _mm512_srai_epi16(xc, 7), lo = _mm512_slli_epi16(xc, 9);
+            __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
+            p_hi = hi, p_e = e;
         }
         for (i = 32; i + 32 <= n; i += 32) {
-            __m512i n_tn, n_hn, n_e;
+            __m512i n_hi, n_e;
             {
                 __m512i xc = _mm512_loadu_si512(x + i);
-                xc = _mm512_min_epi16(xc, xhi);
-                __m512i tn = _mm512_sub_epi16(cb, xc); /* (c + 1) 2^11 - 1 - (tb mod 2^11) */
-                __m512i hn = _mm512_srli_epi16(tn, 6), e = _mm512_permutex2var_epi16(te0, tn, te1);
-                n_tn = tn, n_hn = hn, n_e = e;
+                __m512i hi = _mm512_srai_epi16(xc, 7), lo = _mm512_slli_epi16(xc, 9);
+                __m512i e = _mm512_mulhi_epu16(lo, _mm512_add_epi16(c1, _mm512_mulhi_epu16(lo, c2)));
+                n_hi = hi, n_e = e;
             }
             {
-                __m512i tn = p_tn, hn = p_hn, e = p_e;
-                __m512i a = _mm512_permutexvar_epi16(hn, ta);
+                __m512i hi = p_hi, e = p_e;
+                __m512i a = _mm512_permutexvar_epi16(hi, ta);
                 __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
-                v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));
-                __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 4));
-                __m512i c = _mm512_srli_epi16(tn, 11);
-                __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());
-                r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));
+                v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
+                __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
+                __m512i kb = _mm512_srai_epi16(hi, 4);
+                __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
+                r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tpk));
                 _mm512_storeu_si512(y + i - 32, r);
             }
-            p_tn = n_tn, p_hn = n_hn, p_e = n_e;
+            p_hi = n_hi, p_e = n_e;
         }
         {
-            __m512i tn = p_tn, hn = p_hn, e = p_e;
-            __m512i a = _mm512_permutexvar_epi16(hn, ta);
+            __m512i hi = p_hi, e = p_e;
+            __m512i a = _mm512_permutexvar_epi16(hi, ta);
             __m512i v = _mm512_avg_epu16(e, _mm512_mulhi_epu16(a, e));
-            v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hn, td));
-            __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 4));
-            __m512i c = _mm512_srli_epi16(tn, 11);
-            __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, c), _mm512_setzero_si512());
-            r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(c, tp));
+            v = _mm512_add_epi16(v, _mm512_permutexvar_epi16(hi, td));
+            __m512i m = _mm512_adds_epu16(a, _mm512_srli_epi16(v, 3));
+            __m512i kb = _mm512_srai_epi16(hi, 4);
+            __m512i r = _mm512_avg_epu16(_mm512_srlv_epi16(m, _mm512_sub_epi16(cc, kb)), _mm512_setzero_si512());
+            r = _mm512_adds_epu16(r, _mm512_permutexvar_epi16(kb, tpk));
             _mm512_storeu_si512(y + i - 32, r);
         }
     }
@@ -396,48 +369,41 @@ static const uint32_t pf_exp2_q11_uq8_tpr[32] = {
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-    uint8_t b[7][16]; /* A's low, high bytes, D (entries 0-15), the bytes of Q = 2^e (b[3][i] =
-                         2^i, 0 from i = 8); A's low, high bytes, D (entries 16-31) */
+    uint8_t b[4][16]; /* A's low, high bytes, D, the bytes of Q = 2^e (b[3][i] = 2^i, 0 from i = 8) */
     for (int k = 0; k < 16; k++) {
         b[0][k] = (uint8_t)pf_exp2_q11_uq8_ta[k];
         b[1][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k] >> 8);
         b[2][k] = (uint8_t)pf_exp2_q11_uq8_td[k];
         b[3][k] = (uint8_t)(k < 8 ? 1u << k : 0u);
-        b[4][k] = (uint8_t)pf_exp2_q11_uq8_ta[k + 16];
-        b[5][k] = (uint8_t)(pf_exp2_q11_uq8_ta[k + 16] >> 8);
-        b[6][k] = (uint8_t)pf_exp2_q11_uq8_td[k + 16];
     }
     /* the constants in memory GCC cannot see through: with 16 ymm registers it
        would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside
        the loop, where a memory operand costs nothing */
-    __m256i kc[21];
+    __m256i kc[18];
     for (int k = 0; k < 4; k++)
         kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));
     kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
     kc[5] = _mm256_set1_epi16(0x101);
     kc[6] = _mm256_set1_epi16(-32768);
-    kc[7] = _mm256_set1_epi16(-20111); /* c1 */
-    kc[8] = _mm256_set1_epi16(497); /* c2 */
-    kc[9] = _mm256_set1_epi16(-2055); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
-    kc[10] = _mm256_set1_epi16(23); /* kb at s = 1 */
-    kc[11] = _mm256_set1_epi16(-32768); /* off, or the bias (exp2) */
+    kc[7] = _mm256_set1_epi16(-20116); /* c1 */
+    kc[8] = _mm256_set1_epi16(1004); /* c2 */
+    kc[9] = _mm256_set1_epi16(-2039); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
+    kc[10] = _mm256_set1_epi16(7); /* kb at s = 1 */
+    kc[11] = _mm256_set1_epi16(0); /* off (exp2: none, unused) */
     kc[12] = _mm256_set1_epi16(0); /* L1 */
     kc[13] = _mm256_set1_epi16(0); /* L2 */
     kc[14] = _mm256_set1_epi16(0); /* Cl */
     kc[15] = _mm256_set1_epi16(0); /* the low clamp */
-    kc[16] = _mm256_set1_epi16(16384); /* the high clamp */
-    kc[17] = _mm256_set1_epi16(31); /* j = hi & 31 */
-    for (int k = 18; k < 21; k++)
-        kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k - 14]));
+    kc[16] = _mm256_set1_epi16(0); /* the high clamp */
+    kc[17] = _mm256_set1_epi16(15); /* j = hi & 15 */
     __asm__("" : : "r"(kc) : "memory");
     const __m256i al = kc[0], ah = kc[1], dt = kc[2], pw = kc[3], hib = kc[4], dup = kc[5];
     const __m256i h15 = kc[6], c1 = kc[7], c2 = kc[8], cq = kc[9], k1 = kc[10];
     const __m256i bias = kc[11], l1 = kc[12], l2 = kc[13], cl = kc[14], xlo = kc[15], xhi = kc[16];
     const __m256i jmask = kc[17];
-    const __m256i al1 = kc[18], ah1 = kc[19], dt1 = kc[20];
     const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
                                           0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
-    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
+    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi, (void)bias, (void)jdup, (void)hib;
     size_t i = 0;
     if (n >= 16) {
         /* software pipelined: a pass runs the first steps of block i and the
@@ -445,9 +411,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
         __m256i p_hi, p_e;
         {
             __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
-            xc = _mm256_min_epi16(xc, xhi);
-            __m256i tb = _mm256_add_epi16(xc, bias);
-            __m256i hi = _mm256_srli_epi16(tb, 6), lo = _mm256_slli_epi16(tb, 10);
+            __m256i hi = _mm256_srai_epi16(xc, 7), lo = _mm256_slli_epi16(xc, 9);
             __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
             p_hi = hi, p_e = e;
         }
@@ -455,22 +419,18 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
             __m256i n_hi, n_e;
             {
                 __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
-                xc = _mm256_min_epi16(xc, xhi);
-                __m256i tb = _mm256_add_epi16(xc, bias);
-                __m256i hi = _mm256_srli_epi16(tb, 6), lo = _mm256_slli_epi16(tb, 10);
+                __m256i hi = _mm256_srai_epi16(xc, 7), lo = _mm256_slli_epi16(xc, 9);
                 __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
                 n_hi = hi, n_e = e;
             }
             {
                 __m256i hi = p_hi, e = p_e;
-                __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
-                __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */
-                __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),
-                                               _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);
+                __m256i jl = _mm256_and_si256(hi, jmask), jh = _mm256_slli_epi16(jl, 8); /* j, j << 8 */
+                __m256i a = _mm256_or_si256(_mm256_shuffle_epi8(al, jl), _mm256_shuffle_epi8(ah, jh));
                 __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-                v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));
-                __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));
-                __m256i kb = _mm256_srli_epi16(hi, 5);
+                v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jh), 8));
+                __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
+                __m256i kb = _mm256_srai_epi16(hi, 4);
                 /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
                    e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
                    [8, 15] for the low byte, where the table holds 0) */
@@ -479,21 +439,19 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
                 __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
                 r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
                                        _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
-                r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+                r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s <= 0: the saturating inputs, the max */
                 _mm256_storeu_si256((__m256i *)(y + i - 16), r);
             }
             p_hi = n_hi, p_e = n_e;
         }
         {
             __m256i hi = p_hi, e = p_e;
-            __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
-            __m256i jm = _mm256_slli_epi16(jd, 3); /* j's bit 4 as each byte's bit 7 (vpblendvb) */
-            __m256i a = _mm256_blendv_epi8(_mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(al1, jd), jm),
-                                           _mm256_blendv_epi8(_mm256_shuffle_epi8(ah, jd), _mm256_shuffle_epi8(ah1, jd), jm), hib);
+            __m256i jl = _mm256_and_si256(hi, jmask), jh = _mm256_slli_epi16(jl, 8); /* j, j << 8 */
+            __m256i a = _mm256_or_si256(_mm256_shuffle_epi8(al, jl), _mm256_shuffle_epi8(ah, jh));
             __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-            v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_blendv_epi8(_mm256_shuffle_epi8(dt, jd), _mm256_shuffle_epi8(dt1, jd), jm), 8));
-            __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 4));
-            __m256i kb = _mm256_srli_epi16(hi, 5);
+            v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jh), 8));
+            __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
+            __m256i kb = _mm256_srai_epi16(hi, 4);
             /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
                e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
                [8, 15] for the low byte, where the table holds 0) */
@@ -502,7 +460,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
             __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
             r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
                                    _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
-            r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+            r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s <= 0: the saturating inputs, the max */
             _mm256_storeu_si256((__m256i *)(y + i - 16), r);
         }
     }
@@ -513,7 +471,7 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
 
 /* The constants the body reads (Horner coefficients and multipliers) */
 static const int16_t pf_exp2_q11_uq8_k[1] = {
-    16384,  /* k[0]: 16384: highest input computed (clamp: saturates) */
+    0,      /* k[0]: 0 (unused: no clamp) */
 };
 
 uint16_t pf_exp2_q11_uq8(int16_t x)

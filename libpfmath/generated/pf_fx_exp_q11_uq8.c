@@ -399,12 +399,13 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
         kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));
     kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
     kc[5] = _mm256_set1_epi16(0x101);
-    kc[6] = _mm256_set1_epi16(-32768);
+    kc[6] = _mm256_setr_epi8(0, -1, 0, 0, 0, 0, 0, 0, -128, -1, 0, 0, 0, 0, 0, 0,
+                             0, -1, 0, 0, 0, 0, 0, 0, -128, -1, 0, 0, 0, 0, 0, 0); /* H's bytes */
     kc[7] = _mm256_set1_epi16(-20116); /* c1 */
     kc[8] = _mm256_set1_epi16(1004); /* c2 */
     kc[9] = _mm256_set1_epi16(-2050); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
-    kc[10] = _mm256_set1_epi16(18); /* kb at s = 1 */
-    kc[11] = _mm256_set1_epi16(15586); /* off, or the bias (exp2) */
+    kc[10] = _mm256_set1_epi16(17); /* kb at s = 2 */
+    kc[11] = _mm256_set1_epi16(15586); /* off (exp2: none, unused) */
     kc[12] = _mm256_set1_epi16(738); /* L1 */
     kc[13] = _mm256_set1_epi16(-22291); /* L2 */
     kc[14] = _mm256_set1_epi16(21584); /* Cl */
@@ -418,7 +419,7 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
     const __m256i jmask = kc[17];
     const __m256i jdup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
                                           0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
-    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi;
+    (void)l1, (void)l2, (void)cl, (void)xlo, (void)xhi, (void)jdup, (void)hib;
     size_t i = 0;
     if (n >= 16) {
         /* software pipelined: a pass runs the first steps of block i and the
@@ -454,10 +455,10 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
             }
             {
                 __m256i hi = p_hi, e = p_e;
-                __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
-                __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
+                __m256i jl = _mm256_and_si256(hi, jmask), jh = _mm256_slli_epi16(jl, 8); /* j, j << 8 */
+                __m256i a = _mm256_or_si256(_mm256_shuffle_epi8(al, jl), _mm256_shuffle_epi8(ah, jh));
                 __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-                v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
+                v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jh), 8));
                 __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
                 __m256i kb = _mm256_srli_epi16(hi, 4);
                 /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
@@ -466,19 +467,18 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
                 __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
                 __m256i qq = _mm256_shuffle_epi8(pw, qi);
                 __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
-                r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
-                                       _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
-                r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+                r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), _mm256_shuffle_epi8(h15, qi)),
+                                       _mm256_cmpgt_epi16(kb, k1)); /* s = 1: 2^15 + avg(M, 0); s = 0: the max */
                 _mm256_storeu_si256((__m256i *)(y + i - 16), r);
             }
             p_hi = n_hi, p_e = n_e;
         }
         {
             __m256i hi = p_hi, e = p_e;
-            __m256i jd = _mm256_shuffle_epi8(_mm256_and_si256(hi, jmask), jdup); /* j in both bytes */
-            __m256i a = _mm256_blendv_epi8(_mm256_shuffle_epi8(al, jd), _mm256_shuffle_epi8(ah, jd), hib);
+            __m256i jl = _mm256_and_si256(hi, jmask), jh = _mm256_slli_epi16(jl, 8); /* j, j << 8 */
+            __m256i a = _mm256_or_si256(_mm256_shuffle_epi8(al, jl), _mm256_shuffle_epi8(ah, jh));
             __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
-            v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jd), 8));
+            v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jh), 8));
             __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
             __m256i kb = _mm256_srli_epi16(hi, 4);
             /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
@@ -487,9 +487,8 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
             __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
             __m256i qq = _mm256_shuffle_epi8(pw, qi);
             __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
-            r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), h15),
-                                   _mm256_cmpeq_epi16(kb, k1)); /* s = 1 */
-            r = _mm256_or_si256(r, _mm256_cmpgt_epi16(kb, k1)); /* s = 0: the clamped top input, the max */
+            r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), _mm256_shuffle_epi8(h15, qi)),
+                                   _mm256_cmpgt_epi16(kb, k1)); /* s = 1: 2^15 + avg(M, 0); s = 0: the max */
             _mm256_storeu_si256((__m256i *)(y + i - 16), r);
         }
     }
