@@ -155,8 +155,8 @@ static inline double pf_sinf_ph_r(int64_t f)
      f(x) = (-1)^(q>>1 & 1) (q even: sin r, q odd: cos r),
    sin r from the fitted odd polynomial (pf_sinf_C: c1 = 1, c3, c5, ...), cos r
    from the even one fitted beside it (PF_TRIG_COSC: c4, c6, ... of
-   1 - t^2/2 + ...).  Each lane evaluates one polynomial, its coefficients
-   selected by q's parity (branch-free), so the vector costs one Horner chain.
+   1 - t^2/2 + ...); every lane evaluates both and keeps one by q's parity
+   (branch-free).
    r is carried as rh + rl (a float pair, rl = -nrl):
    - Cody-Waite with FMA, |x| < PF_TRIG_CW_LIMIT: pi/2 = P1 + P2 + P3 +
      O(2^-72), P1 and P2 24-bit prefixes.  r1 = fmaf(-m, P1, x) is exact
@@ -179,44 +179,40 @@ static inline double pf_sinf_ph_r(int64_t f)
 
 /* 1.5 2^23: m = the integer nearest x 2/pi (float), in kt's low bits */
 #define pf_sinf_SHIFT 0x1.8p23f
-#define pf_sinf_NS (4 - 1)          /* sin terms c3, c5, ... */
-#define pf_sinf_NC PF_TRIG_NCOSC           /* cos terms c4, c6, ... */
-#define pf_sinf_NT (pf_sinf_NS > pf_sinf_NC ? pf_sinf_NS : pf_sinf_NC)
 
-/* sin r (c = 0) or cos r (c = 1), up to the sign, from (rh, nrl) */
-static inline float pf_sinf_core(float rh, float nrl, int c)
+/* sin r and cos r from (rh, nrl), z = rh^2, by Horner's rule on the
+   negated coefficients (the constants fold) */
+static inline float pf_sinf_sin(float rh, float nrl, float z)
 {
-    float z = rh * rh;
-    /* -S(z) or -C(z) by Horner's rule, the coefficients selected per lane
-       (the shorter polynomial padded with zeros) */
-    float np = 0.0f;
+    float ns = -pf_sinf_C[4 - 1];
 #pragma GCC unroll 32
-    for (int k = pf_sinf_NT - 1; k >= 0; k--) {
-        float cs = k < pf_sinf_NS ? -pf_sinf_C[k + 1] : 0.0f;
-        float cc = k < pf_sinf_NC ? -PF_TRIG_COSC[k] : 0.0f;
-        np = k == pf_sinf_NT - 1 ? (c ? cc : cs) : fmaf(np, z, c ? cc : cs);
-    }
-    float a = (c ? z : fmaf(-3.0f, nrl, rh)) * z;
-    float bn = c ? -rh * nrl : nrl;
-    float h = c ? 0.5f * rh : 0.0f;
-    float lead = c ? 1.0f : rh;
-    return lead - fmaf(h, rh, fmaf(a, np, bn));
+    for (int k = 4 - 2; k >= 1; k--)
+        ns = fmaf(ns, z, -pf_sinf_C[k]); /* -(c3 + c5 z + ...) */
+    return rh - fmaf(fmaf(-3.0f, nrl, rh) * z, ns, nrl);
+}
+static inline float pf_sinf_cos(float rh, float nrl, float z)
+{
+    float nc = -PF_TRIG_COSC[PF_TRIG_NCOSC - 1];
+#pragma GCC unroll 32
+    for (int k = PF_TRIG_NCOSC - 2; k >= 0; k--)
+        nc = fmaf(nc, z, -PF_TRIG_COSC[k]); /* -(c4 + c6 z + ...) */
+    return 1.0f - fmaf(0.5f * rh, rh, fmaf(z * z, nc, -rh * nrl));
 }
 
-/* f from (rh, nrl) and q = m + s: the sign bit of the result is q's bit 1.
-   The array loops (bits = 0) evaluate one polynomial a lane, its operands
-   selected by q's parity (masked blends, or merged into the operations);
-   the scalar form (bits = 1) evaluates both with the same operations and
-   selects the result bitwise, no branch on q's parity (which a predictor
-   could not learn) and few selects: the same bits either way. */
+/* f from (rh, nrl) and q = m + s: q odd takes cos r, even sin r; the sign
+   bit of the result is q's bit 1.  Both are evaluated (one Horner chain
+   each, no per-lane coefficient selects: fewer operations a vector than one
+   chain on selected coefficients) and one is kept: a ? b : a in the array
+   loops (a masked blend), a bitwise select in the scalar form (bits = 1),
+   which must not branch on q's parity (no predictor learns it). */
 static inline float pf_sinf_eval(float rh, float nrl, uint32_t q, int bits)
 {
-    float y;
+    float z = rh * rh, s = pf_sinf_sin(rh, nrl, z), c = pf_sinf_cos(rh, nrl, z), y;
     if (bits) {
         uint32_t cm = 0u - (q & 1);
-        y = pf_asfloat((pf_asuint(pf_sinf_core(rh, nrl, 0)) & ~cm) | (pf_asuint(pf_sinf_core(rh, nrl, 1)) & cm));
+        y = pf_asfloat((pf_asuint(s) & ~cm) | (pf_asuint(c) & cm));
     } else {
-        y = pf_sinf_core(rh, nrl, (q & 1) != 0);
+        y = q & 1 ? c : s;
     }
     return pf_asfloat(pf_asuint(y) ^ ((q << 30) & 0x80000000u));
 }
