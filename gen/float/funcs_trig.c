@@ -1,5 +1,12 @@
 /* Function table rows for the trig family: sin, cos, tan (see gen/float/funcs.h).
  *
+ * Exact sin and cos (issue 12): float lanes, x = m pi/2 + r with r in
+ * [-pi/4, pi/4] carried as rh + rl, sin's odd polynomial (the row's fit)
+ * and cos's even one (fitted by extra_trig_ff) on [0, pi/4 + 2^-7], the
+ * lane's by m's parity; Cody-Waite in float below 2^16, Payne-Hanek beyond
+ * (sin_pio2_ff.c.in, model_ff).  The rest of this comment is about the
+ * fast variants, the mid rows and tan.
+ *
  * Two polynomials serve the three functions:
  *   sin(t) on [0, pi/2], odd: sin and cos.  The argument is reduced by pi,
  *     x + s pi/2 = k pi + r, r in [-pi/2, pi/2], s = 0 (sin) or 1 (cos), so
@@ -20,7 +27,7 @@
  * Two paths per input, chosen by the same test in the scalar and the array
  * form (the array form computes Payne-Hanek only in blocks holding such an
  * input; gen/templates/sin_pi*.c.in, tan_pio2*.c.in):
- * Exact variants (double evaluation with fma, float coefficients):
+ * Exact tan (double evaluation with fma, float coefficients):
  *   |x| < 2^28: Cody-Waite with FMA, pi/2 = P1 + P2 + O(2^-107), 53-bit
  *     parts: fma(-m, P1, x) is exact, the second fma rounds once; r is right
  *     to 2^-49 of the smallest |r| of any float (2^-29.86 in units of pi/2,
