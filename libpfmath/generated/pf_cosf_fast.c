@@ -202,6 +202,9 @@ static inline uint32_t pf_cosf_fast_rare_key(uint32_t ix) { return ix << 1; }
 #define pf_cosf_fast_RARE_KEY (PF_TRIG_CW_LIMIT << 1)
 static inline int pf_cosf_fast_is_rare(uint32_t ix) { return pf_cosf_fast_rare_key(ix) >= pf_cosf_fast_RARE_KEY; }
 
+/* the array form's fused loop (tail_twopath.c.in): measured faster here */
+#define pf_cosf_fast_FUSED 1
+
 /* The scalar form: a branch, the rare side hinted as such */
 static inline float pf_cosf_fast_inline(float x)
 {
@@ -233,13 +236,15 @@ static __attribute__((noinline)) float pf_cosf_fast_ph_lane(float x)
 
 /* Array form.  Every lane takes the same path by the same test as the
    scalar form, so the array is bit-identical to it.
-   When x and y do not overlap: per block of 1024, one loop runs the
+   With pf_cosf_fast_FUSED (set by the template: exact and fast sin and cos, where
+   it measured faster; tan keeps the scan, its exact AVX2 loop measured 3%
+   slower fused), when x and y do not overlap: per block of 1024, one loop runs the
    branch-free Cody-Waite path on every lane and takes the largest rare key
    as it goes (two operations a vector, no second pass over x, and the
    constants are set up once a block); a block holding a rare lane then
    redoes those lanes one by one (at most 64) or computes both paths for
    every lane and selects (vectorized, the table reads as gathers).
-   In place (or overlapping), per block of 128: a vectorized scan for rare
+   Otherwise, or in place (or overlapping), per block of 128: a vectorized scan for rare
    lanes first; a block without one runs the Cody-Waite loop; one with a
    few (at most 16) runs it on a copy of x and redoes the rare lanes one by
    one; one with more computes both paths and selects. */
@@ -248,6 +253,7 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_cosf_fast_array(const float *restrict x, float *restrict y, size_t n)
 {
+#if pf_cosf_fast_FUSED
     if ((uintptr_t)(x + n) <= (uintptr_t)y || (uintptr_t)(y + n) <= (uintptr_t)x) {
         for (size_t i0 = 0; i0 < n; i0 += 1024) {
             size_t nb = n - i0 < 1024 ? n - i0 : 1024;
@@ -283,6 +289,7 @@ void pf_cosf_fast_array(const float *restrict x, float *restrict y, size_t n)
         }
         return;
     }
+#endif
     for (size_t i0 = 0; i0 < n; i0 += 128) {
         size_t nb = n - i0 < 128 ? n - i0 : 128;
         const float *xb = x + i0;
