@@ -1,5 +1,12 @@
 /* Function table rows for the trig family: sin, cos, tan (see gen/float/funcs.h).
  *
+ * Exact sin and cos (issue 12): float lanes, x = m pi/2 + r with r in
+ * [-pi/4, pi/4] carried as rh + rl, sin's odd polynomial (the row's fit)
+ * and cos's even one (fitted by extra_trig_ff) on [0, pi/4 + 2^-7], the
+ * lane's by m's parity; Cody-Waite in float below 2^16, Payne-Hanek beyond
+ * (sin_pio2_ff.c.in, model_ff).  The rest of this comment is about the
+ * fast variants, the mid rows and tan.
+ *
  * Two polynomials serve the three functions:
  *   sin(t) on [0, pi/2], odd: sin and cos.  The argument is reduced by pi,
  *     x + s pi/2 = k pi + r, r in [-pi/2, pi/2], s = 0 (sin) or 1 (cos), so
@@ -20,7 +27,7 @@
  * Two paths per input, chosen by the same test in the scalar and the array
  * form (the array form computes Payne-Hanek only in blocks holding such an
  * input; gen/templates/sin_pi*.c.in, tan_pio2*.c.in):
- * Exact variants (double evaluation with fma, float coefficients):
+ * Exact tan (double evaluation with fma, float coefficients):
  *   |x| < 2^28: Cody-Waite with FMA, pi/2 = P1 + P2 + O(2^-107), 53-bit
  *     parts: fma(-m, P1, x) is exact, the second fma rounds once; r is right
  *     to 2^-49 of the smallest |r| of any float (2^-29.86 in units of pi/2,
@@ -469,6 +476,169 @@ static int model_mid_tan(const fit_poly *p, int order, pf_scheme *sc)
     return model_mid(p, sc, 1, 0, 0, 0.7853981633974483 + MID_PAST);
 }
 
+/* ---- exact sin and cos in float lanes (issue 12; sin_pio2_ff.c.in) ----
+   x = m pi/2 + r, r in [-pi/4, pi/4] (FF_PAST beyond: x 2/pi rounds in float
+   for |x| < 2^FF_LOG2), sin r from the row's odd polynomial, cos r from an
+   even one fitted here (1 - t^2/2 + c4 t^4 + ..., relative error, p(0) = 1 and
+   c2 = -1/2 exactly), the lane's polynomial chosen by m's parity.  Cody-Waite
+   with FMA in float for |x| < 2^FF_LOG2 (three 24-bit parts of pi/2, r kept
+   as a float pair rh + rl: TwoProd of m P2 and Fast2Sum, see the template),
+   Payne-Hanek beyond.  2^16 keeps the bench's [-1e4, 1e4] on the vector
+   path; m < 2^15.4 there, so m P2 < 2^-8.3 (r1 is a multiple of its ulp) and
+   m (pi/2 - P1 - P2 - P3) < 2^-56. */
+#define FF_LOG2 16
+#define FF_PAST 0x1p-7
+#define FF_COS_ORDER 8
+
+static int cos_ff_fit(fit_poly *out, char *err, size_t errlen)
+{
+    fit_problem pb;
+    memset(&pb, 0, sizeof pb);
+    pb.g = g_cos;
+    pb.a = 0;
+    pb.b = 0.7853981633974483 + FF_PAST;
+    pb.order = FF_COS_ORDER;
+    pb.parity = FIT_PARITY_EVEN;
+    pb.errkind = FIT_REL;
+    pb.ncon = 2;
+    pb.con[0].kind = FIT_CON_VALUE; /* p(0) = cos 0 = 1 */
+    pb.con[0].t = 0;
+    pb.con[1].kind = FIT_CON_COEF; /* c2 = -1/2 exactly: the template's rh^2/2 */
+    pb.con[1].index = 2;
+    pb.con[1].value = -0.5;
+    if (fit_minimax(&pb, out, err, errlen) != 0)
+        return -1;
+    fit_coeffmt fmt = {FIT_COEF_FLOAT, 0};
+    if (fit_round(&pb, fmt, fit_minimax, out, NULL, err, errlen) != 0)
+        return -1;
+    fit_measure(&pb, out);
+    return 0;
+}
+
+static int extra_trig_ff(char *buf, size_t n)
+{
+    double part[3];
+    int bits[2] = {24, 24};
+    pio2_split(3, bits, 24, part);
+    fit_poly c;
+    char err[256];
+    if (cos_ff_fit(&c, err, sizeof err) != 0)
+        return snprintf(buf, n, "#error cos fit failed: %s\n", err);
+    int len = snprintf(buf, n,
+                       "/* Reduction constants, computed with MPFR by pfmathgen (gen/float/funcs_trig.c):\n"
+                       "   2/pi rounded to float; pi/2 = P1 + P2 + P3 + O(2^-72), P1 and P2 24-bit\n"
+                       "   prefixes, P3 rounded; Cody-Waite with FMA in float for |x| < 2^%d. */\n"
+                       "static const float PF_TRIG_2OPIF = %af;\n"
+                       "static const float PF_TRIG_PIO2F[3] = {%af, %af, %af};\n"
+                       "static const uint32_t PF_TRIG_CW_LIMIT = 0x%08xu; /* bits of 2^%d */\n"
+                       "/* cos(t) ~ 1 - t^2/2 + sum PF_TRIG_COSC[k] t^(2k+4) on [0, pi/4 + 2^%d]: fitted\n"
+                       "   by pfmathgen (minimax relative error, p(0) = 1 and c2 = -1/2 exact,\n"
+                       "   coefficients rounded to float by pin-and-refit), order %d; max relative\n"
+                       "   error %.3e (2^%.2f) at t = %a */\n"
+                       "#define PF_TRIG_NCOSC %d\n"
+                       "static const float PF_TRIG_COSC[PF_TRIG_NCOSC] = {",
+                       FF_LOG2, twoopi(24, 0), part[0], part[1], part[2], (unsigned)((127 + FF_LOG2) << 23),
+                       FF_LOG2, (int)log2(FF_PAST), FF_COS_ORDER, c.max_err, log2(c.max_err), c.max_err_at,
+                       FF_COS_ORDER / 2 - 1);
+    for (int k = 4; k <= FF_COS_ORDER && len >= 0 && (size_t)len < n; k += 2)
+        len += snprintf(buf + len, n - (size_t)len, "%s%af", k > 4 ? ", " : "", (double)c.c[k]);
+    if (len >= 0 && (size_t)len < n)
+        len += snprintf(buf + len, n - (size_t)len, "};\n");
+    if (len >= 0 && (size_t)len < n)
+        len += extra_ph(buf + len, n - (size_t)len);
+    return len;
+}
+
+/* Error model of the float-lane exact sin and cos (sin_pio2_ff.c.in), a
+   first-order bound in ULP of the result, the maximum over a grid of r in
+   [MID_RMIN, pi/4 + FF_PAST] for either kind of lane.  Each rounding errs
+   by at most half an ulp of its value (mid_hu), an absolute error E costs
+   E / ulp(f(r)) ULP (mid_ulp); rl, the low part of r, is at most half an
+   ulp of r (Cody-Waite: the exact Fast2Sum error plus m P2's exact tail;
+   Payne-Hanek: r's one split).
+   sin lanes, f = rh - w, w = fmaf(A, -S(z), nrl), A = (rh + 3 rl) z:
+     0.5 (the final subtraction) + w's rounding + A's (z = rh^2 rounded,
+     rh + 3 rl rounded, the product rounded: each times |S|) + Horner's on
+     -S (times |A|) + the fit error + what 3 rl z S(z) leaves of rl's
+     factor cos r - 1 (|rl| |3 z S + 1 - cos r|) + the reduction's tail.
+   cos lanes, f = 1 - w, w = fmaf(rh/2, rh, I), I = fmaf(z^2, -C(z), rh rl):
+     0.5 + w's and I's roundings + z^2's (z and the square, times |C|) +
+     Horner's on -C (times z^2) + rh rl's + the fit error + the terms the
+     scheme drops (rl^2/2 and rl (rh - sin rh)) + the tail.
+   R_MIN as for the mid rows: no float with m != 0 lands closer to a
+   multiple of pi/2 than 2^-28.5 units of it below 2^20 (docs/trig.md). */
+static double ff_horner(const double *a, int n, double z, double ez, double *es)
+{
+    double s = n ? a[n - 1] : 0;
+    *es = 0;
+    for (int j = n - 2; j >= 0; j--) {
+        double v = s * z + a[j];
+        *es = fabs(z) * *es + fabs(s) * ez + mid_hu(v);
+        s = v;
+    }
+    return s;
+}
+
+static int model_ff(const fit_poly *p, int order, pf_scheme *sc)
+{
+    (void)order;
+    fit_poly c;
+    char err[256];
+    if (cos_ff_fit(&c, err, sizeof err) != 0) {
+        snprintf(sc->text, sizeof sc->text, "cos fit failed: %s", err);
+        return -1;
+    }
+    double as[FIT_MAX_ORDER + 1], ac[FIT_MAX_ORDER + 1];
+    int ns = 0, nc = 0;
+    for (int k = 3; k <= p->order; k += 2)
+        as[ns++] = (double)p->c[k];
+    for (int k = 4; k <= c.order; k += 2)
+        ac[nc++] = (double)c.c[k];
+    double part[3];
+    int bits[2] = {24, 24};
+    pio2_split(3, bits, 24, part);
+    /* m (pi/2 - P1 - P2 - P3): P3 is rounded to 24 bits, so the rest is below
+       half its ulp */
+    double tail = ldexp(1.0, FF_LOG2) * 0.6366197723675814 * 1.0001 * mid_hu(part[2]) * 2;
+    const double b = 0.7853981633974483 + FF_PAST;
+    double worst_s = 0, worst_c = 0, at_s = 0, at_c = 0;
+    for (int i = 0; i <= MID_GRID; i++) {
+        double r = i < MID_GRID / 4 ? MID_RMIN * pow(0x1p-6 / MID_RMIN, (double)i / (MID_GRID / 4))
+                                    : 0x1p-6 + (b - 0x1p-6) * (i - MID_GRID / 4) / (0.75 * MID_GRID);
+        double rl = mid_hu(r), z = r * r, ez = mid_hu(z);
+        /* sin lane */
+        double es, S = ff_horner(as, ns, z, ez, &es);
+        double A = r * z, eA = z * mid_hu(r) + r * ez + mid_hu(A);
+        double w = A * S, ew = fabs(S) * eA + fabs(A) * es + mid_hu(fabs(w) + rl);
+        double f = sin(r);
+        double e = ew + p->max_err * f + rl * fabs(3 * z * S + 1 - cos(r)) + mid_hu(rl) + tail;
+        double u = 0.5 + e / mid_ulp(f);
+        if (u > worst_s)
+            worst_s = u, at_s = r;
+        /* cos lane */
+        double ec, C = ff_horner(ac, nc, z, ez, &ec);
+        double z2 = z * z, ez2 = 2 * z * ez + mid_hu(z2);
+        double I = -z2 * C + r * rl, eI = fabs(C) * ez2 + z2 * ec + mid_hu(r * rl) + mid_hu(fabs(I));
+        double wc = z / 2 + I, ewc = eI + mid_hu(wc);
+        double fc = cos(r);
+        double e2 = ewc + c.max_err * fc + rl * rl / 2 + rl * (r - sin(r)) + tail;
+        double u2 = 0.5 + e2 / mid_ulp(fc);
+        if (u2 > worst_c)
+            worst_c = u2, at_c = r;
+    }
+    sc->ncomp = 0;
+    sc->bound_ulp = worst_s > worst_c ? worst_s : worst_c;
+    snprintf(sc->text, sizeof sc->text,
+             "float lanes with fmaf: pi/2 reduction to rh + rl (TwoProd, Fast2Sum), one Horner chain a lane "
+             "with sin's or cos's coefficients by m's parity; sin lanes rh - fmaf((rh + 3 rl) z, -S, -rl), "
+             "cos lanes 1 - fmaf(rh/2, rh, fmaf(z^2, -C, rh rl)); first-order bound: sin lanes %.3f "
+             "(worst r = %.4g), cos lanes %.3f (r = %.4g; cos fit %.3e)",
+             worst_s, at_s, worst_c, at_c, c.max_err);
+    if (sc->bound_ulp > 1.0)
+        return -1;
+    return 0;
+}
+
 /* ---- rows ---- */
 #define PIO2 1.5707963267948966 /* the nearest double to pi/2 (below it) */
 #define PIO4 0.7853981633974483
@@ -496,13 +666,24 @@ static int model_mid_tan(const fit_poly *p, int order, pf_scheme *sc)
 #define SIN_EXACT_ORDER 9
 #define TAN_EXACT_ORDER 13
 
-#define ROW_SIN_EXACT(fn, phase, red)                                                             \
-    {.func = fn, .reduction = "pi", .variant = "exact", .tmpl = "sin_pi", .arity = 1,             \
-     .head = "trig_ph.h", .tail = "tail_twopath.c",                                               \
-     .reduction_text = red RED_EXACT, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,     \
-     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
-     .default_order = SIN_EXACT_ORDER, .real = "double", .kscale = phase, .ulp_bound = 1.0,      \
-     .extra = extra_trig_double, .model = model_double}
+/* sin and cos, exact (sin_pio2_ff.c.in): float lanes, reduction by pi/2
+   with sin's and cos's polynomials (model_ff).  Sin order 7 on
+   [0, pi/4 + 2^-7] reaches 2^-27.9 (the model's bound ~0.83 ULP with cos's
+   order 8 beside it; sin 5 reaches only 2^-20).  ladder_cost 20: the
+   reduction's ten operations, the per-lane selects, cos's and the sign's
+   few, beside 2 a Horner term (above the mid rows' 10: the ladder's 2- and
+   3-ULP levels keep those).  The row keeps the key .reduction = "pi" of
+   sin's and cos's other rows although it reduces by pi/2: the ladder
+   (gen/float/ladder.c) weighs the rows sharing the default row's key. */
+#define SIN_FF_ORDER 7
+#define RED_FF "x = m pi/2 + r, r in [-pi/4, pi/4], q = m + s (s = 0: sin, 1: cos); f = (-1)^(q>>1) (q even: sin r, q odd: cos r), Cody-Waite with FMA in float |x| < 2^16 (r = rh + rl: TwoProd, Fast2Sum), Payne-Hanek beyond (array: only in blocks holding such an x)"
+#define ROW_SIN_EXACT(fn, phase)                                                                  \
+    {.func = fn, .reduction = "pi", .variant = "exact", .tmpl = "sin_pio2_ff", .arity = 1,        \
+     .head = "trig_ph.h", .tail = "tail_twopath.c", .reduction_text = RED_FF,                     \
+     .target_text = "sin(t) (and cos(t), even, fitted beside it)", .g = g_sin, .a = 0,           \
+     .b = PIO4 + FF_PAST, .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1,               \
+     .con = {CON_SLOPE1}, .default_order = SIN_FF_ORDER, .real = "fma", .kscale = phase,          \
+     .ulp_bound = 1.0, .extra = extra_trig_ff, .model = model_ff, .ladder_cost = 20}
 /* sin, fast (sin_pi_fast.c.in): fitted to sin lowered by 2^-21 at its peak,
    so that Horner's rule in float (a few ulps of rounding) keeps |p| <= 1
    with no clamp; the value 1 - 2^-21 and slope 0 at pi/2 come from the
@@ -532,11 +713,11 @@ static int model_mid_tan(const fit_poly *p, int order, pf_scheme *sc)
      .extra = extra_trig_mid, .model = mdl, .ladder_cost = 10}
 
 const pf_spec pf_specs_trig[] = {
-    ROW_SIN_EXACT("sin", "0", SIN_RED),
+    ROW_SIN_EXACT("sin", "0"),
     SIN_FAST_ROW,
     ROW_SIN_MID("sin", "mid", "0", SIN_RED, model_mid_sin),
     ROW_SIN_MID("sin", "mid-r3", "0", SIN_RED, model_mid_sin_c),
-    ROW_SIN_EXACT("cos", "1", COS_RED),
+    ROW_SIN_EXACT("cos", "1"),
     /* cos, fast: the even polynomial of cos on the reduction of sin (two
        fewer additions a vector than sin(x + pi/2), no |r| and no clamp:
        sin_pi_fast_even.c.in).  Fitted for absolute error 2^-11 (cos's zeros

@@ -207,6 +207,9 @@ static inline uint32_t pf_tanf_rare_key(uint32_t ix) { return ix << 1; }
 #define pf_tanf_RARE_KEY (PF_TRIG_CW_LIMIT << 1)
 static inline int pf_tanf_is_rare(uint32_t ix) { return pf_tanf_rare_key(ix) >= pf_tanf_RARE_KEY; }
 
+/* the array form's fused loop (tail_twopath.c.in): off: the scan first, as measured best here */
+#define pf_tanf_FUSED 0
+
 /* The scalar form: a branch, the rare side hinted as such */
 static inline float pf_tanf_inline(float x)
 {
@@ -236,19 +239,62 @@ static __attribute__((noinline)) float pf_tanf_ph_lane(float x)
     return pf_tanf_ph(x);
 }
 
-/* Array form, per block of 128: a vectorized scan for rare lanes (the
-   largest key: two operations a vector); a block without one runs the
-   branch-free Cody-Waite loop.  A block with a few rare lanes (at most 16)
-   runs that loop too, on a copy of x (in-place calls), and redoes the rare
-   lanes one by one; one with more computes both paths for every lane and
-   selects (vectorized, the table reads as gathers).  Every lane takes the
-   same path by the same test as the scalar form, so the array is
-   bit-identical to it. */
+/* Array form.  Every lane takes the same path by the same test as the
+   scalar form, so the array is bit-identical to it.
+   With pf_tanf_FUSED (set by the template: exact and fast sin and cos, where
+   it measured faster; tan keeps the scan, its exact AVX2 loop measured 3%
+   slower fused), when x and y do not overlap: per block of 1024, one loop runs the
+   branch-free Cody-Waite path on every lane and takes the largest rare key
+   as it goes (two operations a vector, no second pass over x, and the
+   constants are set up once a block); a block holding a rare lane then
+   redoes those lanes one by one (at most 64) or computes both paths for
+   every lane and selects (vectorized, the table reads as gathers).
+   Otherwise, or in place (or overlapping), per block of 128: a vectorized scan for rare
+   lanes first; a block without one runs the Cody-Waite loop; one with a
+   few (at most 16) runs it on a copy of x and redoes the rare lanes one by
+   one; one with more computes both paths and selects. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
 void pf_tanf_array(const float *restrict x, float *restrict y, size_t n)
 {
+#if pf_tanf_FUSED
+    if ((uintptr_t)(x + n) <= (uintptr_t)y || (uintptr_t)(y + n) <= (uintptr_t)x) {
+        for (size_t i0 = 0; i0 < n; i0 += 1024) {
+            size_t nb = n - i0 < 1024 ? n - i0 : 1024;
+            const float *xb = x + i0;
+            float *yb = y + i0;
+            uint32_t key = 0;
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+            for (size_t i = 0; i < nb; i++) {
+                uint32_t k = pf_tanf_rare_key(pf_asuint(xb[i]));
+                key = key > k ? key : k;
+                yb[i] = pf_tanf_cw(xb[i]);
+            }
+            if (key < pf_tanf_RARE_KEY)
+                continue;
+            uint32_t count = 0;
+            for (size_t i = 0; i < nb; i++)
+                count += pf_tanf_is_rare(pf_asuint(xb[i]));
+            if (count <= 64) {
+                for (size_t i = 0; i < nb; i++)
+                    if (pf_tanf_is_rare(pf_asuint(xb[i])))
+                        yb[i] = pf_tanf_ph_lane(xb[i]);
+            } else {
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+                for (size_t i = 0; i < nb; i++) {
+                    float xi = xb[i], c = pf_tanf_cw(xi), p = pf_tanf_ph(xi);
+                    yb[i] = pf_tanf_is_rare(pf_asuint(xi)) ? p : c;
+                }
+            }
+        }
+        return;
+    }
+#endif
     for (size_t i0 = 0; i0 < n; i0 += 128) {
         size_t nb = n - i0 < 128 ? n - i0 : 128;
         const float *xb = x + i0;
