@@ -1,4 +1,4 @@
-# trig family: sin, cos, tan (gen/float/funcs_trig.c, gen/templates/sin_pi*.c.in,
+# trig family: sin, cos, tan (gen/float/funcs_trig.c, gen/templates/sin_pio2_ff.c.in, sin_pi_fast*.c.in,
 # tan_pio2*.c.in).  Library sources libpfmath/generated/pf_{sin,cos,tan}f*.c.
 # (listed in libpfmath/functions.def, read by mk/lib.mk into LIB_GEN)
 

@@ -26,7 +26,7 @@
  *
  * Two paths per input, chosen by the same test in the scalar and the array
  * form (the array form computes Payne-Hanek only in blocks holding such an
- * input; gen/templates/sin_pi*.c.in, tan_pio2*.c.in):
+ * input; gen/templates/sin_pio2_ff.c.in, sin_pi_fast*.c.in, tan_pio2*.c.in):
  * Exact tan (double evaluation with fma, float coefficients):
  *   |x| < 2^28: Cody-Waite with FMA, pi/2 = P1 + P2 + O(2^-107), 53-bit
  *     parts: fma(-m, P1, x) is exact, the second fma rounds once; r is right
@@ -158,7 +158,7 @@ static void twoopi_words(uint32_t *w)
     mpfr_clear(v);
     /* word j holds b_i for i = 8j - 151 .. 8j - 120, most significant first:
        for a float of biased exponent e the template takes words e>>3, +4, +8
-       and shifts the significand left by e&7 (see sin_pi.c.in) */
+       and shifts the significand left by e&7 (see trig_ph.h.in) */
     for (int j = 0; j < PH_WORDS; j++) {
         uint32_t x = 0;
         for (int k = 0; k < 32; k++) {
