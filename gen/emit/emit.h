@@ -27,7 +27,7 @@ void pf_chomp(pf_buf *b);
 
 /* ---- templates ---- */
 
-/* the embedded template gen/templates/<name>.in ("sin_pi.c"), or NULL */
+/* the embedded template gen/templates/<name>.in ("sin_pio2_ff.c"), or NULL */
 const char *pf_template(const char *name);
 /* text with every @KEY@ replaced from kv (key, value pairs, NULL after the
  * last key); an @ that starts no known key is copied as it is */
