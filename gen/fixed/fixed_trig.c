@@ -1251,17 +1251,22 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
     free(kern.s);
 }
 
-/* sin's vector loop (kind 6): four blocks of L lanes a pass, then single
-   blocks, then the scalar form.  Each line of st[] is one step, written
-   with @ for the block's number and $ for its offset in x and y; the
-   AVX-512 loop emits every step for the four blocks before the next step
-   (interleaved), the AVX2 one the reduction and square of the four blocks,
-   then their polynomials and signs.  Those two orders were the fastest
-   measured (2026-11-26, Zen 4, an A/B harness: best of 40 rounds of 20
-   passes over the 2^16 inputs shuffled, 3 runs: 0.0771 -> 0.0722 ns/elem
-   on AVX-512, 0.0844 -> 0.0791 on AVX2; 2, 3, 6 and 8 blocks, the other
-   order and fx_pipe_loop's pipelining measured slower on one ISA or both).
-   The same steps and values as one block a pass. */
+/* The unrolled vector loops of kind 6: sin's on AVX-512 and AVX2, cos's on
+   AVX2 (cos's AVX-512 loop is fx_pipe_loop's, which measured as fast).
+   Four blocks of L lanes a pass, then single blocks, then the scalar form.
+   Each line of st[] is one step, written with @ for the block's number and
+   $ for its offset in x and y; the AVX-512 loop emits every step for the
+   four blocks before the next step (interleaved), the AVX2 ones the
+   reductions and squares of the four blocks, then their polynomials (and
+   signs).  The AVX2 loops take |x| as an unsigned min(x, -x), as cos's
+   AVX-512 loop does (vpabsw shares the multipliers' pipes on Zen 4).
+   Those were the fastest measured (2026-11-26, Zen 4, an A/B harness: best
+   of 40 rounds of 20 passes over the 2^16 inputs shuffled, 3 runs, ns/elem:
+   sin 0.0771 -> 0.0722 on AVX-512, 0.0844 -> 0.0777 on AVX2; cos AVX2
+   0.0808 (fx_pipe_loop) -> 0.0741; 2, 3, 6 and 8 blocks, the other order,
+   vpabsw or min(x, -x) the other way round and fx_pipe_loop's pipelining
+   measured slower on one ISA or both).  The same steps and values as one
+   block a pass. */
 static void tr6_put_step(pf_buf *b, const char *t, int k, int L)
 {
     pf_put(b, "        ");
@@ -1277,17 +1282,20 @@ static void tr6_put_step(pf_buf *b, const char *t, int k, int L)
     pf_put(b, "\n");
 }
 
-static void tr6_sin_loop(pf_buf *kern, int avx2, int64_t kh, const char *N)
+static void tr6_loop(pf_buf *kern, int avx2, int is_cos, int64_t kh, const char *N)
 {
     const char *P = avx2 ? "_mm256" : "_mm512", *R = avx2 ? "__m256i" : "__m512i";
     const int L = avx2 ? 16 : 32, U = 4;
-    char st[10][200];
+    char st[12][200];
     int ns = 0, split = 0;
     if (avx2)
         snprintf(st[ns++], sizeof st[0], "%s xv@ = _mm256_loadu_si256((const __m256i *)(x + i$));", R);
     else
         snprintf(st[ns++], sizeof st[0], "%s xv@ = _mm512_loadu_si512(x + i$);", R);
-    snprintf(st[ns++], sizeof st[0], "%s ax@ = %s_abs_epi16(xv@);", R, P);
+    if (avx2)
+        snprintf(st[ns++], sizeof st[0], "%s ax@ = %s_min_epu16(xv@, %s_sub_epi16(zero, xv@)); /* |x| */", R, P, P);
+    else
+        snprintf(st[ns++], sizeof st[0], "%s ax@ = %s_abs_epi16(xv@);", R, P);
     if (kh == 1)
         snprintf(st[ns++], sizeof st[0], "%s hi@ = %s_add_epi16(%s_mulhi_epu16(ax@, kl), ax@);", R, P, P);
     else if (kh == 2)
@@ -1296,13 +1304,19 @@ static void tr6_sin_loop(pf_buf *kern, int avx2, int64_t kh, const char *N)
     else
         snprintf(st[ns++], sizeof st[0], "%s hi@ = %s_add_epi16(%s_mulhi_epu16(ax@, kl), %s_mullo_epi16(ax@, kh));", R, P,
                  P, P);
-    snprintf(st[ns++], sizeof st[0], "%s z@ = %s_add_epi16(hi@, hi@);", R, P);
+    if (is_cos) {
+        snprintf(st[ns++], sizeof st[0], "%s v@ = %s_sub_epi16(one, %s_abs_epi16(hi@));", R, P, P);
+        snprintf(st[ns++], sizeof st[0], "%s z@ = %s_adds_epi16(v@, v@);", R, P);
+    } else
+        snprintf(st[ns++], sizeof st[0], "%s z@ = %s_add_epi16(hi@, hi@);", R, P);
     snprintf(st[ns++], sizeof st[0], "%s s@ = %s_mulhrs_epi16(z@, z@);", R, P);
     split = ns;
     snprintf(st[ns++], sizeof st[0], "%s q@ = %s_sub_epi16(c3, %s_mulhi_epu16(s@, c5));", R, P, P);
     snprintf(st[ns++], sizeof st[0], "%s p@ = %s_sub_epi16(c1, %s_mulhi_epu16(s@, q@));", R, P, P);
     snprintf(st[ns++], sizeof st[0], "%s r@ = %s_mulhrs_epi16(z@, p@);", R, P);
-    if (avx2) /* vpsignw zeroes where its sign operand is 0: hi = 0 or x = 0, where r = 0 */
+    if (is_cos)
+        ;
+    else if (avx2) /* vpsignw zeroes where its sign operand is 0: hi = 0 or x = 0, where r = 0 */
         snprintf(st[ns++], sizeof st[0], "r@ = _mm256_sign_epi16(_mm256_sign_epi16(r@, _mm256_xor_si256(hi@, z@)), xv@);");
     else
         snprintf(st[ns++], sizeof st[0],
@@ -1396,8 +1410,8 @@ static void emit16_6(fx_gen *G, pf_buf *out, int is_cos)
                   P, (int)(int16_t)(uint16_t)T->pc5);
         if (is_cos)
             pf_printf(&kern, "    const %s one = %s_set1_epi16(0x4000);\n", R, P);
-        else if (!v)
-            pf_printf(&kern, "    const %s zero = %s_setzero_si512();\n", R, P);
+        if (!is_cos || v)
+            pf_printf(&kern, "    const %s zero = %s_setzero_si%d();\n", R, P, v ? 256 : 512);
         if (T->kh == 1 || T->kh == 2)
             pf_put(&kern, "    (void)kh;\n");
         pf_buf s1 = {0}, s2 = {0};
@@ -1434,14 +1448,14 @@ static void emit16_6(fx_gen *G, pf_buf *out, int is_cos)
             pf_put(&s2, "        __mmask32 neg = _mm512_movepi16_mask(_mm512_ternarylogic_epi32(hi, z, xv, 0x96));\n"
                           "        r = _mm512_mask_sub_epi16(r, neg, zero, r);\n");
         /* the chain of one block (some 20 cycles of multiplies) is longer than
-           the CPU overlaps over blocks: cos software pipelined, block i's
-           reduction and square beside block i - L's polynomial */
+           the CPU overlaps over blocks: cos's AVX-512 loop software pipelined,
+           block i's reduction and square beside block i - L's polynomial; the
+           other loops four blocks a pass (tr6_loop) */
         static const char *const cvs[] = {"z", "s"};
-        if (is_cos)
-            fx_pipe_loop(&kern, R, L, s1.s, s2.s, cvs, 2,
-                         v ? "_mm256_storeu_si256((__m256i *)(y + i - 16), r);" : "_mm512_storeu_si512(y + i - 32, r);", N);
+        if (is_cos && !v)
+            fx_pipe_loop(&kern, R, L, s1.s, s2.s, cvs, 2, "_mm512_storeu_si512(y + i - 32, r);", N);
         else
-            tr6_sin_loop(&kern, v, T->kh, N);
+            tr6_loop(&kern, v, is_cos, T->kh, N);
         free(s1.s);
         free(s2.s);
     }
@@ -1450,10 +1464,9 @@ static void emit16_6(fx_gen *G, pf_buf *out, int is_cos)
              "every step in 16-bit lanes; the AVX-512BW (x86-64-v4) and AVX2 (x86-64-v3) loops by intrinsics "
              "(pmulhuw, pmulhrsw), %s vector instructions per vector%s; the default clone, scalar form: the same "
              "steps in plain C",
-             is_cos ? "13 (AVX2) or 14 (AVX-512: |x| as an unsigned min(x, -x), as vpabsw shares the multipliers' "
-                      "pipes on Zen 4)"
-                    : "14",
-             is_cos ? "" : ", four vectors a pass");
+             is_cos ? "14 (|x| as an unsigned min(x, -x), as vpabsw shares the multipliers' pipes on Zen 4)"
+                    : "14 (AVX2: |x| as an unsigned min(x, -x))",
+             is_cos ? ", the AVX2 loop four vectors a pass" : ", four vectors a pass");
     const char *kv[] = {"FUNC", is_cos ? "cos" : "sin", "NAME", N, "IT", G->it, "OT", G->ot, "BODY", body.s,
                         "KERNEL", kern.s, NULL};
     pf_subst(out, pf_template("fx_sincos16p.c"), kv);
