@@ -14,6 +14,7 @@
 #include "fixed_internal.h"
 #include "round_fixed.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -1255,18 +1256,21 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
    AVX2 (cos's AVX-512 loop is fx_pipe_loop's, which measured as fast).
    Four blocks of L lanes a pass, then single blocks, then the scalar form.
    Each line of st[] is one step, written with @ for the block's number and
-   $ for its offset in x and y; the AVX-512 loop emits every step for the
-   four blocks before the next step (interleaved), the AVX2 ones the
-   reductions and squares of the four blocks, then their polynomials (and
-   signs).  The AVX2 loops take |x| as an unsigned min(x, -x), as cos's
-   AVX-512 loop does (vpabsw shares the multipliers' pipes on Zen 4).
-   Those were the fastest measured (2026-11-26, Zen 4, an A/B harness: best
-   of 40 rounds of 20 passes over the 2^16 inputs shuffled, 3 runs, ns/elem:
-   sin 0.0771 -> 0.0722 on AVX-512, 0.0844 -> 0.0777 on AVX2; cos AVX2
-   0.0808 (fx_pipe_loop) -> 0.0741; 2, 3, 6 and 8 blocks, the other order,
-   vpabsw or min(x, -x) the other way round and fx_pipe_loop's pipelining
-   measured slower on one ISA or both).  The same steps and values as one
-   block a pass. */
+   $ for its offset in x and y.  The AVX2 loops emit the reductions and
+   squares of the four blocks, then their polynomials (and signs), and take
+   |x| as an unsigned min(x, -x), as cos's AVX-512 loop does (vpabsw shares
+   the multipliers' pipes on Zen 4).  The AVX-512 sin loop is software
+   pipelined over groups of four blocks: a pass runs the first half (up to
+   q) of group i and the second half of group i - 4L, four lines (one step
+   of the four blocks) of one half, then four of the other.  Those were the
+   fastest measured (2026-11-26, Zen 4, an A/B harness: best of 40 rounds of
+   20 passes over the 2^16 inputs shuffled, 3 runs, ns/elem: sin on AVX-512
+   0.0771 (one block a pass) -> 0.0722 (four, interleaved step by step, not
+   pipelined) -> 0.0694 (this), on AVX2 0.0844 -> 0.0768; cos on AVX2
+   0.0808 (fx_pipe_loop) -> 0.0741.  Slower, or no faster, on one ISA or
+   both: 2, 3, 5, 6 and 8 blocks, the other orders, the halves split after
+   s or after p, vpabsw or min(x, -x) the other way round, fx_pipe_loop's
+   one-block pipelining).  The same steps and values as one block a pass. */
 static void tr6_put_step(pf_buf *b, const char *t, int k, int L)
 {
     pf_put(b, "        ");
@@ -1326,6 +1330,85 @@ static void tr6_loop(pf_buf *kern, int avx2, int is_cos, int64_t kh, const char 
         snprintf(st[ns++], sizeof st[0], "_mm256_storeu_si256((__m256i *)(y + i$), r@);");
     else
         snprintf(st[ns++], sizeof st[0], "_mm512_storeu_si512(y + i$, r@);");
+    if (!avx2 && !is_cos) {
+        /* AVX-512 sin: software pipelined over groups of four blocks, a
+           pass running the reduction, square and q of group i (steps
+           0..split) beside p, r, the sign and the store of group i - 4L
+           (whose xv, hi, z, s and q are carried as c*), four lines of one
+           and four of the other in turn */
+        static const char *const cv[] = {"xv", "hi", "z", "s", "q"};
+        const int nc = 5, sp = split + 1; /* q joins the first half */
+        char bst[6][200];
+        int nb = 0;
+        for (int j = sp; j < ns; j++) { /* the second half on the carried values */
+            char *o = bst[nb++];
+            const char *c = st[j];
+            size_t w = 0;
+            while (*c && w + 8 < sizeof bst[0]) {
+                int hit = 0;
+                for (int v = 0; v < nc && !hit; v++) {
+                    size_t l = strlen(cv[v]);
+                    int start = c == st[j] || !(isalnum((unsigned char)c[-1]) || c[-1] == '_');
+                    if (start && !strncmp(c, cv[v], l) && c[l] == '@') {
+                        w += (size_t)snprintf(o + w, sizeof bst[0] - w, "c%s", cv[v]);
+                        c += l;
+                        hit = 1;
+                    }
+                }
+                if (!hit) {
+                    if (!strncmp(c, "i$", 2)) {
+                        w += (size_t)snprintf(o + w, sizeof bst[0] - w, "i - %d$", U * L);
+                        c += 2;
+                    } else
+                        o[w++] = *c++;
+                }
+            }
+            o[w] = 0;
+        }
+        pf_printf(kern, "    size_t i = 0;\n    if (n >= %d) {\n", U * L);
+        for (int k = 0; k < U; k++) {
+            pf_printf(kern, "        %s", R);
+            for (int v = 0; v < nc; v++)
+                pf_printf(kern, "%s c%s%d", v ? "," : "", cv[v], k);
+            pf_put(kern, ";\n");
+        }
+        pf_put(kern, "        {\n");
+        for (int j = 0; j < sp; j++)
+            for (int k = 0; k < U; k++) {
+                pf_put(kern, "    ");
+                tr6_put_step(kern, st[j], k, L);
+            }
+        for (int k = 0; k < U; k++)
+            for (int v = 0; v < nc; v++)
+                pf_printf(kern, "            c%s%d = %s%d;\n", cv[v], k, cv[v], k);
+        pf_printf(kern, "        }\n        for (i = %d; i + %d <= n; i += %d) { /* group i's first half, group i - %d's "
+                        "second */\n", U * L, U * L, U * L, U * L);
+        for (int j = 0; j < sp || j < nb; j++) {
+            for (int k = 0; k < U && j < sp; k++) {
+                pf_put(kern, "    ");
+                tr6_put_step(kern, st[j], k, L);
+            }
+            for (int k = 0; k < U && j < nb; k++) {
+                pf_put(kern, "    ");
+                tr6_put_step(kern, bst[j], k, L);
+            }
+        }
+        for (int k = 0; k < U; k++)
+            for (int v = 0; v < nc; v++)
+                pf_printf(kern, "            c%s%d = %s%d;\n", cv[v], k, cv[v], k);
+        pf_put(kern, "        }\n        {\n");
+        for (int j = 0; j < nb; j++)
+            for (int k = 0; k < U; k++) {
+                pf_put(kern, "    ");
+                tr6_put_step(kern, bst[j], k, L);
+            }
+        pf_put(kern, "        }\n    }\n");
+        pf_printf(kern, "    for (; i + %d <= n; i += %d) {\n", L, L);
+        for (int j = 0; j < ns; j++)
+            tr6_put_step(kern, st[j], 0, L);
+        pf_printf(kern, "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif", N);
+        return;
+    }
     pf_printf(kern, "    size_t i = 0;\n    for (; i + %d <= n; i += %d) { /* %d blocks a pass, %s */\n", U * L, U * L, U,
               avx2 ? "the reductions, then the polynomials" : "step by step");
     if (avx2) {
@@ -1466,7 +1549,8 @@ static void emit16_6(fx_gen *G, pf_buf *out, int is_cos)
              "steps in plain C",
              is_cos ? "14 (|x| as an unsigned min(x, -x), as vpabsw shares the multipliers' pipes on Zen 4)"
                     : "14 (AVX2: |x| as an unsigned min(x, -x))",
-             is_cos ? ", the AVX2 loop four vectors a pass" : ", four vectors a pass");
+             is_cos ? ", the AVX2 loop four vectors a pass"
+                    : ", four vectors a pass (AVX-512: software pipelined over groups of four)");
     const char *kv[] = {"FUNC", is_cos ? "cos" : "sin", "NAME", N, "IT", G->it, "OT", G->ot, "BODY", body.s,
                         "KERNEL", kern.s, NULL};
     pf_subst(out, pf_template("fx_sincos16p.c"), kv);
