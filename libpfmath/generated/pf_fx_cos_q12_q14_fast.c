@@ -15,10 +15,10 @@
  * Order:       5 (P(s) = C1 - s (C3 - s C5), s = t^2: three fixed-point coefficients, no 
  *              tables); int16_t words: 16-bit lanes
  * Lanes:       every step in 16-bit lanes; the AVX-512BW (x86-64-v4) and AVX2 (x86-64-v3) loops 
- *              by intrinsics (pmulhuw, pmulhrsw), 13 (AVX2) or 14 (AVX-512: |x| as an unsigned 
- *              min(x, -x), as vpabsw shares the multipliers' pipes on Zen 4) vector 
- *              instructions per vector; the default clone, scalar form: the same steps in plain 
- *              C
+ *              by intrinsics (pmulhuw, pmulhrsw), 14 (|x| as an unsigned min(x, -x), as vpabsw 
+ *              shares the multipliers' pipes on Zen 4) vector instructions per vector, four 
+ *              vectors a pass (AVX-512: software pipelined over groups of four); the default 
+ *              clone, scalar form: the same steps in plain C
  * Method:      the one-parameter family that meets the constraints (C5 = 4m, C3 = 4m + 2^14, C1 
  *              = m + 3 2^13), m within 64 of P's linear term pi/2, the m with the smallest 
  *              largest (pre-rounding error + 1/2 lsb) / max(2^-10 |f|, 4 lsb) over every 16-bit 
@@ -268,48 +268,136 @@ static void pf_cos_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *res
     const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2);
     const __m512i c1 = _mm512_set1_epi16(25733), c3 = _mm512_set1_epi16(21012), c5 = _mm512_set1_epi16(4628);
     const __m512i one = _mm512_set1_epi16(0x4000);
+    const __m512i zero = _mm512_setzero_si512();
     (void)kh;
     size_t i = 0;
-    if (n >= 32) {
-        /* software pipelined: a pass runs the first steps of block i and the
-           rest of block i - 32 (one block's chain is longer than the CPU overlaps) */
-        __m512i p_z, p_s;
+    if (n >= 128) {
+        __m512i cz0, cs0, cq0;
+        __m512i cz1, cs1, cq1;
+        __m512i cz2, cs2, cq2;
+        __m512i cz3, cs3, cq3;
         {
-            __m512i xv = _mm512_loadu_si512(x + i);
-            __m512i ax = _mm512_min_epu16(xv, _mm512_sub_epi16(_mm512_setzero_si512(), xv)); /* |x| */
-            __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_add_epi16(ax, ax));
-            __m512i z = _mm512_sub_epi16(one, _mm512_abs_epi16(hi));
-            z = _mm512_adds_epi16(z, z);
-            __m512i s = _mm512_mulhrs_epi16(z, z);
-            p_z = z, p_s = s;
+            __m512i xv0 = _mm512_loadu_si512(x + i);
+            __m512i xv1 = _mm512_loadu_si512(x + i + 32);
+            __m512i xv2 = _mm512_loadu_si512(x + i + 64);
+            __m512i xv3 = _mm512_loadu_si512(x + i + 96);
+            __m512i ax0 = _mm512_min_epu16(xv0, _mm512_sub_epi16(zero, xv0)); /* |x| */
+            __m512i ax1 = _mm512_min_epu16(xv1, _mm512_sub_epi16(zero, xv1)); /* |x| */
+            __m512i ax2 = _mm512_min_epu16(xv2, _mm512_sub_epi16(zero, xv2)); /* |x| */
+            __m512i ax3 = _mm512_min_epu16(xv3, _mm512_sub_epi16(zero, xv3)); /* |x| */
+            __m512i hi0 = _mm512_add_epi16(_mm512_mulhi_epu16(ax0, kl), _mm512_add_epi16(ax0, ax0));
+            __m512i hi1 = _mm512_add_epi16(_mm512_mulhi_epu16(ax1, kl), _mm512_add_epi16(ax1, ax1));
+            __m512i hi2 = _mm512_add_epi16(_mm512_mulhi_epu16(ax2, kl), _mm512_add_epi16(ax2, ax2));
+            __m512i hi3 = _mm512_add_epi16(_mm512_mulhi_epu16(ax3, kl), _mm512_add_epi16(ax3, ax3));
+            __m512i v0 = _mm512_sub_epi16(one, _mm512_abs_epi16(hi0));
+            __m512i v1 = _mm512_sub_epi16(one, _mm512_abs_epi16(hi1));
+            __m512i v2 = _mm512_sub_epi16(one, _mm512_abs_epi16(hi2));
+            __m512i v3 = _mm512_sub_epi16(one, _mm512_abs_epi16(hi3));
+            __m512i z0 = _mm512_adds_epi16(v0, v0);
+            __m512i z1 = _mm512_adds_epi16(v1, v1);
+            __m512i z2 = _mm512_adds_epi16(v2, v2);
+            __m512i z3 = _mm512_adds_epi16(v3, v3);
+            __m512i s0 = _mm512_mulhrs_epi16(z0, z0);
+            __m512i s1 = _mm512_mulhrs_epi16(z1, z1);
+            __m512i s2 = _mm512_mulhrs_epi16(z2, z2);
+            __m512i s3 = _mm512_mulhrs_epi16(z3, z3);
+            __m512i q0 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s0, c5));
+            __m512i q1 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s1, c5));
+            __m512i q2 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s2, c5));
+            __m512i q3 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s3, c5));
+            cz0 = z0;
+            cs0 = s0;
+            cq0 = q0;
+            cz1 = z1;
+            cs1 = s1;
+            cq1 = q1;
+            cz2 = z2;
+            cs2 = s2;
+            cq2 = q2;
+            cz3 = z3;
+            cs3 = s3;
+            cq3 = q3;
         }
-        for (i = 32; i + 32 <= n; i += 32) {
-            __m512i n_z, n_s;
-            {
-                __m512i xv = _mm512_loadu_si512(x + i);
-                __m512i ax = _mm512_min_epu16(xv, _mm512_sub_epi16(_mm512_setzero_si512(), xv)); /* |x| */
-                __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_add_epi16(ax, ax));
-                __m512i z = _mm512_sub_epi16(one, _mm512_abs_epi16(hi));
-                z = _mm512_adds_epi16(z, z);
-                __m512i s = _mm512_mulhrs_epi16(z, z);
-                n_z = z, n_s = s;
-            }
-            {
-                __m512i z = p_z, s = p_s;
-                __m512i q = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s, c5));
-                __m512i p = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s, q));
-                __m512i r = _mm512_mulhrs_epi16(z, p);
-                _mm512_storeu_si512(y + i - 32, r);
-            }
-            p_z = n_z, p_s = n_s;
+        for (i = 128; i + 128 <= n; i += 128) { /* group i's first half, group i - 128's second */
+            __m512i xv0 = _mm512_loadu_si512(x + i);
+            __m512i xv1 = _mm512_loadu_si512(x + i + 32);
+            __m512i xv2 = _mm512_loadu_si512(x + i + 64);
+            __m512i xv3 = _mm512_loadu_si512(x + i + 96);
+            __m512i p0 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs0, cq0));
+            __m512i p1 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs1, cq1));
+            __m512i p2 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs2, cq2));
+            __m512i p3 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs3, cq3));
+            __m512i ax0 = _mm512_min_epu16(xv0, _mm512_sub_epi16(zero, xv0)); /* |x| */
+            __m512i ax1 = _mm512_min_epu16(xv1, _mm512_sub_epi16(zero, xv1)); /* |x| */
+            __m512i ax2 = _mm512_min_epu16(xv2, _mm512_sub_epi16(zero, xv2)); /* |x| */
+            __m512i ax3 = _mm512_min_epu16(xv3, _mm512_sub_epi16(zero, xv3)); /* |x| */
+            __m512i r0 = _mm512_mulhrs_epi16(cz0, p0);
+            __m512i r1 = _mm512_mulhrs_epi16(cz1, p1);
+            __m512i r2 = _mm512_mulhrs_epi16(cz2, p2);
+            __m512i r3 = _mm512_mulhrs_epi16(cz3, p3);
+            __m512i hi0 = _mm512_add_epi16(_mm512_mulhi_epu16(ax0, kl), _mm512_add_epi16(ax0, ax0));
+            __m512i hi1 = _mm512_add_epi16(_mm512_mulhi_epu16(ax1, kl), _mm512_add_epi16(ax1, ax1));
+            __m512i hi2 = _mm512_add_epi16(_mm512_mulhi_epu16(ax2, kl), _mm512_add_epi16(ax2, ax2));
+            __m512i hi3 = _mm512_add_epi16(_mm512_mulhi_epu16(ax3, kl), _mm512_add_epi16(ax3, ax3));
+            _mm512_storeu_si512(y + i - 128, r0);
+            _mm512_storeu_si512(y + i - 128 + 32, r1);
+            _mm512_storeu_si512(y + i - 128 + 64, r2);
+            _mm512_storeu_si512(y + i - 128 + 96, r3);
+            __m512i v0 = _mm512_sub_epi16(one, _mm512_abs_epi16(hi0));
+            __m512i v1 = _mm512_sub_epi16(one, _mm512_abs_epi16(hi1));
+            __m512i v2 = _mm512_sub_epi16(one, _mm512_abs_epi16(hi2));
+            __m512i v3 = _mm512_sub_epi16(one, _mm512_abs_epi16(hi3));
+            __m512i z0 = _mm512_adds_epi16(v0, v0);
+            __m512i z1 = _mm512_adds_epi16(v1, v1);
+            __m512i z2 = _mm512_adds_epi16(v2, v2);
+            __m512i z3 = _mm512_adds_epi16(v3, v3);
+            __m512i s0 = _mm512_mulhrs_epi16(z0, z0);
+            __m512i s1 = _mm512_mulhrs_epi16(z1, z1);
+            __m512i s2 = _mm512_mulhrs_epi16(z2, z2);
+            __m512i s3 = _mm512_mulhrs_epi16(z3, z3);
+            __m512i q0 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s0, c5));
+            __m512i q1 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s1, c5));
+            __m512i q2 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s2, c5));
+            __m512i q3 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s3, c5));
+            cz0 = z0;
+            cs0 = s0;
+            cq0 = q0;
+            cz1 = z1;
+            cs1 = s1;
+            cq1 = q1;
+            cz2 = z2;
+            cs2 = s2;
+            cq2 = q2;
+            cz3 = z3;
+            cs3 = s3;
+            cq3 = q3;
         }
         {
-            __m512i z = p_z, s = p_s;
-            __m512i q = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s, c5));
-            __m512i p = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s, q));
-            __m512i r = _mm512_mulhrs_epi16(z, p);
-            _mm512_storeu_si512(y + i - 32, r);
+            __m512i p0 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs0, cq0));
+            __m512i p1 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs1, cq1));
+            __m512i p2 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs2, cq2));
+            __m512i p3 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs3, cq3));
+            __m512i r0 = _mm512_mulhrs_epi16(cz0, p0);
+            __m512i r1 = _mm512_mulhrs_epi16(cz1, p1);
+            __m512i r2 = _mm512_mulhrs_epi16(cz2, p2);
+            __m512i r3 = _mm512_mulhrs_epi16(cz3, p3);
+            _mm512_storeu_si512(y + i - 128, r0);
+            _mm512_storeu_si512(y + i - 128 + 32, r1);
+            _mm512_storeu_si512(y + i - 128 + 64, r2);
+            _mm512_storeu_si512(y + i - 128 + 96, r3);
         }
+    }
+    for (; i + 32 <= n; i += 32) {
+        __m512i xv0 = _mm512_loadu_si512(x + i);
+        __m512i ax0 = _mm512_min_epu16(xv0, _mm512_sub_epi16(zero, xv0)); /* |x| */
+        __m512i hi0 = _mm512_add_epi16(_mm512_mulhi_epu16(ax0, kl), _mm512_add_epi16(ax0, ax0));
+        __m512i v0 = _mm512_sub_epi16(one, _mm512_abs_epi16(hi0));
+        __m512i z0 = _mm512_adds_epi16(v0, v0);
+        __m512i s0 = _mm512_mulhrs_epi16(z0, z0);
+        __m512i q0 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s0, c5));
+        __m512i p0 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s0, q0));
+        __m512i r0 = _mm512_mulhrs_epi16(z0, p0);
+        _mm512_storeu_si512(y + i, r0);
     }
     for (; i < n; i++)
         y[i] = pf_cos_q12_q14_fast(x[i]);
@@ -325,48 +413,62 @@ static void pf_cos_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *r
     const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2);
     const __m256i c1 = _mm256_set1_epi16(25733), c3 = _mm256_set1_epi16(21012), c5 = _mm256_set1_epi16(4628);
     const __m256i one = _mm256_set1_epi16(0x4000);
+    const __m256i zero = _mm256_setzero_si256();
     (void)kh;
     size_t i = 0;
-    if (n >= 16) {
-        /* software pipelined: a pass runs the first steps of block i and the
-           rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
-        __m256i p_z, p_s;
-        {
-            __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-            __m256i ax = _mm256_abs_epi16(xv);
-            __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_add_epi16(ax, ax));
-            __m256i z = _mm256_sub_epi16(one, _mm256_abs_epi16(hi));
-            z = _mm256_adds_epi16(z, z);
-            __m256i s = _mm256_mulhrs_epi16(z, z);
-            p_z = z, p_s = s;
-        }
-        for (i = 16; i + 16 <= n; i += 16) {
-            __m256i n_z, n_s;
-            {
-                __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-                __m256i ax = _mm256_abs_epi16(xv);
-                __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_add_epi16(ax, ax));
-                __m256i z = _mm256_sub_epi16(one, _mm256_abs_epi16(hi));
-                z = _mm256_adds_epi16(z, z);
-                __m256i s = _mm256_mulhrs_epi16(z, z);
-                n_z = z, n_s = s;
-            }
-            {
-                __m256i z = p_z, s = p_s;
-                __m256i q = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s, c5));
-                __m256i p = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s, q));
-                __m256i r = _mm256_mulhrs_epi16(z, p);
-                _mm256_storeu_si256((__m256i *)(y + i - 16), r);
-            }
-            p_z = n_z, p_s = n_s;
-        }
-        {
-            __m256i z = p_z, s = p_s;
-            __m256i q = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s, c5));
-            __m256i p = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s, q));
-            __m256i r = _mm256_mulhrs_epi16(z, p);
-            _mm256_storeu_si256((__m256i *)(y + i - 16), r);
-        }
+    for (; i + 64 <= n; i += 64) { /* 4 blocks a pass, the reductions, then the polynomials */
+        __m256i xv0 = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i ax0 = _mm256_min_epu16(xv0, _mm256_sub_epi16(zero, xv0)); /* |x| */
+        __m256i hi0 = _mm256_add_epi16(_mm256_mulhi_epu16(ax0, kl), _mm256_add_epi16(ax0, ax0));
+        __m256i v0 = _mm256_sub_epi16(one, _mm256_abs_epi16(hi0));
+        __m256i z0 = _mm256_adds_epi16(v0, v0);
+        __m256i s0 = _mm256_mulhrs_epi16(z0, z0);
+        __m256i xv1 = _mm256_loadu_si256((const __m256i *)(x + i + 16));
+        __m256i ax1 = _mm256_min_epu16(xv1, _mm256_sub_epi16(zero, xv1)); /* |x| */
+        __m256i hi1 = _mm256_add_epi16(_mm256_mulhi_epu16(ax1, kl), _mm256_add_epi16(ax1, ax1));
+        __m256i v1 = _mm256_sub_epi16(one, _mm256_abs_epi16(hi1));
+        __m256i z1 = _mm256_adds_epi16(v1, v1);
+        __m256i s1 = _mm256_mulhrs_epi16(z1, z1);
+        __m256i xv2 = _mm256_loadu_si256((const __m256i *)(x + i + 32));
+        __m256i ax2 = _mm256_min_epu16(xv2, _mm256_sub_epi16(zero, xv2)); /* |x| */
+        __m256i hi2 = _mm256_add_epi16(_mm256_mulhi_epu16(ax2, kl), _mm256_add_epi16(ax2, ax2));
+        __m256i v2 = _mm256_sub_epi16(one, _mm256_abs_epi16(hi2));
+        __m256i z2 = _mm256_adds_epi16(v2, v2);
+        __m256i s2 = _mm256_mulhrs_epi16(z2, z2);
+        __m256i xv3 = _mm256_loadu_si256((const __m256i *)(x + i + 48));
+        __m256i ax3 = _mm256_min_epu16(xv3, _mm256_sub_epi16(zero, xv3)); /* |x| */
+        __m256i hi3 = _mm256_add_epi16(_mm256_mulhi_epu16(ax3, kl), _mm256_add_epi16(ax3, ax3));
+        __m256i v3 = _mm256_sub_epi16(one, _mm256_abs_epi16(hi3));
+        __m256i z3 = _mm256_adds_epi16(v3, v3);
+        __m256i s3 = _mm256_mulhrs_epi16(z3, z3);
+        __m256i q0 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s0, c5));
+        __m256i p0 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s0, q0));
+        __m256i r0 = _mm256_mulhrs_epi16(z0, p0);
+        _mm256_storeu_si256((__m256i *)(y + i), r0);
+        __m256i q1 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s1, c5));
+        __m256i p1 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s1, q1));
+        __m256i r1 = _mm256_mulhrs_epi16(z1, p1);
+        _mm256_storeu_si256((__m256i *)(y + i + 16), r1);
+        __m256i q2 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s2, c5));
+        __m256i p2 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s2, q2));
+        __m256i r2 = _mm256_mulhrs_epi16(z2, p2);
+        _mm256_storeu_si256((__m256i *)(y + i + 32), r2);
+        __m256i q3 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s3, c5));
+        __m256i p3 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s3, q3));
+        __m256i r3 = _mm256_mulhrs_epi16(z3, p3);
+        _mm256_storeu_si256((__m256i *)(y + i + 48), r3);
+    }
+    for (; i + 16 <= n; i += 16) {
+        __m256i xv0 = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i ax0 = _mm256_min_epu16(xv0, _mm256_sub_epi16(zero, xv0)); /* |x| */
+        __m256i hi0 = _mm256_add_epi16(_mm256_mulhi_epu16(ax0, kl), _mm256_add_epi16(ax0, ax0));
+        __m256i v0 = _mm256_sub_epi16(one, _mm256_abs_epi16(hi0));
+        __m256i z0 = _mm256_adds_epi16(v0, v0);
+        __m256i s0 = _mm256_mulhrs_epi16(z0, z0);
+        __m256i q0 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s0, c5));
+        __m256i p0 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s0, q0));
+        __m256i r0 = _mm256_mulhrs_epi16(z0, p0);
+        _mm256_storeu_si256((__m256i *)(y + i), r0);
     }
     for (; i < n; i++)
         y[i] = pf_cos_q12_q14_fast(x[i]);

@@ -15,8 +15,9 @@
  * Order:       5 (P(s) = C1 - s (C3 - s C5), s = t^2: three fixed-point coefficients, no 
  *              tables); int16_t words: 16-bit lanes
  * Lanes:       every step in 16-bit lanes; the AVX-512BW (x86-64-v4) and AVX2 (x86-64-v3) loops 
- *              by intrinsics (pmulhuw, pmulhrsw), 14 vector instructions per vector; the 
- *              default clone, scalar form: the same steps in plain C
+ *              by intrinsics (pmulhuw, pmulhrsw), 14 (AVX2: |x| as an unsigned min(x, -x)) 
+ *              vector instructions per vector, four vectors a pass (AVX-512: software pipelined 
+ *              over groups of four); the default clone, scalar form: the same steps in plain C
  * Method:      the one-parameter family that meets the constraints (C5 = 4m, C3 = 4m + 2^14, C1 
  *              = m + 3 2^13), m within 64 of P's linear term pi/2, the m with the smallest 
  *              largest (pre-rounding error + 1/2 lsb) / max(2^-10 |f|, 4 lsb) over every 16-bit 
@@ -270,25 +271,157 @@ static void pf_sin_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *res
     const __m512i zero = _mm512_setzero_si512();
     (void)kh;
     size_t i = 0;
+    if (n >= 128) {
+        __m512i cxv0, chi0, cz0, cs0, cq0;
+        __m512i cxv1, chi1, cz1, cs1, cq1;
+        __m512i cxv2, chi2, cz2, cs2, cq2;
+        __m512i cxv3, chi3, cz3, cs3, cq3;
+        {
+            __m512i xv0 = _mm512_loadu_si512(x + i);
+            __m512i xv1 = _mm512_loadu_si512(x + i + 32);
+            __m512i xv2 = _mm512_loadu_si512(x + i + 64);
+            __m512i xv3 = _mm512_loadu_si512(x + i + 96);
+            __m512i ax0 = _mm512_abs_epi16(xv0);
+            __m512i ax1 = _mm512_abs_epi16(xv1);
+            __m512i ax2 = _mm512_abs_epi16(xv2);
+            __m512i ax3 = _mm512_abs_epi16(xv3);
+            __m512i hi0 = _mm512_add_epi16(_mm512_mulhi_epu16(ax0, kl), _mm512_add_epi16(ax0, ax0));
+            __m512i hi1 = _mm512_add_epi16(_mm512_mulhi_epu16(ax1, kl), _mm512_add_epi16(ax1, ax1));
+            __m512i hi2 = _mm512_add_epi16(_mm512_mulhi_epu16(ax2, kl), _mm512_add_epi16(ax2, ax2));
+            __m512i hi3 = _mm512_add_epi16(_mm512_mulhi_epu16(ax3, kl), _mm512_add_epi16(ax3, ax3));
+            __m512i z0 = _mm512_add_epi16(hi0, hi0);
+            __m512i z1 = _mm512_add_epi16(hi1, hi1);
+            __m512i z2 = _mm512_add_epi16(hi2, hi2);
+            __m512i z3 = _mm512_add_epi16(hi3, hi3);
+            __m512i s0 = _mm512_mulhrs_epi16(z0, z0);
+            __m512i s1 = _mm512_mulhrs_epi16(z1, z1);
+            __m512i s2 = _mm512_mulhrs_epi16(z2, z2);
+            __m512i s3 = _mm512_mulhrs_epi16(z3, z3);
+            __m512i q0 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s0, c5));
+            __m512i q1 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s1, c5));
+            __m512i q2 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s2, c5));
+            __m512i q3 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s3, c5));
+            cxv0 = xv0;
+            chi0 = hi0;
+            cz0 = z0;
+            cs0 = s0;
+            cq0 = q0;
+            cxv1 = xv1;
+            chi1 = hi1;
+            cz1 = z1;
+            cs1 = s1;
+            cq1 = q1;
+            cxv2 = xv2;
+            chi2 = hi2;
+            cz2 = z2;
+            cs2 = s2;
+            cq2 = q2;
+            cxv3 = xv3;
+            chi3 = hi3;
+            cz3 = z3;
+            cs3 = s3;
+            cq3 = q3;
+        }
+        for (i = 128; i + 128 <= n; i += 128) { /* group i's first half, group i - 128's second */
+            __m512i xv0 = _mm512_loadu_si512(x + i);
+            __m512i xv1 = _mm512_loadu_si512(x + i + 32);
+            __m512i xv2 = _mm512_loadu_si512(x + i + 64);
+            __m512i xv3 = _mm512_loadu_si512(x + i + 96);
+            __m512i p0 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs0, cq0));
+            __m512i p1 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs1, cq1));
+            __m512i p2 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs2, cq2));
+            __m512i p3 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs3, cq3));
+            __m512i ax0 = _mm512_abs_epi16(xv0);
+            __m512i ax1 = _mm512_abs_epi16(xv1);
+            __m512i ax2 = _mm512_abs_epi16(xv2);
+            __m512i ax3 = _mm512_abs_epi16(xv3);
+            __m512i r0 = _mm512_mulhrs_epi16(cz0, p0);
+            __m512i r1 = _mm512_mulhrs_epi16(cz1, p1);
+            __m512i r2 = _mm512_mulhrs_epi16(cz2, p2);
+            __m512i r3 = _mm512_mulhrs_epi16(cz3, p3);
+            __m512i hi0 = _mm512_add_epi16(_mm512_mulhi_epu16(ax0, kl), _mm512_add_epi16(ax0, ax0));
+            __m512i hi1 = _mm512_add_epi16(_mm512_mulhi_epu16(ax1, kl), _mm512_add_epi16(ax1, ax1));
+            __m512i hi2 = _mm512_add_epi16(_mm512_mulhi_epu16(ax2, kl), _mm512_add_epi16(ax2, ax2));
+            __m512i hi3 = _mm512_add_epi16(_mm512_mulhi_epu16(ax3, kl), _mm512_add_epi16(ax3, ax3));
+            r0 = _mm512_mask_sub_epi16(r0, _mm512_movepi16_mask(_mm512_ternarylogic_epi32(chi0, cz0, cxv0, 0x96)), zero, r0);
+            r1 = _mm512_mask_sub_epi16(r1, _mm512_movepi16_mask(_mm512_ternarylogic_epi32(chi1, cz1, cxv1, 0x96)), zero, r1);
+            r2 = _mm512_mask_sub_epi16(r2, _mm512_movepi16_mask(_mm512_ternarylogic_epi32(chi2, cz2, cxv2, 0x96)), zero, r2);
+            r3 = _mm512_mask_sub_epi16(r3, _mm512_movepi16_mask(_mm512_ternarylogic_epi32(chi3, cz3, cxv3, 0x96)), zero, r3);
+            __m512i z0 = _mm512_add_epi16(hi0, hi0);
+            __m512i z1 = _mm512_add_epi16(hi1, hi1);
+            __m512i z2 = _mm512_add_epi16(hi2, hi2);
+            __m512i z3 = _mm512_add_epi16(hi3, hi3);
+            _mm512_storeu_si512(y + i - 128, r0);
+            _mm512_storeu_si512(y + i - 128 + 32, r1);
+            _mm512_storeu_si512(y + i - 128 + 64, r2);
+            _mm512_storeu_si512(y + i - 128 + 96, r3);
+            __m512i s0 = _mm512_mulhrs_epi16(z0, z0);
+            __m512i s1 = _mm512_mulhrs_epi16(z1, z1);
+            __m512i s2 = _mm512_mulhrs_epi16(z2, z2);
+            __m512i s3 = _mm512_mulhrs_epi16(z3, z3);
+            __m512i q0 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s0, c5));
+            __m512i q1 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s1, c5));
+            __m512i q2 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s2, c5));
+            __m512i q3 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s3, c5));
+            cxv0 = xv0;
+            chi0 = hi0;
+            cz0 = z0;
+            cs0 = s0;
+            cq0 = q0;
+            cxv1 = xv1;
+            chi1 = hi1;
+            cz1 = z1;
+            cs1 = s1;
+            cq1 = q1;
+            cxv2 = xv2;
+            chi2 = hi2;
+            cz2 = z2;
+            cs2 = s2;
+            cq2 = q2;
+            cxv3 = xv3;
+            chi3 = hi3;
+            cz3 = z3;
+            cs3 = s3;
+            cq3 = q3;
+        }
+        {
+            __m512i p0 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs0, cq0));
+            __m512i p1 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs1, cq1));
+            __m512i p2 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs2, cq2));
+            __m512i p3 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(cs3, cq3));
+            __m512i r0 = _mm512_mulhrs_epi16(cz0, p0);
+            __m512i r1 = _mm512_mulhrs_epi16(cz1, p1);
+            __m512i r2 = _mm512_mulhrs_epi16(cz2, p2);
+            __m512i r3 = _mm512_mulhrs_epi16(cz3, p3);
+            r0 = _mm512_mask_sub_epi16(r0, _mm512_movepi16_mask(_mm512_ternarylogic_epi32(chi0, cz0, cxv0, 0x96)), zero, r0);
+            r1 = _mm512_mask_sub_epi16(r1, _mm512_movepi16_mask(_mm512_ternarylogic_epi32(chi1, cz1, cxv1, 0x96)), zero, r1);
+            r2 = _mm512_mask_sub_epi16(r2, _mm512_movepi16_mask(_mm512_ternarylogic_epi32(chi2, cz2, cxv2, 0x96)), zero, r2);
+            r3 = _mm512_mask_sub_epi16(r3, _mm512_movepi16_mask(_mm512_ternarylogic_epi32(chi3, cz3, cxv3, 0x96)), zero, r3);
+            _mm512_storeu_si512(y + i - 128, r0);
+            _mm512_storeu_si512(y + i - 128 + 32, r1);
+            _mm512_storeu_si512(y + i - 128 + 64, r2);
+            _mm512_storeu_si512(y + i - 128 + 96, r3);
+        }
+    }
     for (; i + 32 <= n; i += 32) {
-        __m512i xv = _mm512_loadu_si512(x + i);
-        __m512i ax = _mm512_abs_epi16(xv);
-        __m512i hi = _mm512_add_epi16(_mm512_mulhi_epu16(ax, kl), _mm512_add_epi16(ax, ax));
-        __m512i z = _mm512_add_epi16(hi, hi);
-        __m512i s = _mm512_mulhrs_epi16(z, z);
-        __m512i q = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s, c5));
-        __m512i p = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s, q));
-        __m512i r = _mm512_mulhrs_epi16(z, p);
-        __mmask32 neg = _mm512_movepi16_mask(_mm512_ternarylogic_epi32(hi, z, xv, 0x96));
-        r = _mm512_mask_sub_epi16(r, neg, zero, r);
-        _mm512_storeu_si512(y + i, r);
+        __m512i xv0 = _mm512_loadu_si512(x + i);
+        __m512i ax0 = _mm512_abs_epi16(xv0);
+        __m512i hi0 = _mm512_add_epi16(_mm512_mulhi_epu16(ax0, kl), _mm512_add_epi16(ax0, ax0));
+        __m512i z0 = _mm512_add_epi16(hi0, hi0);
+        __m512i s0 = _mm512_mulhrs_epi16(z0, z0);
+        __m512i q0 = _mm512_sub_epi16(c3, _mm512_mulhi_epu16(s0, c5));
+        __m512i p0 = _mm512_sub_epi16(c1, _mm512_mulhi_epu16(s0, q0));
+        __m512i r0 = _mm512_mulhrs_epi16(z0, p0);
+        r0 = _mm512_mask_sub_epi16(r0, _mm512_movepi16_mask(_mm512_ternarylogic_epi32(hi0, z0, xv0, 0x96)), zero, r0);
+        _mm512_storeu_si512(y + i, r0);
     }
     for (; i < n; i++)
         y[i] = pf_sin_q12_q14_fast(x[i]);
 }
 #endif
 
-/* AVX2 (x86-64-v3): the same steps on 16 lanes, the sign by vpsignw.  The same
+/* AVX2 (x86-64-v3): the same steps on 16 lanes, the sign by vpsignw (it zeroes where its
+   sign operand is 0: hi = 0 or x = 0, where r = 0).  The same
    values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
@@ -296,20 +429,62 @@ static void pf_sin_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *r
 {
     const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2);
     const __m256i c1 = _mm256_set1_epi16(25733), c3 = _mm256_set1_epi16(21012), c5 = _mm256_set1_epi16(4628);
+    const __m256i zero = _mm256_setzero_si256();
     (void)kh;
     size_t i = 0;
+    for (; i + 64 <= n; i += 64) { /* 4 blocks a pass, the reductions, then the polynomials */
+        __m256i xv0 = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i ax0 = _mm256_min_epu16(xv0, _mm256_sub_epi16(zero, xv0)); /* |x| */
+        __m256i hi0 = _mm256_add_epi16(_mm256_mulhi_epu16(ax0, kl), _mm256_add_epi16(ax0, ax0));
+        __m256i z0 = _mm256_add_epi16(hi0, hi0);
+        __m256i s0 = _mm256_mulhrs_epi16(z0, z0);
+        __m256i xv1 = _mm256_loadu_si256((const __m256i *)(x + i + 16));
+        __m256i ax1 = _mm256_min_epu16(xv1, _mm256_sub_epi16(zero, xv1)); /* |x| */
+        __m256i hi1 = _mm256_add_epi16(_mm256_mulhi_epu16(ax1, kl), _mm256_add_epi16(ax1, ax1));
+        __m256i z1 = _mm256_add_epi16(hi1, hi1);
+        __m256i s1 = _mm256_mulhrs_epi16(z1, z1);
+        __m256i xv2 = _mm256_loadu_si256((const __m256i *)(x + i + 32));
+        __m256i ax2 = _mm256_min_epu16(xv2, _mm256_sub_epi16(zero, xv2)); /* |x| */
+        __m256i hi2 = _mm256_add_epi16(_mm256_mulhi_epu16(ax2, kl), _mm256_add_epi16(ax2, ax2));
+        __m256i z2 = _mm256_add_epi16(hi2, hi2);
+        __m256i s2 = _mm256_mulhrs_epi16(z2, z2);
+        __m256i xv3 = _mm256_loadu_si256((const __m256i *)(x + i + 48));
+        __m256i ax3 = _mm256_min_epu16(xv3, _mm256_sub_epi16(zero, xv3)); /* |x| */
+        __m256i hi3 = _mm256_add_epi16(_mm256_mulhi_epu16(ax3, kl), _mm256_add_epi16(ax3, ax3));
+        __m256i z3 = _mm256_add_epi16(hi3, hi3);
+        __m256i s3 = _mm256_mulhrs_epi16(z3, z3);
+        __m256i q0 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s0, c5));
+        __m256i p0 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s0, q0));
+        __m256i r0 = _mm256_mulhrs_epi16(z0, p0);
+        r0 = _mm256_sign_epi16(_mm256_sign_epi16(r0, _mm256_xor_si256(hi0, z0)), xv0);
+        _mm256_storeu_si256((__m256i *)(y + i), r0);
+        __m256i q1 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s1, c5));
+        __m256i p1 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s1, q1));
+        __m256i r1 = _mm256_mulhrs_epi16(z1, p1);
+        r1 = _mm256_sign_epi16(_mm256_sign_epi16(r1, _mm256_xor_si256(hi1, z1)), xv1);
+        _mm256_storeu_si256((__m256i *)(y + i + 16), r1);
+        __m256i q2 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s2, c5));
+        __m256i p2 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s2, q2));
+        __m256i r2 = _mm256_mulhrs_epi16(z2, p2);
+        r2 = _mm256_sign_epi16(_mm256_sign_epi16(r2, _mm256_xor_si256(hi2, z2)), xv2);
+        _mm256_storeu_si256((__m256i *)(y + i + 32), r2);
+        __m256i q3 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s3, c5));
+        __m256i p3 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s3, q3));
+        __m256i r3 = _mm256_mulhrs_epi16(z3, p3);
+        r3 = _mm256_sign_epi16(_mm256_sign_epi16(r3, _mm256_xor_si256(hi3, z3)), xv3);
+        _mm256_storeu_si256((__m256i *)(y + i + 48), r3);
+    }
     for (; i + 16 <= n; i += 16) {
-        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-        __m256i ax = _mm256_abs_epi16(xv);
-        __m256i hi = _mm256_add_epi16(_mm256_mulhi_epu16(ax, kl), _mm256_add_epi16(ax, ax));
-        __m256i z = _mm256_add_epi16(hi, hi);
-        __m256i s = _mm256_mulhrs_epi16(z, z);
-        __m256i q = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s, c5));
-        __m256i p = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s, q));
-        __m256i r = _mm256_mulhrs_epi16(z, p);
-        /* vpsignw zeroes where its sign operand is 0: hi = 0 or x = 0, where r = 0 */
-        r = _mm256_sign_epi16(_mm256_sign_epi16(r, _mm256_xor_si256(hi, z)), xv);
-        _mm256_storeu_si256((__m256i *)(y + i), r);
+        __m256i xv0 = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i ax0 = _mm256_min_epu16(xv0, _mm256_sub_epi16(zero, xv0)); /* |x| */
+        __m256i hi0 = _mm256_add_epi16(_mm256_mulhi_epu16(ax0, kl), _mm256_add_epi16(ax0, ax0));
+        __m256i z0 = _mm256_add_epi16(hi0, hi0);
+        __m256i s0 = _mm256_mulhrs_epi16(z0, z0);
+        __m256i q0 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s0, c5));
+        __m256i p0 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s0, q0));
+        __m256i r0 = _mm256_mulhrs_epi16(z0, p0);
+        r0 = _mm256_sign_epi16(_mm256_sign_epi16(r0, _mm256_xor_si256(hi0, z0)), xv0);
+        _mm256_storeu_si256((__m256i *)(y + i), r0);
     }
     for (; i < n; i++)
         y[i] = pf_sin_q12_q14_fast(x[i]);
