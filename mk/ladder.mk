@@ -23,6 +23,10 @@ LADDER_LEVELS := 1 2 4 128 8192
 LADDER_EXTRA_log  := 0.55 0.6
 LADDER_EXTRA_log2 := 0.55 0.6 3
 ladder_levels = $(LADDER_LEVELS) $(LADDER_EXTRA_$(1))
+# sin, cos: sleef-u10 sits at 0.78-0.79 ULP, below the float-lane exact row's
+# 0.83; the exact-double row (0.60) takes 0.75
+LADDER_EXTRA_sin := 0.75
+LADDER_EXTRA_cos := 0.75
 # acos: SLEEF u35 sits at 1.28 ULP, between 1 and 1.5 (the mid scheme's floor
 # is about 1.1: gen/templates/acos_mid.c.in)
 LADDER_EXTRA_acos := 1.25

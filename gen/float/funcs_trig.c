@@ -684,6 +684,20 @@ static int model_ff(const fit_poly *p, int order, pf_scheme *sc)
      .b = PIO4 + FF_PAST, .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1,               \
      .con = {CON_SLOPE1}, .default_order = SIN_FF_ORDER, .real = "fma", .kscale = phase,          \
      .ulp_bound = 1.0, .extra = extra_trig_ff, .model = model_ff, .ladder_cost = 20}
+/* exact-double (ladder only, --max-ulp below the float-lane row's 0.83):
+   the previous exact scheme (sin_pi.c.in), reduction by pi and Horner in
+   double lanes with fma (model_double: 0.603 ULP at order 9, every float
+   0.6031).  It keeps a pfmath point more accurate than SLEEF u10 (0.78-0.79
+   ULP on the bench's domains) at the ladder's 0.75 level (mk/ladder.mk);
+   the double rule's cost (4 a term + 12) puts it above the float-lane row,
+   so the 1-ULP level keeps that one. */
+#define ROW_SIN_DBL(fn, phase, red)                                                               \
+    {.func = fn, .reduction = "pi", .variant = "exact-double", .tmpl = "sin_pi", .arity = 1,      \
+     .head = "trig_ph.h", .tail = "tail_twopath.c",                                               \
+     .reduction_text = red RED_EXACT, .target_text = "sin(t)", .g = g_sin, .a = 0, .b = PIO2,     \
+     .parity = FIT_PARITY_ODD, .errkind = FIT_REL, .ncon = 1, .con = {CON_SLOPE1},                \
+     .default_order = SIN_EXACT_ORDER, .real = "double", .kscale = phase, .ulp_bound = 1.0,      \
+     .extra = extra_trig_double, .model = model_double}
 /* sin, fast (sin_pi_fast.c.in): fitted to sin lowered by 2^-21 at its peak,
    so that Horner's rule in float (a few ulps of rounding) keeps |p| <= 1
    with no clamp; the value 1 - 2^-21 and slope 0 at pi/2 come from the
@@ -717,6 +731,7 @@ const pf_spec pf_specs_trig[] = {
     SIN_FAST_ROW,
     ROW_SIN_MID("sin", "mid", "0", SIN_RED, model_mid_sin),
     ROW_SIN_MID("sin", "mid-r3", "0", SIN_RED, model_mid_sin_c),
+    ROW_SIN_DBL("sin", "0", SIN_RED),
     ROW_SIN_EXACT("cos", "1"),
     /* cos, fast: the even polynomial of cos on the reduction of sin (two
        fewer additions a vector than sin(x + pi/2), no |r| and no clamp:
@@ -730,6 +745,7 @@ const pf_spec pf_specs_trig[] = {
      .default_order = 0, .fast_target = 0x1.cp-12, .real = "fma", .extra = extra_sincos_float},
     ROW_SIN_MID("cos", "mid", "1", COS_RED, model_mid_cos),
     ROW_SIN_MID("cos", "mid-r3", "1", COS_RED, model_mid_cos_c),
+    ROW_SIN_DBL("cos", "1", COS_RED),
     {.func = "tan", .reduction = "pio2", .variant = "exact", .tmpl = "tan_pio2", .arity = 1,
      .head = "trig_ph.h", .tail = "tail_twopath.c",
      .reduction_text = TAN_RED RED_EXACT, .target_text = "tan(t)", .g = g_tan, .a = 0, .b = PIO4,
