@@ -23,10 +23,6 @@ LADDER_LEVELS := 1 2 4 128 8192
 LADDER_EXTRA_log  := 0.55 0.6
 LADDER_EXTRA_log2 := 0.55 0.6 3
 ladder_levels = $(LADDER_LEVELS) $(LADDER_EXTRA_$(1))
-# sin, cos: sleef-u10 sits at 0.78-0.79 ULP, below the float-lane exact row's
-# 0.83; the exact-double row (0.60) takes 0.75
-LADDER_EXTRA_sin := 0.75
-LADDER_EXTRA_cos := 0.75
 # acos: SLEEF u35 sits at 1.28 ULP, between 1 and 1.5 (the mid scheme's floor
 # is about 1.1: gen/templates/acos_mid.c.in)
 LADDER_EXTRA_acos := 1.25
@@ -39,9 +35,11 @@ LADDER_EXTRA_asin  := 2.5
 # would take the lite row at order 15, 2.5 ULP: no peer between.)
 LADDER_EXTRA_atan2 := 3
 ladder_tag    = $(subst .,p,$(1))
-# trig: the mid rows (float Cody-Waite, gen/float/funcs_trig.c) reach 3 ULP
-LADDER_EXTRA_sin := 3
-LADDER_EXTRA_cos := 3
+# trig: the mid rows (float Cody-Waite, gen/float/funcs_trig.c) reach 3 ULP;
+# sin, cos: sleef-u10 sits at 0.78-0.79 ULP, below the float-lane exact row's
+# 0.83, so the exact-double row (0.60) takes a 0.75 level
+LADDER_EXTRA_sin := 0.75 3
+LADDER_EXTRA_cos := 0.75 3
 LADDER_EXTRA_tan := 3
 # `make bench` times a ladder confirmed on a sample (a few minutes to build;
 # the bench measures every point's error itself, like the peers'); `make
