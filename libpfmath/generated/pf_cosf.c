@@ -289,6 +289,27 @@ static __attribute__((noinline)) float pf_cosf_ph_lane(float x)
     return pf_cosf_ph(x);
 }
 
+/* A block's rare lanes: how many; and the path for many of them, both
+   paths for every lane and a select (vectorized, the table reads as
+   gathers).  Shared by the array form's two block loops below. */
+static inline size_t pf_cosf_rare_count(const float *xb, size_t nb)
+{
+    size_t count = 0;
+    for (size_t i = 0; i < nb; i++)
+        count += pf_cosf_is_rare(pf_asuint(xb[i]));
+    return count;
+}
+static inline void pf_cosf_both_paths(const float *xb, float *yb, size_t nb)
+{
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+    for (size_t i = 0; i < nb; i++) {
+        float xi = xb[i], c = pf_cosf_cw(xi), p = pf_cosf_ph(xi);
+        yb[i] = pf_cosf_is_rare(pf_asuint(xi)) ? p : c;
+    }
+}
+
 /* Array form.  Every lane takes the same path by the same test as the
    scalar form, so the array is bit-identical to it.
    With pf_cosf_FUSED (set by the template: exact and fast sin and cos, where
@@ -325,21 +346,12 @@ void pf_cosf_array(const float *restrict x, float *restrict y, size_t n)
             }
             if (key < pf_cosf_RARE_KEY)
                 continue;
-            uint32_t count = 0;
-            for (size_t i = 0; i < nb; i++)
-                count += pf_cosf_is_rare(pf_asuint(xb[i]));
-            if (count <= 64) {
+            if (pf_cosf_rare_count(xb, nb) <= 64) {
                 for (size_t i = 0; i < nb; i++)
                     if (pf_cosf_is_rare(pf_asuint(xb[i])))
                         yb[i] = pf_cosf_ph_lane(xb[i]);
             } else {
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC ivdep
-#endif
-                for (size_t i = 0; i < nb; i++) {
-                    float xi = xb[i], c = pf_cosf_cw(xi), p = pf_cosf_ph(xi);
-                    yb[i] = pf_cosf_is_rare(pf_asuint(xi)) ? p : c;
-                }
+                pf_cosf_both_paths(xb, yb, nb);
             }
         }
         return;
@@ -362,10 +374,7 @@ void pf_cosf_array(const float *restrict x, float *restrict y, size_t n)
                 yb[i] = pf_cosf_cw(xb[i]);
             continue;
         }
-        uint32_t count = 0;
-        for (size_t i = 0; i < nb; i++)
-            count += pf_cosf_is_rare(pf_asuint(xb[i]));
-        if (count <= 16) {
+        if (pf_cosf_rare_count(xb, nb) <= 16) {
             float xc[128];
             memcpy(xc, xb, nb * sizeof *xc);
 #if defined(__GNUC__) && !defined(__clang__)
@@ -377,13 +386,7 @@ void pf_cosf_array(const float *restrict x, float *restrict y, size_t n)
                 if (pf_cosf_is_rare(pf_asuint(xc[i])))
                     yb[i] = pf_cosf_ph_lane(xc[i]);
         } else {
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC ivdep
-#endif
-            for (size_t i = 0; i < nb; i++) {
-                float xi = xb[i], c = pf_cosf_cw(xi), p = pf_cosf_ph(xi);
-                yb[i] = pf_cosf_is_rare(pf_asuint(xi)) ? p : c;
-            }
+            pf_cosf_both_paths(xb, yb, nb);
         }
     }
 }

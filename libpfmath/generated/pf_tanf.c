@@ -239,6 +239,27 @@ static __attribute__((noinline)) float pf_tanf_ph_lane(float x)
     return pf_tanf_ph(x);
 }
 
+/* A block's rare lanes: how many; and the path for many of them, both
+   paths for every lane and a select (vectorized, the table reads as
+   gathers).  Shared by the array form's two block loops below. */
+static inline size_t pf_tanf_rare_count(const float *xb, size_t nb)
+{
+    size_t count = 0;
+    for (size_t i = 0; i < nb; i++)
+        count += pf_tanf_is_rare(pf_asuint(xb[i]));
+    return count;
+}
+static inline void pf_tanf_both_paths(const float *xb, float *yb, size_t nb)
+{
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+    for (size_t i = 0; i < nb; i++) {
+        float xi = xb[i], c = pf_tanf_cw(xi), p = pf_tanf_ph(xi);
+        yb[i] = pf_tanf_is_rare(pf_asuint(xi)) ? p : c;
+    }
+}
+
 /* Array form.  Every lane takes the same path by the same test as the
    scalar form, so the array is bit-identical to it.
    With pf_tanf_FUSED (set by the template: exact and fast sin and cos, where
@@ -275,21 +296,12 @@ void pf_tanf_array(const float *restrict x, float *restrict y, size_t n)
             }
             if (key < pf_tanf_RARE_KEY)
                 continue;
-            uint32_t count = 0;
-            for (size_t i = 0; i < nb; i++)
-                count += pf_tanf_is_rare(pf_asuint(xb[i]));
-            if (count <= 64) {
+            if (pf_tanf_rare_count(xb, nb) <= 64) {
                 for (size_t i = 0; i < nb; i++)
                     if (pf_tanf_is_rare(pf_asuint(xb[i])))
                         yb[i] = pf_tanf_ph_lane(xb[i]);
             } else {
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC ivdep
-#endif
-                for (size_t i = 0; i < nb; i++) {
-                    float xi = xb[i], c = pf_tanf_cw(xi), p = pf_tanf_ph(xi);
-                    yb[i] = pf_tanf_is_rare(pf_asuint(xi)) ? p : c;
-                }
+                pf_tanf_both_paths(xb, yb, nb);
             }
         }
         return;
@@ -312,10 +324,7 @@ void pf_tanf_array(const float *restrict x, float *restrict y, size_t n)
                 yb[i] = pf_tanf_cw(xb[i]);
             continue;
         }
-        uint32_t count = 0;
-        for (size_t i = 0; i < nb; i++)
-            count += pf_tanf_is_rare(pf_asuint(xb[i]));
-        if (count <= 16) {
+        if (pf_tanf_rare_count(xb, nb) <= 16) {
             float xc[128];
             memcpy(xc, xb, nb * sizeof *xc);
 #if defined(__GNUC__) && !defined(__clang__)
@@ -327,13 +336,7 @@ void pf_tanf_array(const float *restrict x, float *restrict y, size_t n)
                 if (pf_tanf_is_rare(pf_asuint(xc[i])))
                     yb[i] = pf_tanf_ph_lane(xc[i]);
         } else {
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC ivdep
-#endif
-            for (size_t i = 0; i < nb; i++) {
-                float xi = xb[i], c = pf_tanf_cw(xi), p = pf_tanf_ph(xi);
-                yb[i] = pf_tanf_is_rare(pf_asuint(xi)) ? p : c;
-            }
+            pf_tanf_both_paths(xb, yb, nb);
         }
     }
 }
