@@ -1142,43 +1142,39 @@ static void emit_poly(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern)
     s1 = s2 = (pf_buf){0};
     kern->n -= strlen("#endif"); /* fx_pipe_loop closed the #if: the AVX2 loop follows */
     kern->s[kern->n] = 0;
-    if (!b2)
-        pf_printf(kern,
-                  "\n/* AVX2 (x86-64-v3): the same values on 16 lanes, without a leading-zero\n"
-                  "   count or a per-element shift: x converted to float (the words unpacked to\n"
-                  "   32-bit lanes, in each 128-bit lane's order, as vpackssdw packs them back)\n"
-                  "   is exact, and its bits >> %d are (127 + bitlen(x) - 1) 2^%d + t's top %d\n"
-                  "   bits, so less %d they are U = e 2^%d + T 2^-%d, in a word for x > 0;\n"
-                  "   x = 0 (bits 0) gives -%d, which the packing saturates to -32768.  T =\n"
-                  "   U << %d, e 2^%d = U with its low %d bits cleared, and e ln2 2^%d =\n"
-                  "   round(e 2^%d K 2^-15) (pmulhrsw, as the table).  x = 0 (U = -32768, the\n"
-                  "   only such U): -32768 by a compare and a blend.  The same values. */\n"
-                  "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
-                  "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
-                  "    const __m256i z = _mm256_setzero_si256(), cb = _mm256_set1_epi32(%d);\n"
-                  "    const __m256i c3 = _mm256_set1_epi16(%d), d2 = _mm256_set1_epi16(%d), c1 = _mm256_set1_epi16(%d);\n"
-                  "    const __m256i em = _mm256_set1_epi16(%d), kl = _mm256_set1_epi16(%d), c8 = _mm256_set1_epi16(-32768);\n",
-                  23 - Eo, Eo, Eo, (127 + Ei) * (1 << Eo), Eo, 16 - Eo, (127 + Ei) * (1 << Eo), 16 - Eo, Eo, Eo, Eo,
-                  Eo, N, G->it, G->ot, (127 + Ei) * (1 << Eo), (int)(int16_t)L->pc3, (int)(int16_t)L->pd2,
-                  (int)(int16_t)L->pc1, -(1 << Eo), (int)L->k15);
-    else
+    /* the comment's shared head, then log's or log2's steps, then the
+       function's head; the C1 stored differs (log2: C1 - 2^Eo, see below) */
     pf_printf(kern,
               "\n/* AVX2 (x86-64-v3): the same values on 16 lanes, without a leading-zero\n"
               "   count or a per-element shift: x converted to float (the words unpacked to\n"
               "   32-bit lanes, in each 128-bit lane's order, as vpackssdw packs them back)\n"
               "   is exact, and its bits >> %d are (127 + bitlen(x) - 1) 2^%d + t's top %d\n"
               "   bits, so less %d they are U = e 2^%d + T 2^-%d, in a word for x > 0;\n"
-              "   x = 0 (bits 0) gives -%d, which the packing saturates to -32768.  T =\n"
-              "   U << %d, and floor((a4 - 2^%d) T 2^-16) = floor(a4 T 2^-16) - T 2^-%d\n"
-              "   (a4 >= 2^%d, checked), so y = U + floor((a4 - 2^%d) T 2^-16) without\n"
-              "   e: C1 - 2^%d is stored.  x = 0: T = 0, y = -32768.  The same values. */\n"
+              "   x = 0 (bits 0) gives -%d, which the packing saturates to -32768.  T =\n",
+              23 - Eo, Eo, Eo, (127 + Ei) * (1 << Eo), Eo, 16 - Eo, (127 + Ei) * (1 << Eo));
+    if (!b2)
+        pf_printf(kern,
+                  "   U << %d, e 2^%d = U with its low %d bits cleared, and e ln2 2^%d =\n"
+                  "   round(e 2^%d K 2^-15) (pmulhrsw, as the table).  x = 0 (U = -32768, the\n"
+                  "   only such U): -32768 by a compare and a blend.  The same values. */\n",
+                  16 - Eo, Eo, Eo, Eo, Eo);
+    else
+        pf_printf(kern,
+                  "   U << %d, and floor((a4 - 2^%d) T 2^-16) = floor(a4 T 2^-16) - T 2^-%d\n"
+                  "   (a4 >= 2^%d, checked), so y = U + floor((a4 - 2^%d) T 2^-16) without\n"
+                  "   e: C1 - 2^%d is stored.  x = 0: T = 0, y = -32768.  The same values. */\n",
+                  16 - Eo, Eo, 16 - Eo, Eo, Eo, Eo);
+    pf_printf(kern,
               "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
               "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
               "    const __m256i z = _mm256_setzero_si256(), cb = _mm256_set1_epi32(%d);\n"
               "    const __m256i c3 = _mm256_set1_epi16(%d), d2 = _mm256_set1_epi16(%d), c1 = _mm256_set1_epi16(%d);\n",
-              23 - Eo, Eo, Eo, (127 + Ei) * (1 << Eo), Eo, 16 - Eo, (127 + Ei) * (1 << Eo), 16 - Eo, Eo, 16 - Eo,
-              Eo, Eo, Eo, N, G->it, G->ot, (127 + Ei) * (1 << Eo), (int)(int16_t)L->pc3, (int)(int16_t)L->pd2,
-              (int)(int16_t)(L->pc1 - (1 << Eo)));
+              N, G->it, G->ot, (127 + Ei) * (1 << Eo), (int)(int16_t)L->pc3, (int)(int16_t)L->pd2,
+              b2 ? (int)(int16_t)(L->pc1 - (1 << Eo)) : (int)(int16_t)L->pc1);
+    if (!b2)
+        pf_printf(kern,
+                  "    const __m256i em = _mm256_set1_epi16(%d), kl = _mm256_set1_epi16(%d), c8 = _mm256_set1_epi16(-32768);\n",
+                  -(1 << Eo), (int)L->k15);
     pf_printf(&s1,
               "        __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));\n"
               "        __m256i fl = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv, z)));\n"
