@@ -490,7 +490,7 @@ static int model_mid_tan(const fit_poly *p, int order, pf_scheme *sc)
 #define FF_PAST 0x1p-7
 #define FF_COS_ORDER 8
 
-static int cos_ff_fit(fit_poly *out, char *err, size_t errlen)
+static int cos_ff_fit_once(fit_poly *out, char *err, size_t errlen)
 {
     fit_problem pb;
     memset(&pb, 0, sizeof pb);
@@ -512,6 +512,25 @@ static int cos_ff_fit(fit_poly *out, char *err, size_t errlen)
     if (fit_round(&pb, fmt, fit_minimax, out, NULL, err, errlen) != 0)
         return -1;
     fit_measure(&pb, out);
+    return 0;
+}
+
+/* cos's fit depends on nothing but the constants above; the row's extra
+   (the emitted table) and its model (every order the ladder tries) both
+   need it, so it is fitted once a process (generation is single-threaded) */
+static int cos_ff_fit(fit_poly *out, char *err, size_t errlen)
+{
+    static fit_poly c;
+    static int state; /* 0 not yet, 1 fitted, -1 failed */
+    static char msg[256];
+    if (!state) {
+        state = cos_ff_fit_once(&c, msg, sizeof msg) == 0 ? 1 : -1;
+    }
+    if (state < 0) {
+        snprintf(err, errlen, "%s", msg);
+        return -1;
+    }
+    *out = c;
     return 0;
 }
 
