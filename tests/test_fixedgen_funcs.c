@@ -121,7 +121,7 @@ static uint64_t avx2_loop_mismatches(const char *src, size_t len, const fx_gen *
         print_message("  the array form raised the invalid-operation flag\n");
         diff++;
     }
-    if (!strstr(src, "_array_avx2(") || !__builtin_cpu_supports("avx2")) {
+    if (!strstr(src, "_array_avx2(") || !__builtin_cpu_supports("x86-64-v3")) {
         free(x);
         free(y);
         return diff;

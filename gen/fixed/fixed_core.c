@@ -452,8 +452,8 @@ char *fx_emit(const fx_gen *G, size_t *len)
                       cond, G->name, G->it, G->ot, G->name, G->name);
             if (G->bw16 == 3) /* 2, and an AVX2 loop of its own too (<name>_array_avx2) */
                 pf_printf(&bwc,
-                          "%s#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */\n"
-                          "    if (__builtin_cpu_supports(\"avx2\")) {\n"
+                          "%s#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */\n"
+                          "    if (__builtin_cpu_supports(\"x86-64-v3\")) {\n"
                           "        %s_array_avx2(x, y, n);\n"
                           "        return;\n"
                           "    }\n"

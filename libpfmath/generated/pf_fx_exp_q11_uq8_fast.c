@@ -416,8 +416,8 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void pf_exp_q11_uq8_fast_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
-#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any CPU that has AVX2 */
-    if (__builtin_cpu_supports("avx2")) {
+#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */
+    if (__builtin_cpu_supports("x86-64-v3")) {
         pf_exp_q11_uq8_fast_array_avx2(x, y, n);
         return;
     }
