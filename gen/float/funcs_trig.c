@@ -647,12 +647,15 @@ static int model_ff(const fit_poly *p, int order, pf_scheme *sc)
     }
     sc->ncomp = 0;
     sc->bound_ulp = worst_s > worst_c ? worst_s : worst_c;
-    snprintf(sc->text, sizeof sc->text,
+    int tl = snprintf(sc->text, sizeof sc->text,
              "float lanes with fmaf: pi/2 reduction to rh + rl (TwoProd, Fast2Sum), one Horner chain a lane "
-             "with sin's or cos's coefficients by m's parity; sin lanes rh - fmaf((rh + 3 rl) z, -S, -rl), "
+             "with sin's or cos's coefficients by m's parity (sin: odd, the Order line's order; cos: "
+             "even, order %d, fixed); sin lanes rh - fmaf((rh + 3 rl) z, -S, -rl), "
              "cos lanes 1 - fmaf(rh/2, rh, fmaf(z^2, -C, rh rl)); first-order bound: sin lanes %.3f "
              "(worst r = %.4g), cos lanes %.3f (r = %.4g; cos fit %.3e)",
-             worst_s, at_s, worst_c, at_c, c.max_err);
+             c.order, worst_s, at_s, worst_c, at_c, c.max_err);
+    if (tl < 0 || (size_t)tl >= sizeof sc->text) /* a cut provenance line would hide the cos bound */
+        return -1;
     if (sc->bound_ulp > 1.0)
         return -1;
     return 0;

@@ -4,7 +4,7 @@
  * Reduction:   x = m pi/2 + r, r in [-pi/4, pi/4], q = m + s (s = 0: sin, 1: cos); f = (-1)^(q>>1) (q even: sin r, q odd: cos r), Cody-Waite with FMA in float |x| < 2^16 (r = rh + rl: TwoProd, Fast2Sum), Payne-Hanek beyond (array: only in blocks holding such an x)
  * Domain:      sin(t) (and cos(t), even, fitted beside it) on t in [0x0p+0, 0x1.961fb54442d18p-1]  (0 .. 0.793210663)
  * Order:       7 (float coefficients, Horner in float with fmaf)
- * Evaluation:  float lanes with fmaf: pi/2 reduction to rh + rl (TwoProd, Fast2Sum), one Horner chain a lane with sin's or cos's coefficients by m's parity; sin lanes rh - fmaf((rh + 3 rl) z, -S, -rl), cos lanes 1 - fmaf(rh/2, rh, fmaf(z^2, -C, rh rl)); first-order bound: sin lanes 0.878 (worst r = 0.7932), cos lanes 0.856 (r = 0.7932; cos fit 1.387e-10)
+ * Evaluation:  float lanes with fmaf: pi/2 reduction to rh + rl (TwoProd, Fast2Sum), one Horner chain a lane with sin's or cos's coefficients by m's parity (sin: odd, the Order line's order; cos: even, order 8, fixed); sin lanes rh - fmaf((rh + 3 rl) z, -S, -rl), cos lanes 1 - fmaf(rh/2, rh, fmaf(z^2, -C, rh rl)); first-order bound: sin lanes 0.878 (worst r = 0.7932), cos lanes 0.856 (r = 0.7932; cos fit 1.387e-10)
  * Error model: at most 0.878 ULP (fit error and every rounding of the scheme)
  * Method:      minimax relative error (nlopt SLSQP, epigraph form, from the least-squares fit), coefficients rounded to float by pin-and-refit
  * Constraints: p'(0) = 1
