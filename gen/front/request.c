@@ -251,7 +251,7 @@ static int check_outputs(const pf_request *rq, char *err, size_t errlen)
         return 2;
     if (rq->plot && pf_out_check("--plot", rq->plot, err, errlen) != 0)
         return 2;
-    if (rq->output && rq->plot && !strcmp(rq->output, rq->plot))
+    if (rq->output && rq->plot && pf_out_same(rq->output, rq->plot))
         return bad(err, errlen, "-o and --plot name the same file");
     return 0;
 }
