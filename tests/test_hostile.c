@@ -429,6 +429,29 @@ static void test_same_file_two_names(void **st)
     tu_rm_tree(scratch);
 }
 
+/* a scene file named pf.scene: its default prefix would be pf_, the one
+ * --prefix refuses (libpfmath's own names: pf_sinf_fast would be emitted
+ * twice at link time); refused with a pointer to --prefix */
+static void test_scene_default_prefix_pf(void **st)
+{
+    (void)st;
+    new_scratch();
+    puts_file("pf.scene", "sin fast float float\n");
+    GEN("--scene", "pf.scene", "-o", "out");
+    expect2();
+    assert_non_null(strstr(R.err, "--prefix"));
+    assert_false(exists("out"));
+    puts_file("pf.x.scene", "sin fast float float\n");
+    GEN("--scene", "pf.x.scene", "-o", "out");
+    expect2();
+    assert_false(exists("out"));
+    /* another name, or an explicit prefix, works */
+    GEN("--scene", "pf.scene", "-o", "out", "--prefix", "pfs_");
+    assert_int_equal(R.status, 0);
+    assert_true(exists("out/pfs_sinf_fast.c"));
+    tu_rm_tree(scratch);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -441,6 +464,7 @@ int main(void)
         cmocka_unit_test(test_item10_outputs_first),
         cmocka_unit_test(test_item13_scene_links_with_libpfmath),
         cmocka_unit_test(test_same_file_two_names),
+        cmocka_unit_test(test_scene_default_prefix_pf),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

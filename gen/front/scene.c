@@ -502,6 +502,9 @@ int pf_scene_run(const pf_request *rq)
             snprintf(S->prefix, sizeof S->prefix, "%s", p);
     } else {
         default_prefix(rq->scene, S->prefix, sizeof S->prefix);
+        if (!strcmp(S->prefix, "pf_"))
+            rc = fail(S, 0, "the scene file's name gives the prefix pf_, libpfmath's own (its functions would "
+                      "clash at link time): choose one with --prefix");
     }
     if (!rc && !*dir)
         rc = fail(S, 0, "-o: empty directory name");
