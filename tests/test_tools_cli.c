@@ -232,6 +232,79 @@ static void test_pfbench_writes(void **st)
     assert_int_equal(n, 3); /* bench.md (link), real.md, bench.csv */
 }
 
+/* pfnoise-demo [DIR] (README: make noise-pictures): an option is not a
+ * directory name.  Before, "pfnoise-demo --help" created a directory
+ * "--help" with five pictures in it, any other option did the same, a
+ * regular file as DIR gave five error lines, and a second argument was
+ * ignored. */
+static void test_pfnoise_demo(void **st)
+{
+    (void)st;
+    const char *const help[] = {"pfnoise-demo", "--help", NULL};
+    run_result r;
+    run(help, &r);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "usage: pfnoise-demo"));
+    struct stat sb;
+    assert_int_not_equal(lstat("--help", &sb), 0);
+    char plain[PATH_MAX], dir[PATH_MAX];
+    snprintf(plain, sizeof plain, "%s/plain", scratch);
+    FILE *f = fopen(plain, "w");
+    assert_non_null(f);
+    fputs("precious\n", f);
+    fclose(f);
+    snprintf(dir, sizeof dir, "%s/pics", scratch);
+    REFUSE("pfnoise-demo", "-h2");
+    REFUSE("pfnoise-demo", "--frobnicate");
+    REFUSE("pfnoise-demo", "");
+    REFUSE("pfnoise-demo", dir, dir);
+    REFUSE("pfnoise-demo", plain);
+    char *s = tu_slurp(plain, NULL);
+    assert_string_equal(s, "precious\n");
+    free(s);
+    assert_int_not_equal(lstat("-h2", &sb), 0);
+    assert_int_not_equal(lstat("--frobnicate", &sb), 0);
+    assert_int_not_equal(lstat(dir, &sb), 0);
+    /* a run: DIR created, a symlinked picture written through (the link
+       stays), nothing else left in DIR */
+    assert_int_equal(mkdir(dir, 0755), 0);
+    char link[PATH_MAX + 16], real[PATH_MAX + 16];
+    snprintf(link, sizeof link, "%s/noise2d.png", dir);
+    snprintf(real, sizeof real, "%s/real.png", dir);
+    f = fopen(real, "w");
+    assert_non_null(f);
+    fputs("old\n", f);
+    fclose(f);
+    assert_int_equal(symlink("real.png", link), 0);
+    const char *const go[] = {"pfnoise-demo", dir, NULL};
+    run(go, &r);
+    print_message("pfnoise-demo DIR -> %d: %s", r.status, r.err);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(lstat(link, &sb), 0);
+    assert_true(S_ISLNK(sb.st_mode));
+    size_t n = 0;
+    s = tu_slurp(real, &n);
+    assert_non_null(s);
+    assert_true(n > 8 && !memcmp(s, "\x89PNG", 4));
+    free(s);
+    int k = 0;
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    for (struct dirent *de; (de = readdir(d));)
+        k += de->d_name[0] != '.';
+    closedir(d);
+    assert_int_equal(k, 6); /* five pictures, real.png */
+    const char *pics[] = {"noise2d.png", "noise3d_fixed.png", "fbm2d.png", "plane_unfiltered.png",
+                          "plane_filtered.png", "real.png", NULL};
+    for (int i = 0; pics[i]; i++) {
+        char p[PATH_MAX + 32];
+        snprintf(p, sizeof p, "%s/%s", dir, pics[i]);
+        unlink(p);
+    }
+    rmdir(dir);
+    unlink(plain);
+}
+
 static int setup(void **st)
 {
     (void)st;
@@ -263,6 +336,7 @@ int main(void)
         cmocka_unit_test(test_pfsweep_names_and_repeats),
         cmocka_unit_test(test_pfbench),
         cmocka_unit_test(test_pfbench_writes),
+        cmocka_unit_test(test_pfnoise_demo),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
