@@ -58,6 +58,18 @@ static inline int pfcli_real(const char *s, double lo, double hi, double *v)
     return 0;
 }
 
+/* A library the user names (--lib, --ladder) is a file: a name without '/'
+ * is ./NAME, as every other file argument, never the dynamic linker's search
+ * path (which would find a system copy, or none); "" (dlopen's "the program
+ * itself") is refused.  0 and out = the path to dlopen, or -1. */
+static inline int pfcli_lib_path(const char *s, char *out, size_t n)
+{
+    if (!*s)
+        return -1;
+    int k = snprintf(out, n, "%s%s", strchr(s, '/') ? "" : "./", s);
+    return k < 0 || (size_t)k >= n ? -1 : 0;
+}
+
 /* the long name of option value c ("help" for 'h') */
 static inline const char *pfcli_name(const struct option *opts, int c)
 {

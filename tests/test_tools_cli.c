@@ -178,6 +178,8 @@ static void test_pfbench(void **st)
     BENCH("--ms", "nan");
     BENCH("--ms", "0");
     BENCH("--list", "--list");
+    BENCH("--ladder", "");
+    REFUSE("pfbench", "--lib", "", "--out", dir, "--func", "sqrt");
     check_outputs_kept(dir);
     REFUSE("pfbench", "--lib", lib, "--out", "/nonexistent/pf-tools-cli", "--func", "log");
     REFUSE("pfbench", "--lib", lib, "--out", md, "--func", "log");
@@ -305,6 +307,43 @@ static void test_pfnoise_demo(void **st)
     unlink(plain);
 }
 
+/* --lib and --ladder name files: an empty PATH was dlopen(""), the program
+ * itself (pfsweep: "no function" exit 1; pfbench: a run with no pfmath rows
+ * or no ladder rows, exit 0), and a PATH without '/' searched the system's
+ * library path instead of the current directory.  pfsweep's fixed-point
+ * help shows "--lib [PATH]", but "--lib PATH" was "unexpected argument";
+ * --pairs outside atan2 --all was silently ignored. */
+static void test_lib_paths(void **st)
+{
+    (void)st;
+    REFUSE("pfsweep", "--func", "log", "--lib=");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--lib=");
+    REFUSE("pfsweep", "--func", "log", "--pairs", "5");
+    REFUSE("pfsweep", "--func", "atan2", "--pairs", "5");
+    char lib[PATH_MAX], dir[PATH_MAX], cwd[PATH_MAX];
+    tu_prog_path("libpfmath.so", lib, sizeof lib);
+    snprintf(dir, sizeof dir, "%s", lib);
+    *strrchr(dir, '/') = 0;
+    run_result r;
+    /* "--lib PATH" as the fixed-point help writes it */
+    const char *const a[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
+                             "--lib", lib, "--samples", "100", NULL};
+    run(a, &r);
+    print_message("pfsweep ... --lib PATH -> %d: %s", r.status, r.err);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "pf_sin_q12_q14"));
+    /* a bare file name is the file in the current directory */
+    assert_non_null(getcwd(cwd, sizeof cwd));
+    assert_int_equal(chdir(dir), 0);
+    const char *const b[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
+                             "--lib=libpfmath.so", "--samples", "100", NULL};
+    run(b, &r);
+    assert_int_equal(chdir(cwd), 0);
+    print_message("pfsweep ... --lib=libpfmath.so (in its directory) -> %d: %s", r.status, r.err);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "pf_sin_q12_q14"));
+}
+
 static int setup(void **st)
 {
     (void)st;
@@ -337,6 +376,7 @@ int main(void)
         cmocka_unit_test(test_pfbench),
         cmocka_unit_test(test_pfbench_writes),
         cmocka_unit_test(test_pfnoise_demo),
+        cmocka_unit_test(test_lib_paths),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
