@@ -70,6 +70,44 @@ static inline int pfcli_lib_path(const char *s, char *out, size_t n)
     return k < 0 || (size_t)k >= n ? -1 : 0;
 }
 
+/* one line on stderr: "PROG: MSG'ARG'", control characters of ARG as '?'
+   (a user's newline does not make a second line), then exit 2 */
+static inline void pfcli_refuse(const char *prog, const char *msg, const char *arg)
+{
+    fprintf(stderr, "%s: %s", prog, msg);
+    if (arg) {
+        fputc('\'', stderr);
+        for (const char *p = arg; *p; p++)
+            fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, stderr);
+        fputc('\'', stderr);
+    }
+    fputs(" (see --help)\n", stderr);
+    exit(2);
+}
+
+/* The small bench programs' command line, PROG [N]: no argument gives def;
+ * -h or --help prints usage and exits 0; N is a whole number in lo..hi
+ * (pfcli_u64's rules); anything else, or a second argument, is exit 2 with
+ * one line.  (atoi took "--help", "12x" or "-5" as some count, silently.) */
+static inline unsigned long long pfcli_bench_count(int argc, char **argv, const char *prog, const char *usage,
+                                                   unsigned long long lo, unsigned long long hi,
+                                                   unsigned long long def)
+{
+    unsigned long long v = def;
+    if (argc > 1 && (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help"))) {
+        fputs(usage, stdout);
+        exit(0);
+    }
+    if (argc > 1 && pfcli_u64(argv[1], lo, hi, &v) != 0) {
+        char m[96];
+        snprintf(m, sizeof m, "expected a whole number %llu..%llu, not ", lo, hi);
+        pfcli_refuse(prog, m, argv[1]);
+    }
+    if (argc > 2)
+        pfcli_refuse(prog, "unexpected argument ", argv[2]);
+    return v;
+}
+
 /* the long name of option value c ("help" for 'h') */
 static inline const char *pfcli_name(const struct option *opts, int c)
 {

@@ -344,6 +344,45 @@ static void test_lib_paths(void **st)
     assert_non_null(strstr(r.out, "pf_sin_q12_q14"));
 }
 
+/* The bench programs' one optional argument: atoi/atof took "--help" as 0
+ * (bench_trig then timed inputs in [-0, 0]; the others ran their whole
+ * bench), "12x" as 12, "-5" as 1, "nan" as a range; fastsweep_atrig's
+ * --pairs -1 was 2^64-1 pairs (hours) and "--help" an unknown function. */
+static void test_bench_programs(void **st)
+{
+    (void)st;
+    const char *progs[] = {"bench_trig", "bench_atrig", "bench_exp", "bench_fixed", "pfnoise-bench",
+                           "fastsweep_atrig"};
+    for (size_t i = 0; i < sizeof progs / sizeof progs[0]; i++) {
+        const char *const h[] = {progs[i], "--help", NULL};
+        run_result r;
+        run(h, &r);
+        print_message("%s --help -> %d", progs[i], r.status);
+        assert_int_equal(r.status, 0);
+        assert_non_null(strstr(r.out, "usage: "));
+        REFUSE(progs[i], "12x");
+        REFUSE(progs[i], "--frobnicate");
+        REFUSE(progs[i], "-5");
+        REFUSE(progs[i], "");
+    }
+    const char *counts[] = {"bench_atrig", "bench_exp", "bench_fixed", "pfnoise-bench"};
+    for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++) {
+        REFUSE(counts[i], "0");
+        REFUSE(counts[i], "1", "2");
+        REFUSE(counts[i], "99999999999999999999");
+    }
+    REFUSE("bench_trig", "0");
+    REFUSE("bench_trig", "nan");
+    REFUSE("bench_trig", "inf");
+    REFUSE("bench_trig", "1", "2");
+    REFUSE("bench_exp", "--fast-bound", "x");
+    REFUSE("bench_exp", "--fast-bound", "0");
+    REFUSE("fastsweep_atrig", "--pairs", "-1");
+    REFUSE("fastsweep_atrig", "--pairs");
+    REFUSE("fastsweep_atrig", "atan2", "--pairs", "5", "--pairs", "6");
+    REFUSE("fastsweep_atrig", "sin");
+}
+
 static int setup(void **st)
 {
     (void)st;
@@ -377,6 +416,7 @@ int main(void)
         cmocka_unit_test(test_pfbench_writes),
         cmocka_unit_test(test_pfnoise_demo),
         cmocka_unit_test(test_lib_paths),
+        cmocka_unit_test(test_bench_programs),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
