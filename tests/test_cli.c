@@ -86,6 +86,25 @@ static void test_repeated_options(void **st)
     assert_non_null(strstr(R.err, "only one of"));
 }
 
+/* --seed as pfsweep's and pfbench's numbers: decimal or 0x hex, the whole
+ * argument.  strtoull(s, 0) read "010" as octal 8 (another lattice than
+ * the user's 10, silently) and took a leading blank or '+'. */
+static void test_seed(void **st)
+{
+    (void)st;
+    const char *bad[] = {" 1", "+1", "1 ", "-1", "", "0x", "0x-1", "1e3", "18446744073709551616"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        expect_usage_error("--func", "noise2", "--type", "fixed<15,12>", "--seed", bad[i]);
+    tu_runl(&R, "pfmathgen", "--func", "noise2", "--type", "fixed<15,12>", "--seed", "010", NULL);
+    assert_int_equal(R.status, 0);
+    assert_non_null(strstr(R.out, "pf_noise_table_seed(10)"));
+    tu_runl(&R, "pfmathgen", "--func", "noise2", "--type", "fixed<15,12>", "--seed", "0x10", NULL);
+    assert_int_equal(R.status, 0);
+    assert_non_null(strstr(R.out, "pf_noise_table_seed(16)"));
+    tu_runl(&R, "pfmathgen", "--func", "noise2", "--type", "fixed<15,12>", "--seed", "18446744073709551615", NULL);
+    assert_int_equal(R.status, 0);
+}
+
 /* issue 11 item 11: --name is a C identifier, not a keyword, and never cut */
 static void test_names(void **st)
 {
@@ -214,6 +233,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_repeated_options),
+        cmocka_unit_test(test_seed),
         cmocka_unit_test(test_names),
         cmocka_unit_test(test_help),
         cmocka_unit_test(test_deterministic),
