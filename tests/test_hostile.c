@@ -452,6 +452,38 @@ static void test_scene_default_prefix_pf(void **st)
     tu_rm_tree(scratch);
 }
 
+/* the scene file inside DIR under an output's name (report.txt, scene.h):
+ * the run replaced the user's scene with its report, exit 0 */
+static void test_scene_file_not_replaced(void **st)
+{
+    (void)st;
+    new_scratch();
+    char p[600];
+    snprintf(p, sizeof p, "%s/out", scratch);
+    assert_int_equal(mkdir(p, 0777), 0);
+    puts_file("out/report.txt", cheap_scene);
+    GEN("--scene", "out/report.txt", "-o", "out");
+    expect2();
+    puts_file("out/scene.h", cheap_scene);
+    GEN("--scene", "out/scene.h", "-o", "out/");
+    expect2();
+    /* a link to it in DIR is the same file */
+    puts_file("my.scene", cheap_scene);
+    snprintf(p, sizeof p, "%s/out/report.txt", scratch);
+    assert_int_equal(unlink(p), 0);
+    assert_int_equal(symlink("../my.scene", p), 0);
+    GEN("--scene", "my.scene", "-o", "out");
+    expect2();
+    char *m = get("out/scene.h");
+    assert_string_equal(m, cheap_scene);
+    free(m);
+    m = get("my.scene");
+    assert_string_equal(m, cheap_scene);
+    free(m);
+    assert_int_equal(count_c("out"), 0);
+    tu_rm_tree(scratch);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -465,6 +497,7 @@ int main(void)
         cmocka_unit_test(test_item13_scene_links_with_libpfmath),
         cmocka_unit_test(test_same_file_two_names),
         cmocka_unit_test(test_scene_default_prefix_pf),
+        cmocka_unit_test(test_scene_file_not_replaced),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

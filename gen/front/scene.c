@@ -433,6 +433,24 @@ static int check_dir(const scene *S, int *exists)
     return 0;
 }
 
+/* an output DIR/file that is the scene file itself (by name or through a
+ * symlink in DIR): refused, exit 2, before anything is written */
+static int clobbers_scene(const scene *S, const char *file)
+{
+    size_t pl = strlen(S->dir) + strlen(file) + 2;
+    char *path = malloc(pl);
+    if (!path) {
+        fail(S, 0, "out of memory");
+        return 1;
+    }
+    snprintf(path, pl, "%s/%s", S->dir, file);
+    int same = pf_out_same(path, S->scene);
+    free(path);
+    if (same)
+        return fail(S, 0, "-o %s: its %s is the scene file itself, which the run would replace", S->dir, file);
+    return 0;
+}
+
 /* Every file is staged (written beside its target) before any is renamed
  * into place: a failure before the renames leaves DIR as it was. */
 static int write_all(scene *S, int exists)
@@ -512,6 +530,10 @@ int pf_scene_run(const pf_request *rq)
         rc = parse(S);
     if (!rc)
         rc = check_dir(S, &exists);
+    if (!rc)
+        rc = clobbers_scene(S, "scene.h");
+    if (!rc)
+        rc = clobbers_scene(S, "report.txt");
     char *rtext = NULL;
     size_t rlen = 0;
     FILE *rep = rc ? NULL : open_memstream(&rtext, &rlen);
@@ -533,6 +555,8 @@ int pf_scene_run(const pf_request *rq)
         if (bad)
             rc = fail(S, 0, "out of memory");
     }
+    for (int i = 0; i < S->nout && !rc; i++)
+        rc = clobbers_scene(S, S->file[i]);
     if (!rc)
         rc = write_all(S, exists);
     free(rtext);
