@@ -207,6 +207,12 @@ static inline int pfcli_out_open(pfcli_out *o, const char *path, char *err, size
         o->direct = 1;
         return 0;
     }
+    /* a read-only file stays as it is, as for "> file" (the rename would
+       need only the directory's permission) */
+    if (access(o->final, F_OK) == 0 && access(o->final, W_OK) != 0) {
+        snprintf(err, n, "cannot write %.300s: %.100s", o->final, strerror(errno));
+        return -1;
+    }
     snprintf(o->tmp, sizeof o->tmp, "%s.XXXXXX", o->final);
     int fd = mkstemp(o->tmp);
     if (fd < 0) {

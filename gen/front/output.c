@@ -104,6 +104,13 @@ static char *check_target(const char *what, const char *path, int *special, char
             *special = 1;
             return r;
         }
+        /* a read-only file stays as it is, as for "> file": the rename
+           beside it needs only the directory's permission */
+        if (access(r, W_OK) != 0) {
+            snprintf(err, errlen, "%s %s: cannot write (%s)", what, path, strerror(errno));
+            free(r);
+            return NULL;
+        }
     } else if (errno != ENOENT) {
         snprintf(err, errlen, "%s %s: %s", what, path, strerror(errno));
         free(r);

@@ -451,6 +451,21 @@ static int clobbers_scene(const scene *S, const char *file)
     return 0;
 }
 
+/* DIR/file as pf_out_check sees it (exit 2 with its reason) */
+static int check_file(const scene *S, const char *file)
+{
+    size_t pl = strlen(S->dir) + strlen(file) + 2;
+    char *path = malloc(pl), e[600];
+    if (!path) {
+        fail(S, 0, "out of memory");
+        return 1;
+    }
+    snprintf(path, pl, "%s/%s", S->dir, file);
+    int bad = pf_out_check("-o", path, e, sizeof e) != 0;
+    free(path);
+    return bad ? fail(S, 0, "%s", e) : 0;
+}
+
 /* Every file is staged (written beside its target) before any is renamed
  * into place: a failure before the renames leaves DIR as it was. */
 static int write_all(scene *S, int exists)
@@ -530,10 +545,14 @@ int pf_scene_run(const pf_request *rq)
         rc = parse(S);
     if (!rc)
         rc = check_dir(S, &exists);
-    if (!rc)
-        rc = clobbers_scene(S, "scene.h");
-    if (!rc)
-        rc = clobbers_scene(S, "report.txt");
+    /* DIR's own two files, known before any fit: the scene file itself, or
+       one that cannot be replaced (read-only, a directory), is exit 2 now */
+    const char *fixed_files[] = {"scene.h", "report.txt"};
+    for (int i = 0; i < 2 && !rc; i++) {
+        rc = clobbers_scene(S, fixed_files[i]);
+        if (!rc && exists)
+            rc = check_file(S, fixed_files[i]);
+    }
     char *rtext = NULL;
     size_t rlen = 0;
     FILE *rep = rc ? NULL : open_memstream(&rtext, &rlen);
