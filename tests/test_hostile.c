@@ -557,6 +557,26 @@ static void test_read_only_target(void **st)
     tu_rm_tree(scratch);
 }
 
+/* scene files as editors save them: a UTF-8 byte order mark, CRLF line
+ * ends, tabs, no final newline; the mark made the first function unknown,
+ * with a message showing the (invisible) mark before its name */
+static void test_scene_editor_files(void **st)
+{
+    (void)st;
+    new_scratch();
+    puts_file("bom.scene", "\xef\xbb\xbfsqrt exact ufixed<8,8> ufixed<8,8>\r\nsqrt\tfast\tufixed<8,8>\tufixed<8,8>");
+    GEN("--scene", "bom.scene", "-o", "out");
+    print_message("  -> %d: %s", R.status, R.err);
+    assert_int_equal(R.status, 0);
+    assert_int_equal(count_c("out"), 2);
+    /* only at the start of the file */
+    puts_file("mid.scene", "sqrt exact ufixed<8,8> ufixed<8,8>\n\xef\xbb\xbfsqrt fast ufixed<8,8> ufixed<8,8>\n");
+    GEN("--scene", "mid.scene", "-o", "out2");
+    expect2();
+    assert_non_null(strstr(R.err, "mid.scene:2:"));
+    tu_rm_tree(scratch);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -572,6 +592,7 @@ int main(void)
         cmocka_unit_test(test_scene_default_prefix_pf),
         cmocka_unit_test(test_scene_file_not_replaced),
         cmocka_unit_test(test_read_only_target),
+        cmocka_unit_test(test_scene_editor_files),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

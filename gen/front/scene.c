@@ -226,6 +226,11 @@ static int parse(scene *S)
         if (h)
             *h = 0;
         char *p = line;
+        /* a UTF-8 byte order mark (some editors write one): not part of the
+           first entry, whose function it made unknown ("no fixed-point
+           <BOM>sqrt", the mark invisible) */
+        if (ln == 1 && !strncmp(p, "\xef\xbb\xbf", 3))
+            p += 3;
         while (isspace((unsigned char)*p))
             p++;
         if (!*p)
