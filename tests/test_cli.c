@@ -56,6 +56,11 @@ static void test_bad_input(void **st)
     expect_usage_error("--func", "log", "--order", "31");
     expect_usage_error("--func", "log", "--order", "10x");
     expect_usage_error("--func", "log", "--order", "");
+    /* the whole argument is the number, as "5 " already was (and as
+       pfsweep's numbers): strtol skipped a leading blank and took a '+' */
+    expect_usage_error("--func", "log", "--order", " 5");
+    expect_usage_error("--func", "log", "--order", "+5");
+    expect_usage_error("--func", "log", "--order", "\n5");
     expect_usage_error("--func", "log", "--variant", "quick");
     expect_usage_error("--func", "log", "--reduction", "nope");
     expect_usage_error("--func", "log", "--frobnicate");

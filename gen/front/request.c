@@ -296,7 +296,7 @@ int pf_request_parse(int argc, char **argv, pf_request *rq, char *err, size_t er
             char *end;
             errno = 0;
             long v = strtol(optarg, &end, 10);
-            if (errno || end == optarg || *end || v < 1 || v > 30)
+            if (errno || !isdigit((unsigned char)optarg[0]) || *end || v < 1 || v > 30)
                 return bad(err, errlen, "bad order '%.200s': expected an integer 1..30", optarg);
             rq->order = (int)v;
             break;
