@@ -3,6 +3,7 @@
  * the same run over the same 2^16 inputs.  Prints a table; the fast/exact
  * ratio is of the array forms.  Not part of `make test` (timings depend on
  * the machine and its load): run build/<dir>/bench_atrig [repetitions]. */
+#include "pfcli.h"
 #include "pfmath.h"
 
 #include <math.h>
@@ -49,9 +50,12 @@ static void row(const char *name, double glibc, double ex_arr, double ex_sc, dou
 
 int main(int argc, char **argv)
 {
-    int reps = argc > 1 ? atoi(argv[1]) : 50;
-    if (reps < 1)
-        reps = 1;
+    int reps = (int)pfcli_bench_count(argc, argv, "bench_atrig",
+                                      "usage: bench_atrig [REPETITIONS]\n"
+                                      "ns per element of asin, acos, atan, atan2 (pfmath exact and fast, array and\n"
+                                      "scalar) beside glibc over the same 2^16 inputs; REPETITIONS 1..100000\n"
+                                      "(default 50).\n",
+                                      1, 100000, 50);
     uint64_t s = 42;
     for (int i = 0; i < N; i++) {
         s = s * 6364136223846793005ull + 1442695040888963407ull;

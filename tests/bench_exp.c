@@ -9,6 +9,7 @@
  * bench_exp --fast-bound [threads]: the fast variants' bound over every
  * float instead (exp, exp2, log, log2; about a minute each on 2 cores), see
  * fast_bound_all below. */
+#include "pfcli.h"
 #include "pfmath.h"
 
 #include <math.h>
@@ -166,11 +167,15 @@ static int fast_bound_all(int nthreads)
 
 int main(int argc, char **argv)
 {
+    static const char usage[] =
+        "usage: bench_exp [REPETITIONS]      ns per element of pf_expf, pf_exp2f (exact, fast;\n"
+        "                                    array, scalar) beside glibc; REPETITIONS 1..100000\n"
+        "                                    (default 200)\n"
+        "       bench_exp --fast-bound [THREADS]  the fast variants' bound over every float\n"
+        "                                    (exp, exp2, log, log2); THREADS 1..256 (default 2)\n";
     if (argc > 1 && !strcmp(argv[1], "--fast-bound"))
-        return fast_bound_all(argc > 2 ? atoi(argv[2]) : 2);
-    int reps = argc > 1 ? atoi(argv[1]) : 200;
-    if (reps < 1)
-        reps = 1;
+        return fast_bound_all((int)pfcli_bench_count(argc - 1, argv + 1, "bench_exp", usage, 1, 256, 2));
+    int reps = (int)pfcli_bench_count(argc, argv, "bench_exp", usage, 1, 100000, 200);
     bench("exp", -87, 88, glibc_expf, pf_expf, pf_expf_fast, pf_expf_array, pf_expf_fast_array, reps);
     bench("exp2", -126, 127, glibc_exp2f, pf_exp2f, pf_exp2f_fast, pf_exp2f_array,
           pf_exp2f_fast_array, reps);

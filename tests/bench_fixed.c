@@ -16,6 +16,7 @@
  * CPU with x86-64-v3 but no AVX-512 runs them (PF_BENCH_AVX2), so both
  * ISAs' ratios come from one machine. */
 #include "funcset.h"
+#include "pfcli.h"
 #include "pfmath.h"
 #include "pfmath_fixed.h"
 #include "pfref.h"
@@ -162,9 +163,12 @@ static uint64_t next(void)
 
 int main(int argc, char **argv)
 {
-    int reps = argc > 1 ? atoi(argv[1]) : 100;
-    if (reps < 1)
-        reps = 1;
+    int reps = (int)pfcli_bench_count(argc, argv, "bench_fixed",
+                                      "usage: bench_fixed [REPETITIONS]\n"
+                                      "ns per element of the library's fixed-point functions beside the float\n"
+                                      "variants (a Markdown table); each figure the fastest of 7 rounds of\n"
+                                      "REPETITIONS passes, 1..100000 (default 100).\n",
+                                      1, 100000, 100);
 #if defined(PF_BENCH_AVX2)
     const char *isa = "as on an AVX2 CPU (x86-64-v3 code: the generated files built for it, the 16-bit "
                       "kernels' own AVX2 loops)";

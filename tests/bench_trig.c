@@ -4,6 +4,7 @@
  * BUILD=build/x build/x/bench_trig && build/x/bench_trig [range]`, inputs
  * uniform in [-range, range] (default 100).  Each figure is the fastest of
  * many repetitions (the least disturbed by other processes). */
+#include "pfcli.h"
 #include "pfmath.h"
 
 #include <math.h>
@@ -63,7 +64,20 @@ static float g_tan(float x) { return tanf(x); }
 
 int main(int argc, char **argv)
 {
-    double range = argc > 1 ? atof(argv[1]) : 100;
+    double range = 100;
+    if (argc > 1 && (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help"))) {
+        fputs("usage: bench_trig [RANGE]\n"
+              "ns per element of sin, cos, tan (pfmath exact and fast, array and scalar)\n"
+              "beside glibc over 2^16 inputs uniform in [-RANGE, RANGE]; RANGE a finite\n"
+              "number > 0, at most 1e30 (default 100).\n",
+              stdout);
+        return 0;
+    }
+    /* atof took "--help" or "1e" as 0: a table over [-0, 0], silently */
+    if (argc > 1 && (pfcli_real(argv[1], 0, 1e30, &range) != 0 || !(range > 0)))
+        pfcli_refuse("bench_trig", "RANGE must be a finite number in (0, 1e30], not ", argv[1]);
+    if (argc > 2)
+        pfcli_refuse("bench_trig", "unexpected argument ", argv[2]);
     uint64_t s = 12345;
     for (int i = 0; i < N; i++) {
         s = s * 6364136223846793005ull + 1442695040888963407ull;

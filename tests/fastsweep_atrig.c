@@ -11,6 +11,7 @@
  *   build/fastsweep_atrig [asin|acos|atan|atan2 ...] [--pairs N]
  * Exit status 1 when a bound is exceeded.  Not part of make test (minutes). */
 #include "pfref.h"
+#include "pfcli.h"
 #include "pfmath.h"
 
 #include <math.h>
@@ -136,11 +137,36 @@ int main(int argc, char **argv)
     const char *want[8];
     int nw = 0;
     uint64_t pairs = 1ull << 28;
+    int seen_pairs = 0;
+    unsigned long long np = pairs;
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--pairs") && i + 1 < argc)
-            pairs = strtoull(argv[++i], NULL, 0);
-        else if (nw < 8)
-            want[nw++] = argv[i];
+        if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
+            fputs("usage: fastsweep_atrig [asin|acos|atan|atan2 ...] [--pairs N]\n"
+                  "The fast variants' bound max(2^-10 |f|, 2^-11) on every float (asin, acos,\n"
+                  "atan) and on a dense seeded sample of N pairs, 1..2^32 (default 2^28), and\n"
+                  "every special pair (atan2).  Default: all four.  Exit status 1 when a bound\n"
+                  "is exceeded, 2 bad usage.\n",
+                  stdout);
+            return 0;
+        }
+        if (!strcmp(argv[i], "--pairs")) {
+            /* strtoull took "-1" as 2^64-1 pairs and "abc" as 0 */
+            if (seen_pairs++ || i + 1 == argc || pfcli_u64(argv[i + 1], 1, 1ull << 32, &np) != 0)
+                pfcli_refuse("fastsweep_atrig", "--pairs takes one whole number 1..2^32, given once: ",
+                             i + 1 < argc ? argv[i + 1] : "");
+            pairs = np;
+            i++;
+        } else if (nw == 8) {
+            pfcli_refuse("fastsweep_atrig", "at most 8 functions; unexpected ", argv[i]);
+        } else {
+            const char *w = argv[i];
+            int known = 0;
+            for (int k = 0; k < 4; k++)
+                known |= !strcmp(w, all[k]);
+            if (!known)
+                pfcli_refuse("fastsweep_atrig", "unknown function (asin, acos, atan, atan2): ", w);
+            want[nw++] = w;
+        }
     }
     if (!nw)
         for (int i = 0; i < 4; i++)

@@ -374,6 +374,7 @@ int main(int argc, char **argv)
         {"help", no_argument, 0, 'h'},          {"ladder", required_argument, 0, 'D'},
         {0, 0, 0, 0}};
     const char *lib = NULL, *outdir = NULL, *only = NULL, *ladder = NULL;
+    char libarg[PATH_MAX + 2], ladarg[PATH_MAX + 2];
     long reps = 15;
     unsigned long long samples = 1ull << 20, seed = 1, ureps;
     double target_ms = 4;
@@ -385,7 +386,11 @@ int main(int argc, char **argv)
         if (ch != ':' && ch != '?' && pfcli_once(seen, ch))
             die2("option given twice: --", pfcli_name(opts, ch));
         switch (ch) {
-        case 'l': lib = optarg; break;
+        case 'l':
+            if (pfcli_lib_path(optarg, libarg, sizeof libarg) != 0)
+                die2("--lib: empty or too long a path: ", optarg);
+            lib = libarg;
+            break;
         case 'o': outdir = optarg; break;
         case 'f': only = optarg; break;
         case 'r':
@@ -406,7 +411,11 @@ int main(int argc, char **argv)
                 die2("--ms must be a number in (0, 1000]: ", optarg);
             break;
         case 'L': list = 1; break;
-        case 'D': ladder = optarg; break;
+        case 'D':
+            if (pfcli_lib_path(optarg, ladarg, sizeof ladarg) != 0)
+                die2("--ladder: empty or too long a path: ", optarg);
+            ladder = ladarg;
+            break;
         case 'h': fputs(usage, stdout); return 0;
         case ':': die2("option needs an argument: ", argv[optind - 1]); break;
         default: die2("unknown option (see --help): ", argv[optind - 1]); break;

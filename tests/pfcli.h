@@ -58,6 +58,56 @@ static inline int pfcli_real(const char *s, double lo, double hi, double *v)
     return 0;
 }
 
+/* A library the user names (--lib, --ladder) is a file: a name without '/'
+ * is ./NAME, as every other file argument, never the dynamic linker's search
+ * path (which would find a system copy, or none); "" (dlopen's "the program
+ * itself") is refused.  0 and out = the path to dlopen, or -1. */
+static inline int pfcli_lib_path(const char *s, char *out, size_t n)
+{
+    if (!*s)
+        return -1;
+    int k = snprintf(out, n, "%s%s", strchr(s, '/') ? "" : "./", s);
+    return k < 0 || (size_t)k >= n ? -1 : 0;
+}
+
+/* one line on stderr: "PROG: MSG'ARG'", control characters of ARG as '?'
+   (a user's newline does not make a second line), then exit 2 */
+static inline void pfcli_refuse(const char *prog, const char *msg, const char *arg)
+{
+    fprintf(stderr, "%s: %s", prog, msg);
+    if (arg) {
+        fputc('\'', stderr);
+        for (const char *p = arg; *p; p++)
+            fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, stderr);
+        fputc('\'', stderr);
+    }
+    fputs(" (see --help)\n", stderr);
+    exit(2);
+}
+
+/* The small bench programs' command line, PROG [N]: no argument gives def;
+ * -h or --help prints usage and exits 0; N is a whole number in lo..hi
+ * (pfcli_u64's rules); anything else, or a second argument, is exit 2 with
+ * one line.  (atoi took "--help", "12x" or "-5" as some count, silently.) */
+static inline unsigned long long pfcli_bench_count(int argc, char **argv, const char *prog, const char *usage,
+                                                   unsigned long long lo, unsigned long long hi,
+                                                   unsigned long long def)
+{
+    unsigned long long v = def;
+    if (argc > 1 && (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help"))) {
+        fputs(usage, stdout);
+        exit(0);
+    }
+    if (argc > 1 && pfcli_u64(argv[1], lo, hi, &v) != 0) {
+        char m[96];
+        snprintf(m, sizeof m, "expected a whole number %llu..%llu, not ", lo, hi);
+        pfcli_refuse(prog, m, argv[1]);
+    }
+    if (argc > 2)
+        pfcli_refuse(prog, "unexpected argument ", argv[2]);
+    return v;
+}
+
 /* the long name of option value c ("help" for 'h') */
 static inline const char *pfcli_name(const struct option *opts, int c)
 {
@@ -156,6 +206,12 @@ static inline int pfcli_out_open(pfcli_out *o, const char *path, char *err, size
         }
         o->direct = 1;
         return 0;
+    }
+    /* a read-only file stays as it is, as for "> file" (the rename would
+       need only the directory's permission) */
+    if (access(o->final, F_OK) == 0 && access(o->final, W_OK) != 0) {
+        snprintf(err, n, "cannot write %.300s: %.100s", o->final, strerror(errno));
+        return -1;
     }
     snprintf(o->tmp, sizeof o->tmp, "%s.XXXXXX", o->final);
     int fd = mkstemp(o->tmp);

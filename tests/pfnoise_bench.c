@@ -22,6 +22,7 @@
 #include <time.h>
 
 #include "noise_baseline.h"
+#include "pfcli.h"
 #include "pfnoise.h"
 
 #ifdef PF_HAVE_STB
@@ -201,9 +202,11 @@ static void measure(int reps, double *med)
 
 int main(int argc, char **argv)
 {
-    int reps = 15;
-    if (argc > 1)
-        reps = atoi(argv[1]) > 0 ? atoi(argv[1]) : reps;
+    int reps = (int)pfcli_bench_count(argc, argv, "pfnoise-bench",
+                                      "usage: pfnoise-bench [PASSES]\n"
+                                      "ns per sample of the noise evaluators beside stb_perlin, the median of\n"
+                                      "PASSES interleaved passes, 1..100000 (default 15).\n",
+                                      1, 100000, 15);
     for (int i = 0; i < NROWS; i++) {
         if (rows[i].k)
             kindex(rows[i].k);

@@ -18,7 +18,28 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "pfcli.h"
 #include "pfnoise.h"
+
+static const char usage[] =
+    "usage: pfnoise-demo [DIR]\n"
+    "Writes five 8-bit grey PNG pictures of libpfmath's noise to DIR (default\n"
+    "build/noise; created when missing, its parent must exist): noise2d.png,\n"
+    "noise3d_fixed.png, fbm2d.png, plane_unfiltered.png, plane_filtered.png.\n"
+    "Each is written to a temporary file beside it and renamed into place (a\n"
+    "symlink is written through); nothing else in DIR is touched.\n"
+    "  -h, --help  this text (a directory whose name starts with '-': ./-name)\n"
+    "Exit status: 0 ok, 1 write failure, 2 bad usage.\n";
+
+/* one line on stderr, exit 2 */
+static void die2(const char *msg, const char *arg)
+{
+    fprintf(stderr, "pfnoise-demo: %s", msg);
+    for (const char *p = arg; *p; p++)
+        fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, stderr);
+    fputc('\n', stderr);
+    exit(2);
+}
 
 static uint32_t crc_table[256];
 
@@ -91,13 +112,15 @@ static int write_png(const char *path, const uint8_t *pix, int w, int h)
         }
     }
     be32(q, b << 16 | a);
-    FILE *f = fopen(path, "wb");
-    if (!f) {
-        fprintf(stderr, "pfnoise-demo: %s: %s\n", path, strerror(errno));
+    pfcli_out o;
+    char err[600];
+    if (pfcli_out_open(&o, path, err, sizeof err) != 0) {
+        fprintf(stderr, "pfnoise-demo: %s\n", err);
         free(raw);
         free(z);
         return -1;
     }
+    FILE *f = o.f;
     static const uint8_t sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     fwrite(sig, 1, 8, f);
     uint8_t ihdr[13];
@@ -109,11 +132,14 @@ static int write_png(const char *path, const uint8_t *pix, int w, int h)
     chunk(f, "IHDR", ihdr, 13);
     chunk(f, "IDAT", z, (uint32_t)z_n);
     chunk(f, "IEND", NULL, 0);
-    int bad = fclose(f) != 0;
     free(raw);
     free(z);
+    if (pfcli_out_commit(&o, err, sizeof err) != 0) {
+        fprintf(stderr, "pfnoise-demo: %s\n", err);
+        return -1;
+    }
     printf("wrote %s (%dx%d)\n", path, w, h);
-    return bad ? -1 : 0;
+    return 0;
 }
 
 static uint8_t grey(float v) /* [-1, 1] -> [0, 255] */
@@ -124,22 +150,41 @@ static uint8_t grey(float v) /* [-1, 1] -> [0, 255] */
 
 int main(int argc, char **argv)
 {
+    if (argc > 1 && (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help"))) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    if (argc > 1 && argv[1][0] == '-')
+        die2("unknown option (see --help; a directory named so: ./NAME): ", argv[1]);
+    if (argc > 2)
+        die2("one directory at most; unexpected argument ", argv[2]);
     const char *dir = argc > 1 ? argv[1] : "build/noise";
-    char path[4096];
-    crc_init();
-    if (mkdir(dir, 0777) && errno != EEXIST) {
-        fprintf(stderr, "pfnoise-demo: %s: %s\n", dir, strerror(errno));
+    char path[PATH_MAX];
+    if (!*dir)
+        die2("empty directory name", "");
+    if (strlen(dir) + sizeof "/plane_unfiltered.png" > sizeof path)
+        die2("directory name too long: ", "");
+    struct stat sb;
+    if (stat(dir, &sb) == 0) {
+        if (!S_ISDIR(sb.st_mode))
+            die2("not a directory: ", dir);
+    } else if (errno != ENOENT || mkdir(dir, 0777) != 0) {
+        fprintf(stderr, "pfnoise-demo: ");
+        for (const char *p = dir; *p; p++)
+            fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, stderr);
+        fprintf(stderr, ": %s\n", strerror(errno));
         return 1;
     }
+    crc_init();
     enum { W = 512, H = 512 };
     static uint8_t img[W * H];
-    int err = 0;
 
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++)
             img[y * W + x] = grey(pf_noise2f((float)x / 32.0f, (float)y / 32.0f));
     snprintf(path, sizeof path, "%s/noise2d.png", dir);
-    err |= write_png(path, img, W, H);
+    if (write_png(path, img, W, H))
+        return 1;
 
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
@@ -147,14 +192,16 @@ int main(int argc, char **argv)
             img[y * W + x] = (uint8_t)((v + 32768) >> 8);
         }
     snprintf(path, sizeof path, "%s/noise3d_fixed.png", dir);
-    err |= write_png(path, img, W, H);
+    if (write_png(path, img, W, H))
+        return 1;
 
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++)
             img[y * W + x] =
                 grey(1.6f * pf_fbm2f((float)x / 32.0f, (float)y / 32.0f, 8, 2.0f, 0.5f, 1.0f / 32));
     snprintf(path, sizeof path, "%s/fbm2d.png", dir);
-    err |= write_png(path, img, W, H);
+    if (write_png(path, img, W, H))
+        return 1;
 
     /* Ground plane z = -1 seen from the origin, looking along +y; pixel
      * (x, y) below the horizon hits (u, v) = (sx·d, d) with d = 1/sy.  The
@@ -170,7 +217,8 @@ int main(int argc, char **argv)
                 img[y * W + x] = grey(1.6f * pf_fbm2f(u, v, 10, 2.0f, 0.6f, fw));
             }
         snprintf(path, sizeof path, "%s/plane_%s.png", dir, pass ? "filtered" : "unfiltered");
-        err |= write_png(path, img + 0, W, H / 2);
+        if (write_png(path, img + 0, W, H / 2))
+            return 1;
     }
-    return err ? 1 : 0;
+    return 0;
 }

@@ -72,7 +72,16 @@ int main(int argc, char **argv)
                 die2("unknown variant ", optarg);
             variant = optarg;
             break;
-        case 'l': use_lib = 1; lib = optarg; break;
+        case 'l':
+            use_lib = 1;
+            lib = optarg;
+            /* "--lib PATH" as well as "--lib=PATH" (an optional argument
+               is otherwise only taken after '=') */
+            if (!lib && optind < argc && argv[optind][0] != '-')
+                lib = argv[optind++];
+            if (lib && !*lib)
+                die2("--lib: empty path (without a PATH: --lib alone)", NULL);
+            break;
         case 's': src = optarg; break;
         case 'N': name = optarg; break;
         case 'a': all = 1; break;
@@ -106,6 +115,8 @@ int main(int argc, char **argv)
         die2("unknown function ", func);
     if (use_lib && src)
         die2("--lib and --source exclude each other", NULL);
+    if (seen['P'] && !(all && pfref_arity((pf_func)fid) == 2))
+        die2("--pairs is for atan2 with --all (see --help)", NULL);
     if (!use_lib && !src)
         use_lib = 1;
     char sym[160];
@@ -118,7 +129,8 @@ int main(int argc, char **argv)
     if (use_lib) {
         char path[PATH_MAX];
         if (lib) {
-            snprintf(path, sizeof path, "%s", lib);
+            if (pfcli_lib_path(lib, path, sizeof path) != 0)
+                die2("--lib: path too long: ", lib);
         } else {
             if (pfcli_default_lib(path, sizeof path) != 0)
                 die2("cannot locate libpfmath.so; pass --lib PATH", NULL);
@@ -137,7 +149,7 @@ int main(int argc, char **argv)
     }
     void *p = dlsym(h, sym);
     if (!p) {
-        fprintf(stderr, "pfsweep: no function %s in %s\n", sym, src ? src : "libpfmath.so");
+        fprintf(stderr, "pfsweep: no function %s in %s\n", sym, src ? src : lib ? lib : "libpfmath.so");
         return 1;
     }
     pf_fn1 f1 = NULL;

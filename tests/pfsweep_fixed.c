@@ -87,7 +87,16 @@ int pfsweep_fixed_main(int argc, char **argv)
                 die2("unknown variant ", optarg);
             variant = optarg;
             break;
-        case 'l': use_lib = 1; lib = optarg; break;
+        case 'l':
+            use_lib = 1;
+            lib = optarg;
+            /* "--lib PATH" as well as "--lib=PATH" (an optional argument
+               is otherwise only taken after '=') */
+            if (!lib && optind < argc && argv[optind][0] != '-')
+                lib = argv[optind++];
+            if (lib && !*lib)
+                die2("--lib: empty path (without a PATH: --lib alone)", NULL);
+            break;
         case 's': src = optarg; break;
         case 'N': name = optarg; break;
         case 'a': all = 1; break;
@@ -142,7 +151,8 @@ int pfsweep_fixed_main(int argc, char **argv)
     if (use_lib) {
         char path[PATH_MAX];
         if (lib) {
-            snprintf(path, sizeof path, "%s", lib);
+            if (pfcli_lib_path(lib, path, sizeof path) != 0)
+                die2("--lib: path too long: ", lib);
         } else {
             if (pfcli_default_lib(path, sizeof path) != 0)
                 die2("cannot locate libpfmath.so; pass --lib PATH", NULL);
@@ -161,7 +171,7 @@ int pfsweep_fixed_main(int argc, char **argv)
     }
     pf_fx_fn fn = {dlsym(h, sym), dlsym(h, asym), pf_type_to_fmt(&in), pf_type_to_fmt(&out)};
     if (!fn.scalar) {
-        fprintf(stderr, "pfsweep: no function %s in %s\n", sym, src ? src : "libpfmath.so");
+        fprintf(stderr, "pfsweep: no function %s in %s\n", sym, src ? src : lib ? lib : "libpfmath.so");
         return 1;
     }
     char ti[64], to[64], title[512];

@@ -56,6 +56,11 @@ static void test_bad_input(void **st)
     expect_usage_error("--func", "log", "--order", "31");
     expect_usage_error("--func", "log", "--order", "10x");
     expect_usage_error("--func", "log", "--order", "");
+    /* the whole argument is the number, as "5 " already was (and as
+       pfsweep's numbers): strtol skipped a leading blank and took a '+' */
+    expect_usage_error("--func", "log", "--order", " 5");
+    expect_usage_error("--func", "log", "--order", "+5");
+    expect_usage_error("--func", "log", "--order", "\n5");
     expect_usage_error("--func", "log", "--variant", "quick");
     expect_usage_error("--func", "log", "--reduction", "nope");
     expect_usage_error("--func", "log", "--frobnicate");
@@ -84,6 +89,25 @@ static void test_repeated_options(void **st)
     expect_usage_error("--func", "noise2", "--type", "fixed<15,12>", "--seed", "1", "--seed", "2");
     expect_usage_error("--func", "log", "--max-rel-err", "1e-4", "--max-abs-err", "1e-4");
     assert_non_null(strstr(R.err, "only one of"));
+}
+
+/* --seed as pfsweep's and pfbench's numbers: decimal or 0x hex, the whole
+ * argument.  strtoull(s, 0) read "010" as octal 8 (another lattice than
+ * the user's 10, silently) and took a leading blank or '+'. */
+static void test_seed(void **st)
+{
+    (void)st;
+    const char *bad[] = {" 1", "+1", "1 ", "-1", "", "0x", "0x-1", "1e3", "18446744073709551616"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        expect_usage_error("--func", "noise2", "--type", "fixed<15,12>", "--seed", bad[i]);
+    tu_runl(&R, "pfmathgen", "--func", "noise2", "--type", "fixed<15,12>", "--seed", "010", NULL);
+    assert_int_equal(R.status, 0);
+    assert_non_null(strstr(R.out, "pf_noise_table_seed(10)"));
+    tu_runl(&R, "pfmathgen", "--func", "noise2", "--type", "fixed<15,12>", "--seed", "0x10", NULL);
+    assert_int_equal(R.status, 0);
+    assert_non_null(strstr(R.out, "pf_noise_table_seed(16)"));
+    tu_runl(&R, "pfmathgen", "--func", "noise2", "--type", "fixed<15,12>", "--seed", "18446744073709551615", NULL);
+    assert_int_equal(R.status, 0);
 }
 
 /* issue 11 item 11: --name is a C identifier, not a keyword, and never cut */
@@ -214,6 +238,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_repeated_options),
+        cmocka_unit_test(test_seed),
         cmocka_unit_test(test_names),
         cmocka_unit_test(test_help),
         cmocka_unit_test(test_deterministic),

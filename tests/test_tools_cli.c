@@ -178,6 +178,8 @@ static void test_pfbench(void **st)
     BENCH("--ms", "nan");
     BENCH("--ms", "0");
     BENCH("--list", "--list");
+    BENCH("--ladder", "");
+    REFUSE("pfbench", "--lib", "", "--out", dir, "--func", "sqrt");
     check_outputs_kept(dir);
     REFUSE("pfbench", "--lib", lib, "--out", "/nonexistent/pf-tools-cli", "--func", "log");
     REFUSE("pfbench", "--lib", lib, "--out", md, "--func", "log");
@@ -232,6 +234,155 @@ static void test_pfbench_writes(void **st)
     assert_int_equal(n, 3); /* bench.md (link), real.md, bench.csv */
 }
 
+/* pfnoise-demo [DIR] (README: make noise-pictures): an option is not a
+ * directory name.  Before, "pfnoise-demo --help" created a directory
+ * "--help" with five pictures in it, any other option did the same, a
+ * regular file as DIR gave five error lines, and a second argument was
+ * ignored. */
+static void test_pfnoise_demo(void **st)
+{
+    (void)st;
+    const char *const help[] = {"pfnoise-demo", "--help", NULL};
+    run_result r;
+    run(help, &r);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "usage: pfnoise-demo"));
+    struct stat sb;
+    assert_int_not_equal(lstat("--help", &sb), 0);
+    char plain[PATH_MAX], dir[PATH_MAX];
+    snprintf(plain, sizeof plain, "%s/plain", scratch);
+    FILE *f = fopen(plain, "w");
+    assert_non_null(f);
+    fputs("precious\n", f);
+    fclose(f);
+    snprintf(dir, sizeof dir, "%s/pics", scratch);
+    REFUSE("pfnoise-demo", "-h2");
+    REFUSE("pfnoise-demo", "--frobnicate");
+    REFUSE("pfnoise-demo", "");
+    REFUSE("pfnoise-demo", dir, dir);
+    REFUSE("pfnoise-demo", plain);
+    char *s = tu_slurp(plain, NULL);
+    assert_string_equal(s, "precious\n");
+    free(s);
+    assert_int_not_equal(lstat("-h2", &sb), 0);
+    assert_int_not_equal(lstat("--frobnicate", &sb), 0);
+    assert_int_not_equal(lstat(dir, &sb), 0);
+    /* a run: DIR created, a symlinked picture written through (the link
+       stays), nothing else left in DIR */
+    assert_int_equal(mkdir(dir, 0755), 0);
+    char link[PATH_MAX + 16], real[PATH_MAX + 16];
+    snprintf(link, sizeof link, "%s/noise2d.png", dir);
+    snprintf(real, sizeof real, "%s/real.png", dir);
+    f = fopen(real, "w");
+    assert_non_null(f);
+    fputs("old\n", f);
+    fclose(f);
+    assert_int_equal(symlink("real.png", link), 0);
+    const char *const go[] = {"pfnoise-demo", dir, NULL};
+    run(go, &r);
+    print_message("pfnoise-demo DIR -> %d: %s", r.status, r.err);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(lstat(link, &sb), 0);
+    assert_true(S_ISLNK(sb.st_mode));
+    size_t n = 0;
+    s = tu_slurp(real, &n);
+    assert_non_null(s);
+    assert_true(n > 8 && !memcmp(s, "\x89PNG", 4));
+    free(s);
+    int k = 0;
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    for (struct dirent *de; (de = readdir(d));)
+        k += de->d_name[0] != '.';
+    closedir(d);
+    assert_int_equal(k, 6); /* five pictures, real.png */
+    const char *pics[] = {"noise2d.png", "noise3d_fixed.png", "fbm2d.png", "plane_unfiltered.png",
+                          "plane_filtered.png", "real.png", NULL};
+    for (int i = 0; pics[i]; i++) {
+        char p[PATH_MAX + 32];
+        snprintf(p, sizeof p, "%s/%s", dir, pics[i]);
+        unlink(p);
+    }
+    rmdir(dir);
+    unlink(plain);
+}
+
+/* --lib and --ladder name files: an empty PATH was dlopen(""), the program
+ * itself (pfsweep: "no function" exit 1; pfbench: a run with no pfmath rows
+ * or no ladder rows, exit 0), and a PATH without '/' searched the system's
+ * library path instead of the current directory.  pfsweep's fixed-point
+ * help shows "--lib [PATH]", but "--lib PATH" was "unexpected argument";
+ * --pairs outside atan2 --all was silently ignored. */
+static void test_lib_paths(void **st)
+{
+    (void)st;
+    REFUSE("pfsweep", "--func", "log", "--lib=");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--lib=");
+    REFUSE("pfsweep", "--func", "log", "--pairs", "5");
+    REFUSE("pfsweep", "--func", "atan2", "--pairs", "5");
+    char lib[PATH_MAX], dir[PATH_MAX], cwd[PATH_MAX];
+    tu_prog_path("libpfmath.so", lib, sizeof lib);
+    snprintf(dir, sizeof dir, "%s", lib);
+    *strrchr(dir, '/') = 0;
+    run_result r;
+    /* "--lib PATH" as the fixed-point help writes it */
+    const char *const a[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
+                             "--lib", lib, "--samples", "100", NULL};
+    run(a, &r);
+    print_message("pfsweep ... --lib PATH -> %d: %s", r.status, r.err);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "pf_sin_q12_q14"));
+    /* a bare file name is the file in the current directory */
+    assert_non_null(getcwd(cwd, sizeof cwd));
+    assert_int_equal(chdir(dir), 0);
+    const char *const b[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
+                             "--lib=libpfmath.so", "--samples", "100", NULL};
+    run(b, &r);
+    assert_int_equal(chdir(cwd), 0);
+    print_message("pfsweep ... --lib=libpfmath.so (in its directory) -> %d: %s", r.status, r.err);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "pf_sin_q12_q14"));
+}
+
+/* The bench programs' one optional argument: atoi/atof took "--help" as 0
+ * (bench_trig then timed inputs in [-0, 0]; the others ran their whole
+ * bench), "12x" as 12, "-5" as 1, "nan" as a range; fastsweep_atrig's
+ * --pairs -1 was 2^64-1 pairs (hours) and "--help" an unknown function. */
+static void test_bench_programs(void **st)
+{
+    (void)st;
+    const char *progs[] = {"bench_trig", "bench_atrig", "bench_exp", "bench_fixed", "pfnoise-bench",
+                           "fastsweep_atrig"};
+    for (size_t i = 0; i < sizeof progs / sizeof progs[0]; i++) {
+        const char *const h[] = {progs[i], "--help", NULL};
+        run_result r;
+        run(h, &r);
+        print_message("%s --help -> %d", progs[i], r.status);
+        assert_int_equal(r.status, 0);
+        assert_non_null(strstr(r.out, "usage: "));
+        REFUSE(progs[i], "12x");
+        REFUSE(progs[i], "--frobnicate");
+        REFUSE(progs[i], "-5");
+        REFUSE(progs[i], "");
+    }
+    const char *counts[] = {"bench_atrig", "bench_exp", "bench_fixed", "pfnoise-bench"};
+    for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++) {
+        REFUSE(counts[i], "0");
+        REFUSE(counts[i], "1", "2");
+        REFUSE(counts[i], "99999999999999999999");
+    }
+    REFUSE("bench_trig", "0");
+    REFUSE("bench_trig", "nan");
+    REFUSE("bench_trig", "inf");
+    REFUSE("bench_trig", "1", "2");
+    REFUSE("bench_exp", "--fast-bound", "x");
+    REFUSE("bench_exp", "--fast-bound", "0");
+    REFUSE("fastsweep_atrig", "--pairs", "-1");
+    REFUSE("fastsweep_atrig", "--pairs");
+    REFUSE("fastsweep_atrig", "atan2", "--pairs", "5", "--pairs", "6");
+    REFUSE("fastsweep_atrig", "sin");
+}
+
 static int setup(void **st)
 {
     (void)st;
@@ -263,6 +414,9 @@ int main(void)
         cmocka_unit_test(test_pfsweep_names_and_repeats),
         cmocka_unit_test(test_pfbench),
         cmocka_unit_test(test_pfbench_writes),
+        cmocka_unit_test(test_pfnoise_demo),
+        cmocka_unit_test(test_lib_paths),
+        cmocka_unit_test(test_bench_programs),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -104,6 +104,13 @@ static char *check_target(const char *what, const char *path, int *special, char
             *special = 1;
             return r;
         }
+        /* a read-only file stays as it is, as for "> file": the rename
+           beside it needs only the directory's permission */
+        if (access(r, W_OK) != 0) {
+            snprintf(err, errlen, "%s %s: cannot write (%s)", what, path, strerror(errno));
+            free(r);
+            return NULL;
+        }
     } else if (errno != ENOENT) {
         snprintf(err, errlen, "%s %s: %s", what, path, strerror(errno));
         free(r);
@@ -138,6 +145,38 @@ int pf_out_check(const char *what, const char *path, char *err, size_t errlen)
     char *r = check_target(what, path, &special, err, errlen);
     free(r);
     return r ? 0 : -1;
+}
+
+/* the file a write to path would reach, spelled canonically: symlinks
+ * followed (resolve), the directory through realpath; malloc'd or NULL */
+static char *canonical(const char *path)
+{
+    char e[PATH_MAX + 64];
+    char *r = resolve(path, e, sizeof e);
+    if (!r)
+        return NULL;
+    char *d = pf_out_dirname(r), *rd = d ? realpath(d, NULL) : NULL;
+    const char *base = strrchr(r, '/') ? strrchr(r, '/') + 1 : r;
+    size_t len = rd ? strlen(rd) + strlen(base) + 2 : 0;
+    char *c = rd ? malloc(len) : NULL;
+    if (c)
+        snprintf(c, len, "%s/%s", rd, base);
+    free(d);
+    free(rd);
+    free(r);
+    return c;
+}
+
+int pf_out_same(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    if (stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino)
+        return 1; /* one file (also by a hard link) */
+    char *ca = canonical(a), *cb = canonical(b);
+    int same = ca && cb ? !strcmp(ca, cb) : !strcmp(a, b);
+    free(ca);
+    free(cb);
+    return same;
 }
 
 static int write_all(int fd, const char *data, size_t n)

@@ -34,6 +34,10 @@ int pf_out_stage(const char *path, const char *data, size_t n, pf_out_staged *s,
 int pf_out_commit(pf_out_staged *s, char *err, size_t errlen);
 void pf_out_abort(pf_out_staged *s);
 
+/* 1 when a and b reach the same file (the same name after symlinks and
+   the directory's canonical path, or one existing file by two links) */
+int pf_out_same(const char *a, const char *b);
+
 /* the directory part of a path ("." when there is none); malloc'd */
 char *pf_out_dirname(const char *path);
 

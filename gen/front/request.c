@@ -251,7 +251,7 @@ static int check_outputs(const pf_request *rq, char *err, size_t errlen)
         return 2;
     if (rq->plot && pf_out_check("--plot", rq->plot, err, errlen) != 0)
         return 2;
-    if (rq->output && rq->plot && !strcmp(rq->output, rq->plot))
+    if (rq->output && rq->plot && pf_out_same(rq->output, rq->plot))
         return bad(err, errlen, "-o and --plot name the same file");
     return 0;
 }
@@ -296,7 +296,7 @@ int pf_request_parse(int argc, char **argv, pf_request *rq, char *err, size_t er
             char *end;
             errno = 0;
             long v = strtol(optarg, &end, 10);
-            if (errno || end == optarg || *end || v < 1 || v > 30)
+            if (errno || !isdigit((unsigned char)optarg[0]) || *end || v < 1 || v > 30)
                 return bad(err, errlen, "bad order '%.200s': expected an integer 1..30", optarg);
             rq->order = (int)v;
             break;
@@ -307,11 +307,19 @@ int pf_request_parse(int argc, char **argv, pf_request *rq, char *err, size_t er
             rq->method = optarg;
             break;
         case 's': {
+            /* decimal or 0x hex, the whole argument (as pfsweep's and
+               pfbench's numbers): no sign, no blank, no octal from a 0 */
+            const char *d = optarg;
+            int hex = d[0] == '0' && (d[1] == 'x' || d[1] == 'X');
+            d += hex ? 2 : 0;
             char *end;
             errno = 0;
-            unsigned long long v = strtoull(optarg, &end, 0);
-            if (errno || end == optarg || *end || optarg[strspn(optarg, " \t")] == '-')
-                return bad(err, errlen, "bad --seed '%.200s': expected an unsigned 64-bit integer", optarg);
+            unsigned long long v = isxdigit((unsigned char)*d) && (hex || isdigit((unsigned char)*d))
+                                       ? strtoull(d, &end, hex ? 16 : 10)
+                                       : (end = (char *)d, 0);
+            if (errno || end == d || *end)
+                return bad(err, errlen, "bad --seed '%.200s': expected an unsigned 64-bit integer (decimal or 0x hex)",
+                           optarg);
             rq->seeded = 1;
             rq->seed = v;
             break;

@@ -137,10 +137,13 @@ static int parse_line(scene *S, char *p, int ln, scene_entry *x)
     if (noise && x->in.is_float)
         return fail(S, ln, "noise is generated for fixed-point types; float noise is pf_noiseNf in libpfmath");
     int fast = !strcmp(x->variant, "fast");
+    /* built in a local first: GCC's -Wrestrict (at -O1, the ASan tree)
+       cannot tell x->name from the other fields of the one static scene */
+    char nm[sizeof x->name];
     if (x->in.is_float) {
         if (!pf_spec_find(x->func, x->variant, NULL))
             return fail(S, ln, "unknown function %s", x->func);
-        snprintf(x->name, sizeof x->name, "%s%sf%s", S->prefix, x->func, fast ? "_fast" : "");
+        snprintf(nm, sizeof nm, "%s%sf%s", S->prefix, x->func, fast ? "_fast" : "");
     } else {
         if (noise && x->in.exp <= 0)
             return fail(S, ln, "noise input %s has no fraction bits (exp <= 0)", x->tin);
@@ -151,8 +154,9 @@ static int parse_line(scene *S, char *p, int ln, scene_entry *x)
         char a[32], b[32];
         type_tag(&x->in, a, sizeof a);
         type_tag(&x->out, b, sizeof b);
-        snprintf(x->name, sizeof x->name, "%s%s%s_%s_%s", S->prefix, x->func, fast ? "_fast" : "", a, b);
+        snprintf(nm, sizeof nm, "%s%s%s_%s_%s", S->prefix, x->func, fast ? "_fast" : "", a, b);
     }
+    memcpy(x->name, nm, sizeof nm);
     if (pf_check_name("function name", x->name, err, sizeof err))
         return fail(S, ln, "%s (choose another --prefix)", err);
     for (int j = 0; j < S->ne; j++)
@@ -222,6 +226,11 @@ static int parse(scene *S)
         if (h)
             *h = 0;
         char *p = line;
+        /* a UTF-8 byte order mark (some editors write one): not part of the
+           first entry, whose function it made unknown ("no fixed-point
+           <BOM>sqrt", the mark invisible) */
+        if (ln == 1 && !strncmp(p, "\xef\xbb\xbf", 3))
+            p += 3;
         while (isspace((unsigned char)*p))
             p++;
         if (!*p)
@@ -433,6 +442,39 @@ static int check_dir(const scene *S, int *exists)
     return 0;
 }
 
+/* an output DIR/file that is the scene file itself (by name or through a
+ * symlink in DIR): refused, exit 2, before anything is written */
+static int clobbers_scene(const scene *S, const char *file)
+{
+    size_t pl = strlen(S->dir) + strlen(file) + 2;
+    char *path = malloc(pl);
+    if (!path) {
+        fail(S, 0, "out of memory");
+        return 1;
+    }
+    snprintf(path, pl, "%s/%s", S->dir, file);
+    int same = pf_out_same(path, S->scene);
+    free(path);
+    if (same)
+        return fail(S, 0, "-o %s: its %s is the scene file itself, which the run would replace", S->dir, file);
+    return 0;
+}
+
+/* DIR/file as pf_out_check sees it (exit 2 with its reason) */
+static int check_file(const scene *S, const char *file)
+{
+    size_t pl = strlen(S->dir) + strlen(file) + 2;
+    char *path = malloc(pl), e[600];
+    if (!path) {
+        fail(S, 0, "out of memory");
+        return 1;
+    }
+    snprintf(path, pl, "%s/%s", S->dir, file);
+    int bad = pf_out_check("-o", path, e, sizeof e) != 0;
+    free(path);
+    return bad ? fail(S, 0, "%s", e) : 0;
+}
+
 /* Every file is staged (written beside its target) before any is renamed
  * into place: a failure before the renames leaves DIR as it was. */
 static int write_all(scene *S, int exists)
@@ -502,6 +544,9 @@ int pf_scene_run(const pf_request *rq)
             snprintf(S->prefix, sizeof S->prefix, "%s", p);
     } else {
         default_prefix(rq->scene, S->prefix, sizeof S->prefix);
+        if (!strcmp(S->prefix, "pf_"))
+            rc = fail(S, 0, "the scene file's name gives the prefix pf_, libpfmath's own (its functions would "
+                      "clash at link time): choose one with --prefix");
     }
     if (!rc && !*dir)
         rc = fail(S, 0, "-o: empty directory name");
@@ -509,6 +554,14 @@ int pf_scene_run(const pf_request *rq)
         rc = parse(S);
     if (!rc)
         rc = check_dir(S, &exists);
+    /* DIR's own two files, known before any fit: the scene file itself, or
+       one that cannot be replaced (read-only, a directory), is exit 2 now */
+    const char *fixed_files[] = {"scene.h", "report.txt"};
+    for (int i = 0; i < 2 && !rc; i++) {
+        rc = clobbers_scene(S, fixed_files[i]);
+        if (!rc && exists)
+            rc = check_file(S, fixed_files[i]);
+    }
     char *rtext = NULL;
     size_t rlen = 0;
     FILE *rep = rc ? NULL : open_memstream(&rtext, &rlen);
@@ -530,6 +583,8 @@ int pf_scene_run(const pf_request *rq)
         if (bad)
             rc = fail(S, 0, "out of memory");
     }
+    for (int i = 0; i < S->nout && !rc; i++)
+        rc = clobbers_scene(S, S->file[i]);
     if (!rc)
         rc = write_all(S, exists);
     free(rtext);
