@@ -178,6 +178,44 @@ static void test_bad_types_and_pairs(void **st)
     expect_error("--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --order 3");
 }
 
+/* The 16-bit table, segment and sqrtf kernels choose their own order and
+ * coefficients: an --order or --method they would not use is refused (exit
+ * 2, one line naming the option, no file), not silently dropped as before
+ * 2026-12-07.  Kernels that fit a polynomial still take both. */
+static void test_order_method_not_ignored(void **st)
+{
+    (void)st;
+    static const char *const pairs[] = {
+        "--func exp --type 'fixed<15,11>' --out-type 'ufixed<16,8>'",
+        "--func exp2 --type 'fixed<15,11>' --out-type 'ufixed<16,8>' --variant fast",
+        "--func log --type 'ufixed<16,8>' --out-type 'fixed<15,11>'",
+        "--func log2 --type 'ufixed<16,8>' --out-type 'fixed<15,11>' --variant fast",
+        "--func sqrt --type 'ufixed<16,8>' --out-type 'ufixed<16,12>'",
+    };
+    char a[512];
+    for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++) {
+        snprintf(a, sizeof a, "%s --order 3", pairs[i]);
+        expect_error(a);
+        assert_non_null(strstr(R.err, "--order does not apply"));
+        snprintf(a, sizeof a, "%s --method lsq", pairs[i]);
+        expect_error(a);
+        assert_non_null(strstr(R.err, "--method does not apply"));
+    }
+    /* the fast sin quintic's coefficients come from a search, not a fit */
+    expect_error("--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --variant fast --method minimax");
+    assert_non_null(strstr(R.err, "--method does not apply"));
+    /* with --order, sin takes the Horner kernel, which fits by the method asked */
+    tu_runs("pfmathgen",
+            "--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --variant fast --order 5 --method minimax "
+            "--no-sweep --json",
+            &R);
+    assert_int_equal(R.status, 0);
+    assert_non_null(strstr(R.out, "\"method\": \"minimax\""));
+    tu_runs("pfmathgen", "--func exp --type 'fixed<31,16>' --method lsq --variant fast --no-sweep --json", &R);
+    assert_int_equal(R.status, 0);
+    assert_non_null(strstr(R.out, "\"method\": \"lsq\""));
+}
+
 static int json_int(const char *s, const char *key)
 {
     const char *p = strstr(s, key);
@@ -274,6 +312,7 @@ int main(void)
         cmocka_unit_test(test_sin_example),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_bad_types_and_pairs),
+        cmocka_unit_test(test_order_method_not_ignored),
         cmocka_unit_test(test_fast_variant),
     };
     return cmocka_run_group_tests(tests, setup, teardown);

@@ -571,6 +571,7 @@ int fx_generate(fx_gen *G, int sweep, char *err, size_t errlen)
     const fx_func *F = G->fn;
     char why[600] = "";
     G->below_err = -1;
+    int method_req = G->minimax >= 0;
     G->minimax = G->minimax < 0 ? G->exact : G->minimax;
     G->errkind = G->exact ? F->errkind : F->errkind_fast;
     int found = 0;
@@ -653,6 +654,23 @@ int fx_generate(fx_gen *G, int sweep, char *err, size_t errlen)
         snprintf(err, errlen, "impossible: no %s %s for %s -> %s within %s (%s)", G->exact ? "exact" : "fast",
                  F->name, G->in_text, G->out_text, G->exact ? "1 LSB" : "max(2^-10 relative, 4 LSB)",
                  why[0] ? why : "no fit");
+        return -1;
+    }
+    /* The table, segment and sqrtf kernels take no fitted order and choose
+       their coefficients by their own search (their Order and Method lines
+       say how): an --order or --method they would ignore is refused rather
+       than dropped, before the sweep's cost.  (sin/cos with --order take the
+       Horner kernel, which uses it.) */
+    const char *unused = G->order_req && (G->nopoly || G->alt_order[0]) ? "--order"
+                         : method_req && (G->nopoly || G->alt_method[0]) ? "--method"
+                                                                         : NULL;
+    if (unused) {
+        snprintf(err, errlen,
+                 "%s does not apply to %s %s for %s -> %s: its kernel (%s) picks its own order and "
+                 "coefficients, which the Order and Method lines of a run without it show; leave %s out",
+                 unused, G->exact ? "exact" : "fast", F->name, G->in_text, G->out_text,
+                 G->nopoly ? "sqrtf and an integer correction" : "tables, segments or a searched polynomial",
+                 unused);
         return -1;
     }
     if (sweep) {
