@@ -9,6 +9,7 @@
 #include "tu_exec.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 static tu_run_result R;
 
@@ -207,6 +208,31 @@ static void test_json(void **st)
 
 /* --target with fixed types: the smallest order whose emitted polynomial is
  * within half an LSB of the type (absolute), and the order below is not. */
+/* "-o -" is standard output as no -o is (it wrote a file named '-'); a plot
+ * is SVG, so --plot x.png is refused (it wrote SVG into x.png) */
+static void test_dash_and_plot_names(void **st)
+{
+    (void)st;
+    expect_usage_error("--func", "log", "--order", "6", "--plot", "x.png");
+    expect_usage_error("--func", "log", "--order", "6", "--plot", "-");
+    char here[4096];
+    assert_non_null(getcwd(here, sizeof here));
+    assert_int_equal(chdir(tdir), 0);
+    tu_runv("pfmathgen", (const char *const[]){"--func", "log", "--order", "6", "--no-sweep", "-o", "-", NULL}, &R);
+    struct stat sb;
+    int dash = stat("-", &sb);
+    assert_int_equal(R.status, 0);
+    assert_int_equal(strncmp(R.out, "/* pf_logf: ", 12), 0);
+    assert_int_not_equal(dash, 0);
+    tu_runv("pfmathgen", (const char *const[]){"--func", "log", "--order", "6", "--json", "-o", "-", NULL}, &R);
+    dash = stat("-", &sb);
+    assert_int_equal(chdir(here), 0);
+    assert_int_equal(R.status, 2);
+    assert_int_equal(tu_count_lines(R.err), 1);
+    assert_int_equal(R.out[0], 0);
+    assert_int_not_equal(dash, 0);
+}
+
 static void test_target_fixed(void **st)
 {
     (void)st;
@@ -244,6 +270,7 @@ int main(void)
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_json),
         cmocka_unit_test(test_target_fixed),
+        cmocka_unit_test(test_dash_and_plot_names),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     rmdir(tdir);

@@ -13,6 +13,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 /* The best float-coefficient fits here reach about 2^-40 (exp at order 30:
  * 1.15e-12 = 2^-39.7; log: Sollya's fpminimax at order 30 gives 6.5e-12).
@@ -244,9 +245,28 @@ static int check_noise(pf_request *rq, const unsigned char *seen, char *err, siz
     return 0;
 }
 
-/* -o and --plot: checked before the fit (output.h) */
-static int check_outputs(const pf_request *rq, char *err, size_t errlen)
+/* the plot is SVG only: a name with another extension (x.png) would get
+   SVG bytes under a name that promises something else */
+static int plot_name_ok(const char *path)
 {
+    const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    const char *dot = strrchr(base, '.');
+    return !dot || dot == base || !strcasecmp(dot, ".svg");
+}
+
+/* -o and --plot: checked before the fit (output.h).  "-o -" is standard
+   output, as no -o is (a file named '-' was written before 2026-12-07). */
+static int check_outputs(pf_request *rq, char *err, size_t errlen)
+{
+    if (rq->output && !strcmp(rq->output, "-")) {
+        if (rq->json)
+            return bad(err, errlen, "-o - and --json both write to standard output: give -o a file name");
+        rq->output = NULL;
+    }
+    if (rq->plot && !strcmp(rq->plot, "-"))
+        return bad(err, errlen, "--plot -: give a file name (standard output carries the C)");
+    if (rq->plot && !plot_name_ok(rq->plot))
+        return bad(err, errlen, "--plot %.200s: the plot is SVG; give a name ending in .svg", rq->plot);
     if (rq->output && pf_out_check("-o", rq->output, err, errlen) != 0)
         return 2;
     if (rq->plot && pf_out_check("--plot", rq->plot, err, errlen) != 0)
@@ -367,6 +387,8 @@ int pf_request_parse(int argc, char **argv, pf_request *rq, char *err, size_t er
                        "[--prefix P])", long_name(c));
         if (!rq->output)
             return bad(err, errlen, "usage: pfmathgen --scene FILE -o DIR [--prefix P]");
+        if (!strcmp(rq->output, "-"))
+            return bad(err, errlen, "-o -: --scene writes files into a directory; give its name");
         rq->command = pf_cli_command_line(argc, argv);
         return rq->command ? 0 : bad(err, errlen, "out of memory");
     }
