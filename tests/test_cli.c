@@ -233,6 +233,57 @@ static void test_dash_and_plot_names(void **st)
     assert_int_not_equal(dash, 0);
 }
 
+/* --json with -o when standard output is full (/dev/full): the run fails
+ * (exit 1, one line) and -o's file is not written; before, the C file was
+ * written and then the JSON failed */
+static void test_json_stdout_full(void **st)
+{
+    (void)st;
+    int full = open("/dev/full", O_WRONLY);
+    if (full < 0)
+        skip();
+    static const char *const cases[][12] = {
+        {"--func", "log", "--order", "6", "--no-sweep", "--json", "-o", NULL},
+        {"--func", "exp", "--type", "fixed<15,11>", "--out-type", "ufixed<16,8>", "--no-sweep", "--json", "-o", NULL},
+    };
+    for (size_t c = 0; c < 2; c++) {
+        char ob[64], eb[64], prog[PATH_MAX];
+        const char *out = tpath(ob, sizeof ob, "json-full.c"), *errf = tpath(eb, sizeof eb, "json-full.err");
+        unlink(out);
+        tu_prog_path("pfmathgen", prog, sizeof prog);
+        const char *v[16] = {prog};
+        size_t n = 1;
+        for (size_t i = 0; cases[c][i]; i++)
+            v[n++] = cases[c][i];
+        v[n++] = out;
+        v[n] = NULL;
+        pid_t pid = fork();
+        if (pid == 0) {
+            int e = open(errf, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+            dup2(full, 1);
+            dup2(e, 2);
+            execv(prog, (char *const *)v);
+            _exit(127);
+        }
+        int stt = 0;
+        assert_true(pid > 0 && waitpid(pid, &stt, 0) == pid);
+        struct stat sb;
+        assert_true(WIFEXITED(stt));
+        assert_int_equal(WEXITSTATUS(stt), 1);
+        assert_int_not_equal(stat(out, &sb), 0);
+        char msg[2048] = "";
+        FILE *f = fopen(errf, "r");
+        assert_non_null(f);
+        size_t k = fread(msg, 1, sizeof msg - 1, f);
+        msg[k] = 0;
+        fclose(f);
+        unlink(errf);
+        assert_int_equal(tu_count_lines(msg), 1);
+        assert_non_null(strstr(msg, "standard output"));
+    }
+    close(full);
+}
+
 static void test_target_fixed(void **st)
 {
     (void)st;
@@ -271,6 +322,7 @@ int main(void)
         cmocka_unit_test(test_json),
         cmocka_unit_test(test_target_fixed),
         cmocka_unit_test(test_dash_and_plot_names),
+        cmocka_unit_test(test_json_stdout_full),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     rmdir(tdir);

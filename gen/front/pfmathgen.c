@@ -87,6 +87,18 @@ static int write_outputs(const pf_request *rq, const char *src, size_t len, cons
     return rc;
 }
 
+/* With --json and -o, the JSON goes out first: if standard output cannot
+ * take it (a full disk, a closed pipe), the run fails before -o's file is
+ * written, rather than failing with the file already in place. */
+static int json_written(const pf_request *rq)
+{
+    if (!rq->json || (fflush(stdout) == 0 && !ferror(stdout)))
+        return 1;
+    pf_say(rq->output ? "cannot write the standard output (the JSON report); -o's file not written"
+                      : "cannot write the standard output (the JSON report)");
+    return 0;
+}
+
 static int run_float(pf_request *rq)
 {
     pf_gen_req g = {0};
@@ -132,7 +144,7 @@ static int run_float(pf_request *rq)
     else
         for (int i = 0; i < 1 + both; i++)
             pf_report_text(stderr, &r[i]);
-    int rc = write_outputs(rq, r[0].csrc, r[0].clen, svg, svglen);
+    int rc = json_written(rq) ? write_outputs(rq, r[0].csrc, r[0].clen, svg, svglen) : 1;
     if (!rc && !both && !rq->output && !rq->json)
         fwrite(r[0].csrc, 1, r[0].clen, stdout);
     free(svg);
@@ -153,7 +165,7 @@ static int run_fixed(pf_request *rq)
         pf_say(err);
         return rc;
     }
-    rc = write_outputs(rq, src, len, NULL, 0);
+    rc = json_written(rq) ? write_outputs(rq, src, len, NULL, 0) : 1;
     if (!rc && !rq->output && !rq->json)
         fwrite(src, 1, len, stdout);
     free(src);
@@ -189,9 +201,9 @@ int main(int argc, char **argv)
     }
     pf_request_free(&rq);
     /* C or JSON on a full disk or a closed pipe is a failure, not success */
-    if (fflush(stdout) != 0 || ferror(stdout)) {
+    if ((fflush(stdout) != 0 || ferror(stdout)) && !rc) {
         pf_say("cannot write the standard output");
-        rc = rc ? rc : 1;
+        rc = 1;
     }
     return rc;
 }
