@@ -239,6 +239,21 @@ static void test_pfbench_writes(void **st)
  * "--help" with five pictures in it, any other option did the same, a
  * regular file as DIR gave five error lines, and a second argument was
  * ignored. */
+/* the build's table printer takes no arguments: one given is refused, not
+ * ignored (it printed the tables whatever it was given) */
+static void test_pfnoise_tablegen(void **st)
+{
+    (void)st;
+    REFUSE("pfnoise-tablegen", "--seed");
+    REFUSE("pfnoise-tablegen", "42");
+    REFUSE("pfnoise-tablegen", "--help", "x");
+    const char *const help[] = {"pfnoise-tablegen", "--help", NULL};
+    run_result r;
+    run(help, &r);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "usage: pfnoise-tablegen"));
+}
+
 static void test_pfnoise_demo(void **st)
 {
     (void)st;
@@ -415,6 +430,7 @@ int main(void)
         cmocka_unit_test(test_pfbench),
         cmocka_unit_test(test_pfbench_writes),
         cmocka_unit_test(test_pfnoise_demo),
+        cmocka_unit_test(test_pfnoise_tablegen),
         cmocka_unit_test(test_lib_paths),
         cmocka_unit_test(test_bench_programs),
     };
