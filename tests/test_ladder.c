@@ -162,6 +162,28 @@ static void test_emitted_meets_bound(void **st)
     unlink(p8192);
 }
 
+/* the default name spells U so that it reads back as U: 2.0000001 was
+ * named as 2 (%g), one name for two functions */
+static void test_default_names(void **st)
+{
+    (void)st;
+    static const char *const cases[][2] = {
+        {"2", "pf_exp2f_u2("}, {"2.0000001", "pf_exp2f_u2p0000001("}, {"2.5", "pf_exp2f_u2p5("}};
+    char p[96];
+    tu_scratch(p, "exp2-name.c");
+    for (int i = 0; i < 3; i++) {
+        unlink(p);
+        tu_runl(&R, "pfmathgen", "--func", "exp2", "--max-ulp", cases[i][0], "--confirm", "sample", "-o", p, NULL);
+        assert_int_equal(R.status, 0);
+        char *src = tu_slurp(p, NULL);
+        assert_non_null(src);
+        print_message("--max-ulp %s: %s %s\n", cases[i][0], cases[i][1], strstr(src, cases[i][1]) ? "found" : "missing");
+        assert_non_null(strstr(src, cases[i][1]));
+        free(src);
+    }
+    unlink(p);
+}
+
 static void test_impossible(void **st)
 {
     (void)st;
@@ -213,6 +235,7 @@ int main(void)
         cmocka_unit_test(test_clashes),
         cmocka_unit_test(test_emitted_meets_bound),
         cmocka_unit_test(test_impossible),
+        cmocka_unit_test(test_default_names),
         cmocka_unit_test(test_pareto_checks),
     };
     return cmocka_run_group_tests(t, NULL, NULL);

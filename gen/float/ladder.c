@@ -218,8 +218,12 @@ static void default_name(char *out, size_t n, const char *func, double u)
     char num[64];
     if (u == floor(u) && u < 1e9)
         snprintf(num, sizeof num, "%.0f", u);
-    else
-        snprintf(num, sizeof num, "%g", u);
+    else /* the shortest that reads back as u: 1.0000001 is not 1's name */
+        for (int p = 1; p <= 17; p++) {
+            snprintf(num, sizeof num, "%.*g", p, u);
+            if (strtod(num, NULL) == u)
+                break;
+        }
     char *w = num;
     for (char *p = num; *p; p++)
         if (*p == '.')
