@@ -250,7 +250,8 @@ static void test_pairs(void **st)
         {"ufixed<16,8>", "fixed<15,14>", 1500},  /* unsigned input */
         {"fixed<31,24>", "fixed<31,20>", 1500},  /* 64-bit words */
         {"fixed<7,3>", "fixed<15,12>", 1500},    /* 8-bit storage in */
-        {"fixed<31,31>", "ufixed<8,8>", 1000},   /* pure-fraction input, unsigned (saturating) output */
+        {"fixed<31,31>", "fixed<7,7>", 1000},    /* pure-fraction input, 8-bit output saturating at +1 (unsigned
+                                                    outputs are refused since 2026-12-07: test_cli_errors) */
         {"ufixed<32,28>", "fixed<31,22>", 1000}, /* 32-bit unsigned, F > 24, widest output for it */
     };
     for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++)
@@ -376,6 +377,9 @@ static void test_cli_errors(void **st)
         {"--func noise3 --type 'fixed<31,16>' --seed x", "--seed"},
         {"--func noise3 --type 'fixed<31,16' --out-type 'fixed<15,15>'", "--type"},
         {"--func noise3 --type 'fixed<31,16>' --bogus", "unknown option"},
+        /* unsigned outputs saturated every negative value to 0, silently */
+        {"--func noise2 --type 'fixed<31,16>' --out-type 'ufixed<16,15>'", "unsigned"},
+        {"--func noise --type 'ufixed<16,8>' --out-type 'unsigned fixed<8,7>'", "unsigned"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         const char *path = nzp("bad.c");

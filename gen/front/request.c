@@ -231,6 +231,13 @@ static int check_noise(pf_request *rq, const unsigned char *seen, char *err, siz
                    "libpfmath (pfnoise.h)",
                    rq->func);
     char t[64];
+    if (!rq->out.is_signed) {
+        pf_type_format(&rq->out, t, sizeof t);
+        return bad(err, errlen,
+                   "output %s is unsigned: gradient noise takes values in [-1, 1], half of them negative (they "
+                   "would saturate to 0); use a signed output",
+                   t);
+    }
     pf_type_format(&rq->in, t, sizeof t);
     if (rq->in.exp <= 0)
         return bad(err, errlen,
