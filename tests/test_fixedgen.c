@@ -174,6 +174,9 @@ static void test_bad_types_and_pairs(void **st)
     expect_error("--func sin --type 'fixed<15,12>' --order 0");
     expect_error("--func sin --type 'fixed<15,12>' --name 9lives");
     expect_error("--type 'fixed<15,12>'");
+    /* the input's format is not the output's by default (it was, silently) */
+    expect_error("--func sin --out-type 'fixed<15,14>'");
+    expect_error("--func noise2 --out-type 'fixed<15,15>'");
     /* an order below what the exact bound needs */
     expect_error("--func sin --type 'fixed<15,12>' --out-type 'fixed<15,14>' --order 3");
 }

@@ -36,7 +36,7 @@ static const char usage[] =
     "                      noise1, noise2, noise3, noise4 (one dimension) or noise (all four)\n"
     "  --type T            input type, e.g. 'fixed<15,12>', 'unsigned fixed<16,8>', 'ufixed<16,8>'\n"
     "                      (storage up to 32 bits)\n"
-    "  --out-type T        output type (default: the input type)\n"
+    "  --out-type T        output type (default: the input type; needs --type)\n"
     "  --variant V         exact (default: below 1 LSB of the output for every input) or\n"
     "                      fast (within max(2^-10 relative, 4 LSB))\n"
     "  --order N           polynomial degree 1..24 (default: the smallest within the variant's bound)\n"

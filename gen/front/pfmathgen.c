@@ -25,7 +25,7 @@ static const char usage[] =
     "  --reduction R       argument reduction (log/log2: balanced (default), seed)\n"
     "  --type T            input type: float (default) or a fixed type such as\n"
     "                      'fixed<15,12>', 'unsigned fixed<16,8>', 'ufixed<16,8>'\n"
-    "  --out-type T        output type (fixed point; default: the input type)\n"
+    "  --out-type T        output type (fixed point; default: the input type; needs --type)\n"
     "  --method M          minimax (default for exact: least maximum error, nlopt) or\n"
     "                      lsq (default for fast: the seed's least squares)\n"
     "  --target T          smallest order whose emitted polynomial meets T: float\n"

@@ -407,6 +407,10 @@ int pf_request_parse(int argc, char **argv, pf_request *rq, char *err, size_t er
         return 2;
     if (rq->out_type_s && pf_parse_type("--out-type", rq->out_type_s, &rq->out, err, errlen) != 0)
         return 2;
+    /* a fixed-point output says nothing of the input's format: guessing
+       it (the output's) picked a function of another argument range */
+    if (!rq->type_s && rq->out_type_s && !rq->out.is_float)
+        return bad(err, errlen, "--out-type %.100s without --type: give the input type too", rq->out_type_s);
     if (!rq->type_s)
         rq->in = rq->out_type_s ? rq->out : (pf_type){.is_float = 1};
     if (!rq->out_type_s)
