@@ -422,8 +422,9 @@ static void pf_sin_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *res
 #endif
 
 /* AVX2 (x86-64-v3): the same steps on 16 lanes, the sign by vpsignw (it zeroes where its
-   sign operand is 0: hi = 0 or x = 0, where r = 0).  The same
-   values. */
+   sign operand is 0: hi = 0 or x = 0, where r = 0); |x| by vpabsw
+   (measured on Zen 3, this loop alone: 4.52 core cycles per 16 lanes, 4.71
+   with min(x, -x)).  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_sin_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
