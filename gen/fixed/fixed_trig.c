@@ -1260,8 +1260,12 @@ static void emit16_4(fx_gen *G, pf_buf *out, int is_cos)
    AVX-512 loops are software pipelined over groups of four blocks: a pass
    runs the first half (up to q) of group i and the second half of group
    i - 4L, four lines (one step of the four blocks) of one half, then four
-   of the other.  |x| is an unsigned min(x, -x) (vpabsw shares the
-   multipliers' pipes on Zen 4) but in the AVX-512 sin loop.  Those were
+   of the other.  |x| is an unsigned min(x, -x) in the AVX-512 cos loop
+   (vpabsw shares the multipliers' pipes on Zen 4), vpabsw elsewhere: on Zen
+   3 (2026-12-07, the AVX2 loop alone over the 2^16 inputs shuffled, best of
+   400 calls, core cycles per 16 lanes) sin 4.71 -> 4.52 and cos 4.43 ->
+   4.30 with vpabsw (one instruction for two; 1, 2 and 3 blocks a pass
+   slower there: sin 4.93, 4.77, 4.58, cos -, 4.51, 4.36).  Those were
    the fastest measured (2026-11-26, Zen 4, an A/B harness: best of 40
    rounds of 20 passes over the 2^16 inputs shuffled, 3 runs, ns/elem: sin
    on AVX-512 0.0771 (one block a pass) -> 0.0722 (four, interleaved step by
@@ -1296,8 +1300,10 @@ static void tr6_loop(pf_buf *kern, int avx2, int is_cos, int64_t kh, const char 
         snprintf(st[ns++], sizeof st[0], "%s xv@ = _mm256_loadu_si256((const __m256i *)(x + i$));", R);
     else
         snprintf(st[ns++], sizeof st[0], "%s xv@ = _mm512_loadu_si512(x + i$);", R);
-    if (avx2 || is_cos)
+    if (!avx2 && is_cos)
         snprintf(st[ns++], sizeof st[0], "%s ax@ = %s_min_epu16(xv@, %s_sub_epi16(zero, xv@)); /* |x| */", R, P, P);
+    else if (avx2) /* vpabsw(-32768) = 0x8000: 32768 read unsigned, as pf_fx_abs16 */
+        snprintf(st[ns++], sizeof st[0], "%s ax@ = %s_abs_epi16(xv@); /* |x| as uint16_t */", R, P);
     else
         snprintf(st[ns++], sizeof st[0], "%s ax@ = %s_abs_epi16(xv@);", R, P);
     if (kh == 1)
@@ -1482,9 +1488,11 @@ static void emit16_6(fx_gen *G, pf_buf *out, int is_cos)
     for (int v = 0; v < 2; v++) {
         const char *P = v ? "_mm256" : "_mm512", *R = v ? "__m256i" : "__m512i";
         if (v)
-            pf_printf(&kern, "\n\n/* AVX2 (x86-64-v3): the same steps on 16 lanes%s.  The same\n"
-                             "   values. */\n%s",
-                      is_cos ? "" : ", the sign by vpsignw (it zeroes where its\n   sign operand is 0: hi = 0 or x = 0, where r = 0)", cond);
+            pf_printf(&kern, "\n\n/* AVX2 (x86-64-v3): the same steps on 16 lanes%s; |x| by vpabsw\n"
+                             "   (measured on Zen 3, this loop alone: %s core cycles per 16 lanes, %s\n"
+                             "   with min(x, -x)).  The same values. */\n%s",
+                      is_cos ? "" : ", the sign by vpsignw (it zeroes where its\n   sign operand is 0: hi = 0 or x = 0, where r = 0)",
+                      is_cos ? "4.30" : "4.52", is_cos ? "4.43" : "4.71", cond);
         else
             pf_printf(&kern,
                       "\n\n/* AVX-512BW: the same steps on 32 lanes, with intrinsics, so that the\n"
@@ -1504,7 +1512,8 @@ static void emit16_6(fx_gen *G, pf_buf *out, int is_cos)
                   P, (int)(int16_t)(uint16_t)T->pc5);
         if (is_cos)
             pf_printf(&kern, "    const %s one = %s_set1_epi16(0x4000);\n", R, P);
-        pf_printf(&kern, "    const %s zero = %s_setzero_si%d();\n", R, P, v ? 256 : 512);
+        if (!v) /* min(x, -x) and the AVX-512 sin's masked subtract; AVX2 takes vpabsw */
+            pf_printf(&kern, "    const %s zero = %s_setzero_si512();\n", R, P);
         if (T->kh == 1 || T->kh == 2)
             pf_put(&kern, "    (void)kh;\n");
         /* the chain of one block (some 20 cycles of multiplies) is longer than
@@ -1517,8 +1526,8 @@ static void emit16_6(fx_gen *G, pf_buf *out, int is_cos)
              "every step in 16-bit lanes; the AVX-512BW (x86-64-v4) and AVX2 (x86-64-v3) loops by intrinsics "
              "(pmulhuw, pmulhrsw), %s vector instructions per vector%s; the default clone, scalar form: the same "
              "steps in plain C",
-             is_cos ? "14 (|x| as an unsigned min(x, -x), as vpabsw shares the multipliers' pipes on Zen 4)"
-                    : "14 (AVX2: |x| as an unsigned min(x, -x))",
+             is_cos ? "13 (AVX-512: 14, |x| as min(x, -x) unsigned, as vpabsw shares the multipliers' pipes on Zen 4)"
+                    : "14 (the sign: AVX2 two vpsignw, AVX-512 a masked subtract)",
              ", four vectors a pass (AVX-512: software pipelined over groups of four)");
     const char *kv[] = {"FUNC", is_cos ? "cos" : "sin", "NAME", N, "IT", G->it, "OT", G->ot, "BODY", body.s,
                         "KERNEL", kern.s, NULL};

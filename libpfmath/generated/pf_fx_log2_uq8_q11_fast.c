@@ -14,9 +14,10 @@
  * Order:       3, p(T) = T (C1 - T (D2 - C3 T)) 2^-11, three pmulhuw (unsigned words); int16_t 
  *              words: 16-bit lanes
  * Lanes:       16-bit words throughout, but x's float (32-bit lanes: vcvtdq2ps on the unpacked 
- *              words, the shift and the bias, then vpackssdw) on x86-64-v3; x86-64-v4: 
- *              leading-zero count (vplzcntd on x 2^16 + 2^15, packed to words), per-element 
- *              shift (vpsllvw), e 2^11 by vpermw; other clones, scalar form: plain C
+ *              words, the shift and the bias, then vpackssdw) on x86-64-v3, two blocks a pass, 
+ *              software pipelined; x86-64-v4: leading-zero count (vplzcntd on x 2^16 + 2^15, 
+ *              packed to words), per-element shift (vpsllvw), e 2^11 by vpermw; other clones, 
+ *              scalar form: plain C
  * Method:      the fitter's minimax cubic for log2(1+t) with p(0) = 0 (max error 7.710e-04), 
  *              its coefficients at 2^-11, then C3 = 352, D2 = 1228, C1 = 2927 from a search 
  *              around them for the least max error of the integer steps over every input 
@@ -314,53 +315,83 @@ static void pf_log2_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *r
    x = 0 (bits 0) gives -276480, which the packing saturates to -32768.  T =
    U << 5, and floor((a4 - 2^11) T 2^-16) = floor(a4 T 2^-16) - T 2^-5
    (a4 >= 2^11, checked), so y = U + floor((a4 - 2^11) T 2^-16) without
-   e: C1 - 2^11 is stored.  x = 0: T = 0, y = -32768.  The same values. */
+   e: C1 - 2^11 is stored.  x = 0: T = 0, y = -32768.  Two blocks a pass,
+   step by step, software pipelined (measured on Zen 3, this loop alone:
+   5.5 -> 5.1 core cycles per 16 lanes).  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_log2_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
 {
     const __m256i z = _mm256_setzero_si256(), cb = _mm256_set1_epi32(276480);
     const __m256i c3 = _mm256_set1_epi16(352), d2 = _mm256_set1_epi16(1228), c1 = _mm256_set1_epi16(879);
     size_t i = 0;
-    if (n >= 16) {
-        /* software pipelined: a pass runs the first steps of block i and the
-           rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
-        __m256i p_u;
+    if (n >= 32) {
+        /* software pipelined over pairs of blocks: a pass runs the reduction of
+           blocks i and i + 16 and the polynomial of blocks i - 32 and i - 16,
+           step by step (one block's chain is longer than the CPU overlaps) */
+        __m256i p_u0, p_u1;
         {
-            __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-            __m256i fl = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv, z)));
-            __m256i fh = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv, z)));
-            __m256i u = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl, 12), cb),
-                                           _mm256_sub_epi32(_mm256_srli_epi32(fh, 12), cb)); /* e 2^11 + T 2^-5 */
-            p_u = u;
+            __m256i xv0 = _mm256_loadu_si256((const __m256i *)(x + i));
+            __m256i xv1 = _mm256_loadu_si256((const __m256i *)(x + i + 16));
+            __m256i fl0 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv0, z)));
+            __m256i fl1 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv1, z)));
+            __m256i fh0 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv0, z)));
+            __m256i fh1 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv1, z)));
+            __m256i u0 = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl0, 12), cb), _mm256_sub_epi32(_mm256_srli_epi32(fh0, 12), cb)); /* e 2^11 + T 2^-5 */
+            __m256i u1 = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl1, 12), cb), _mm256_sub_epi32(_mm256_srli_epi32(fh1, 12), cb)); /* e 2^11 + T 2^-5 */
+            p_u0 = u0, p_u1 = u1;
         }
-        for (i = 16; i + 16 <= n; i += 16) {
-            __m256i n_u;
+        for (i = 32; i + 32 <= n; i += 32) {
+            __m256i n_u0, n_u1;
             {
-                __m256i xv = _mm256_loadu_si256((const __m256i *)(x + i));
-                __m256i fl = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv, z)));
-                __m256i fh = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv, z)));
-                __m256i u = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl, 12), cb),
-                                               _mm256_sub_epi32(_mm256_srli_epi32(fh, 12), cb)); /* e 2^11 + T 2^-5 */
-                n_u = u;
+                __m256i xv0 = _mm256_loadu_si256((const __m256i *)(x + i));
+                __m256i xv1 = _mm256_loadu_si256((const __m256i *)(x + i + 16));
+                __m256i fl0 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv0, z)));
+                __m256i fl1 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv1, z)));
+                __m256i fh0 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv0, z)));
+                __m256i fh1 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv1, z)));
+                __m256i u0 = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl0, 12), cb), _mm256_sub_epi32(_mm256_srli_epi32(fh0, 12), cb)); /* e 2^11 + T 2^-5 */
+                __m256i u1 = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl1, 12), cb), _mm256_sub_epi32(_mm256_srli_epi32(fh1, 12), cb)); /* e 2^11 + T 2^-5 */
+                n_u0 = u0, n_u1 = u1;
             }
             {
-                __m256i u = p_u;
-                __m256i t = _mm256_slli_epi16(u, 5);
-                __m256i a2 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t));
-                __m256i a4 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2, t)); /* a4 - 2^11 */
-                __m256i r = _mm256_add_epi16(u, _mm256_mulhi_epu16(a4, t));
-                _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+                __m256i u0 = p_u0, u1 = p_u1;
+                __m256i t0 = _mm256_slli_epi16(u0, 5);
+                __m256i t1 = _mm256_slli_epi16(u1, 5);
+                __m256i a2_0 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t0));
+                __m256i a2_1 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t1));
+                __m256i a4_0 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2_0, t0)); /* a4 - 2^11 */
+                __m256i a4_1 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2_1, t1)); /* a4 - 2^11 */
+                __m256i r0 = _mm256_add_epi16(u0, _mm256_mulhi_epu16(a4_0, t0));
+                __m256i r1 = _mm256_add_epi16(u1, _mm256_mulhi_epu16(a4_1, t1));
+                _mm256_storeu_si256((__m256i *)(y + i - 32), r0);
+                _mm256_storeu_si256((__m256i *)(y + i - 16), r1);
             }
-            p_u = n_u;
+            p_u0 = n_u0, p_u1 = n_u1;
         }
         {
-            __m256i u = p_u;
-            __m256i t = _mm256_slli_epi16(u, 5);
-            __m256i a2 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t));
-            __m256i a4 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2, t)); /* a4 - 2^11 */
-            __m256i r = _mm256_add_epi16(u, _mm256_mulhi_epu16(a4, t));
-            _mm256_storeu_si256((__m256i *)(y + i - 16), r);
+            __m256i u0 = p_u0, u1 = p_u1;
+            __m256i t0 = _mm256_slli_epi16(u0, 5);
+            __m256i t1 = _mm256_slli_epi16(u1, 5);
+            __m256i a2_0 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t0));
+            __m256i a2_1 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t1));
+            __m256i a4_0 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2_0, t0)); /* a4 - 2^11 */
+            __m256i a4_1 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2_1, t1)); /* a4 - 2^11 */
+            __m256i r0 = _mm256_add_epi16(u0, _mm256_mulhi_epu16(a4_0, t0));
+            __m256i r1 = _mm256_add_epi16(u1, _mm256_mulhi_epu16(a4_1, t1));
+            _mm256_storeu_si256((__m256i *)(y + i - 32), r0);
+            _mm256_storeu_si256((__m256i *)(y + i - 16), r1);
         }
+    }
+    for (; i + 16 <= n; i += 16) { /* one block left of a pair */
+        __m256i xv0 = _mm256_loadu_si256((const __m256i *)(x + i));
+        __m256i fl0 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpacklo_epi16(xv0, z)));
+        __m256i fh0 = _mm256_castps_si256(_mm256_cvtepi32_ps(_mm256_unpackhi_epi16(xv0, z)));
+        __m256i u0 = _mm256_packs_epi32(_mm256_sub_epi32(_mm256_srli_epi32(fl0, 12), cb), _mm256_sub_epi32(_mm256_srli_epi32(fh0, 12), cb)); /* e 2^11 + T 2^-5 */
+        __m256i t0 = _mm256_slli_epi16(u0, 5);
+        __m256i a2_0 = _mm256_sub_epi16(d2, _mm256_mulhi_epu16(c3, t0));
+        __m256i a4_0 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(a2_0, t0)); /* a4 - 2^11 */
+        __m256i r0 = _mm256_add_epi16(u0, _mm256_mulhi_epu16(a4_0, t0));
+        _mm256_storeu_si256((__m256i *)(y + i), r0);
     }
     for (; i < n; i++)
         y[i] = pf_log2_uq8_q11_fast(x[i]);
