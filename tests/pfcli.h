@@ -184,15 +184,27 @@ static inline int pfcli_out_open(pfcli_out *o, const char *path, char *err, size
         return -1;
     }
     snprintf(o->final, sizeof o->final, "%s", path);
-    if (lstat(path, &sb) == 0 && S_ISLNK(sb.st_mode)) {
-        char *r = realpath(path, NULL);
-        if (!r || strlen(r) >= sizeof o->final) {
+    /* a symlink is written through, as pfmathgen does (gen/front/output.c):
+       its target, followed link by link, so that a dangling link whose
+       target's directory exists is created through (realpath refused it) */
+    for (int hop = 0; lstat(o->final, &sb) == 0 && S_ISLNK(sb.st_mode); hop++) {
+        char t[sizeof o->final], next[2 * sizeof o->final];
+        ssize_t k = hop < 40 ? readlink(o->final, t, sizeof t - 1) : -1;
+        if (k < 0) {
             snprintf(err, n, "cannot follow the symlink %.400s", path);
-            free(r);
             return -1;
         }
-        snprintf(o->final, sizeof o->final, "%s", r);
-        free(r);
+        t[k] = 0;
+        const char *slash = strrchr(o->final, '/');
+        if (t[0] == '/' || !slash)
+            snprintf(next, sizeof next, "%s", t);
+        else
+            snprintf(next, sizeof next, "%.*s/%s", (int)(slash - o->final), o->final, t);
+        if (strlen(next) >= sizeof o->final) {
+            snprintf(err, n, "cannot follow the symlink %.400s", path);
+            return -1;
+        }
+        snprintf(o->final, sizeof o->final, "%s", next);
     }
     if (stat(o->final, &sb) == 0 && !S_ISREG(sb.st_mode)) {
         if (S_ISDIR(sb.st_mode)) {

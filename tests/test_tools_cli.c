@@ -232,13 +232,22 @@ static void test_pfbench_writes(void **st)
         n += de->d_name[0] != '.';
     closedir(d);
     assert_int_equal(n, 3); /* bench.md (link), real.md, bench.csv */
+    /* a dangling link is written through as pfmathgen's -o is (new.md
+       created, the link kept); pfbench refused it, realpath failing */
+    assert_int_equal(unlink(md), 0);
+    assert_int_equal(symlink("new.md", md), 0);
+    run(argv, &r);
+    print_message("pfbench, bench.md -> new.md (absent) -> %d: %s", r.status, r.err);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(lstat(md, &sb), 0);
+    assert_true(S_ISLNK(sb.st_mode));
+    snprintf(real, sizeof real, "%s/new.md", dir);
+    s = tu_slurp(real, NULL);
+    assert_non_null(s);
+    assert_non_null(strstr(s, "# pfbench"));
+    free(s);
 }
 
-/* pfnoise-demo [DIR] (README: make noise-pictures): an option is not a
- * directory name.  Before, "pfnoise-demo --help" created a directory
- * "--help" with five pictures in it, any other option did the same, a
- * regular file as DIR gave five error lines, and a second argument was
- * ignored. */
 /* the build's table printer takes no arguments: one given is refused, not
  * ignored (it printed the tables whatever it was given) */
 static void test_pfnoise_tablegen(void **st)
@@ -254,6 +263,11 @@ static void test_pfnoise_tablegen(void **st)
     assert_non_null(strstr(r.out, "usage: pfnoise-tablegen"));
 }
 
+/* pfnoise-demo [DIR] (README: make noise-pictures): an option is not a
+ * directory name.  Before, "pfnoise-demo --help" created a directory
+ * "--help" with five pictures in it, any other option did the same, a
+ * regular file as DIR gave five error lines, and a second argument was
+ * ignored. */
 static void test_pfnoise_demo(void **st)
 {
     (void)st;
