@@ -1076,6 +1076,14 @@ static void log_put_step(pf_buf *b, const char *t, int k, const char *in)
     pf_put(b, "\n");
 }
 
+/* steps j0 .. j1 - 1 of st, each for blocks 0 .. nb - 1 in turn */
+static void log_put_steps(pf_buf *b, const char (*st)[240], int j0, int j1, int nb, const char *in)
+{
+    for (int j = j0; j < j1; j++)
+        for (int k = 0; k < nb; k++)
+            log_put_step(b, st[j], k, in);
+}
+
 static void emit_poly(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern)
 {
     const fx_log_red *L = &G->log;
@@ -1235,31 +1243,22 @@ static void emit_poly(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern)
                  "           blocks i and i + 16 and the polynomial of blocks i - 32 and i - 16,\n"
                  "           step by step (one block's chain is longer than the CPU overlaps) */\n"
                  "        __m256i p_u0, p_u1;\n        {\n");
-    for (int j = 0; j < split; j++)
-        for (int k = 0; k < 2; k++)
-            log_put_step(kern, st[j], k, "            ");
+    log_put_steps(kern, st, 0, split, 2, "            ");
     pf_put(kern, "            p_u0 = u0, p_u1 = u1;\n        }\n"
                  "        for (i = 32; i + 32 <= n; i += 32) {\n            __m256i n_u0, n_u1;\n            {\n");
-    for (int j = 0; j < split; j++)
-        for (int k = 0; k < 2; k++)
-            log_put_step(kern, st[j], k, "                ");
+    log_put_steps(kern, st, 0, split, 2, "                ");
     pf_put(kern, "                n_u0 = u0, n_u1 = u1;\n            }\n"
                  "            {\n                __m256i u0 = p_u0, u1 = p_u1;\n");
-    for (int j = split; j < ns; j++)
-        for (int k = 0; k < 2; k++)
-            log_put_step(kern, st[j], k, "                ");
+    log_put_steps(kern, st, split, ns, 2, "                ");
     pf_put(kern, "                _mm256_storeu_si256((__m256i *)(y + i - 32), r0);\n"
                  "                _mm256_storeu_si256((__m256i *)(y + i - 16), r1);\n");
     pf_put(kern, "            }\n            p_u0 = n_u0, p_u1 = n_u1;\n        }\n"
                  "        {\n            __m256i u0 = p_u0, u1 = p_u1;\n");
-    for (int j = split; j < ns; j++)
-        for (int k = 0; k < 2; k++)
-            log_put_step(kern, st[j], k, "            ");
+    log_put_steps(kern, st, split, ns, 2, "            ");
     pf_put(kern, "            _mm256_storeu_si256((__m256i *)(y + i - 32), r0);\n"
                  "            _mm256_storeu_si256((__m256i *)(y + i - 16), r1);\n");
     pf_put(kern, "        }\n    }\n    for (; i + 16 <= n; i += 16) { /* one block left of a pair */\n");
-    for (int j = 0; j < ns; j++)
-        log_put_step(kern, st[j], 0, "        ");
+    log_put_steps(kern, st, 0, ns, 1, "        ");
     pf_put(kern, "        _mm256_storeu_si256((__m256i *)(y + i), r0);\n");
     pf_printf(kern, "    }\n    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif", N);
     G->bw16 = 3;
