@@ -11,11 +11,11 @@
  *              16 segments
  * Order:       1 per segment: 16 chords of T (value and drop, two 16-entry tables); uint16_t 
  *              words: 16-bit lanes
- * Lanes:       16-bit words throughout; the lookups (vpermw) and the per-element shift 
- *              (vpsrlvw) in 16-bit lanes by AVX-512BW intrinsics (x86-64-v4); AVX2 intrinsics 
- *              (x86-64-v3): each lookup two vpshufb and a vpblendvb, the shift in 32-bit lanes 
- *              (vpsrlvd) on the even and odd words; the default clone, scalar form: the same 
- *              steps in plain C
+ * Lanes:       16-bit words throughout; AVX-512BW (x86-64-v4): lookups vpermw, the shift 
+ *              vpsrlvw; AVX2 (x86-64-v3): a lookup two vpshufb (by j, j << 8) and vpaddw (V) or 
+ *              vpblendvb (S), tables V[j] + j S[j] and 16 S[j] times W << 5 (j S[j] cancels: no 
+ *              shift for r), the shift in 32-bit lanes (vpsrlvd) on even and odd words; the 
+ *              default clone, scalar form: the same steps in plain C
  * Method:      chords through T(j/16) (C0 at the seams): V[j] = round(T(j/16)), S[j] = V[j] - 
  *              round(T((j+1)/16)), T from MPFR (256 bits), capped at the output's max (or V[0] 
  *              set to it); D, L, d and V[0]'s choice taken over the candidates by the smallest 
@@ -312,66 +312,68 @@ static void pf_exp2_q11_uq8_fast_array_bw(const int16_t *restrict x, uint16_t *r
 #endif
 
 /* AVX2 (x86-64-v3): the same steps on 16 lanes.  No vpermw: a table of 16
-   words is two vpshufb (its low and its high bytes) merged by vpblendvb;
-   no 16-bit per-element shift: v >> c in 32-bit lanes (vpsrlvd) on the even
-   and the odd words apart.  The same values. */
+   words is two vpshufb, on its low bytes (j in the index's low byte) and
+   its high bytes (j in the high byte); the chord takes j along: with xs =
+   W << 5 (j and r only), pmulhuw(16 S[j], xs) = j S[j] + floor(S[j] r 2^-7),
+   so the tables hold V[j] + j S[j] and 16 S[j].  No 16-bit per-element
+   shift: v >> c in 32-bit lanes (vpsrlvd) on the even and the odd words
+   apart.  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
 static void pf_exp2_q11_uq8_fast_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
 {
-    uint8_t b[4][16]; /* V's low, high bytes, S's low, high bytes */
+    uint8_t b[4][16]; /* V + j S: low, high bytes less a = V[0] / 257 (the index's other byte reads entry 0: a and 0, so the sum is V[j] + j S[j]); 16 S: low, high bytes */
     for (int k = 0; k < 16; k++) {
-        b[0][k] = (uint8_t)pf_exp2_q11_uq8_fast_fv[k];
-        b[1][k] = (uint8_t)(pf_exp2_q11_uq8_fast_fv[k] >> 8);
-        b[2][k] = (uint8_t)pf_exp2_q11_uq8_fast_fs[k];
-        b[3][k] = (uint8_t)(pf_exp2_q11_uq8_fast_fs[k] >> 8);
+        uint16_t vp = (uint16_t)(pf_exp2_q11_uq8_fast_fv[k] + (uint32_t)k * pf_exp2_q11_uq8_fast_fs[k]), sp = (uint16_t)(16u * pf_exp2_q11_uq8_fast_fs[k]);
+        b[0][k] = (uint8_t)vp;
+        b[1][k] = (uint8_t)((vp >> 8) - 255u);
+        b[2][k] = (uint8_t)sp;
+        b[3][k] = (uint8_t)(sp >> 8);
     }
     const __m256i vl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[0]));
     const __m256i vh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[1]));
     const __m256i sl = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[2]));
     const __m256i sh = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[3]));
-    const __m256i d = _mm256_set1_epi16(16384), m15 = _mm256_set1_epi16(15);
+    const __m256i d = _mm256_set1_epi16(16384), kx = _mm256_set1_epi16(32), k256 = _mm256_set1_epi16(256);
     const __m256i hib = _mm256_set1_epi16(-256), lo16 = _mm256_set1_epi32(0xffff);
-    const __m256i dup = _mm256_setr_epi8(0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14,
-                                         0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
     size_t i = 0;
     if (n >= 16) {
         /* software pipelined: a pass runs the first steps of block i and the
            rest of block i - 16 (one block's chain is longer than the CPU overlaps) */
-        __m256i p_w, p_j;
+        __m256i p_w, p_xs;
         {
             __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));
-            __m256i j = _mm256_shuffle_epi8(_mm256_and_si256(_mm256_srli_epi16(w, 7), m15), dup); /* j in both bytes */
-            p_w = w, p_j = j;
+            __m256i xs = _mm256_mullo_epi16(w, kx); /* j, r: W << (16 - fb) (a multiply: the shift pipes are the busy ones) */
+            p_w = w, p_xs = xs;
         }
         for (i = 16; i + 16 <= n; i += 16) {
-            __m256i n_w, n_j;
+            __m256i n_w, n_xs;
             {
                 __m256i w = _mm256_sub_epi16(d, _mm256_min_epi16(_mm256_loadu_si256((const __m256i *)(x + i)), d));
-                __m256i j = _mm256_shuffle_epi8(_mm256_and_si256(_mm256_srli_epi16(w, 7), m15), dup); /* j in both bytes */
-                n_w = w, n_j = j;
+                __m256i xs = _mm256_mullo_epi16(w, kx); /* j, r: W << (16 - fb) (a multiply: the shift pipes are the busy ones) */
+                n_w = w, n_xs = xs;
             }
             {
-                __m256i w = p_w, j = p_j;
-                __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);
-                __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);
-                v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, 9)));
-                __m256i c = _mm256_srli_epi16(w, 11);
-                __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));
-                __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)); /* its high word */
+                __m256i w = p_w, xs = p_xs;
+                __m256i jl = _mm256_srli_epi16(xs, 12), jh = _mm256_mullo_epi16(jl, k256); /* j, j << 8 */
+                __m256i v = _mm256_add_epi16(_mm256_shuffle_epi8(vl, jl), _mm256_shuffle_epi8(vh, jh));
+                __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, jl), _mm256_shuffle_epi8(sh, jh), hib);
+                v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, xs)); /* V[j] - floor(S[j] r 2^-7) */
+                __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(_mm256_srli_epi16(w, 11), lo16));
+                __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(w, 27)); /* its high word, by the high word's c */
                 __m256i r = _mm256_blend_epi16(ev, od, 0xaa);
                 _mm256_storeu_si256((__m256i *)(y + i - 16), r);
             }
-            p_w = n_w, p_j = n_j;
+            p_w = n_w, p_xs = n_xs;
         }
         {
-            __m256i w = p_w, j = p_j;
-            __m256i v = _mm256_blendv_epi8(_mm256_shuffle_epi8(vl, j), _mm256_shuffle_epi8(vh, j), hib);
-            __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, j), _mm256_shuffle_epi8(sh, j), hib);
-            v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, _mm256_slli_epi16(w, 9)));
-            __m256i c = _mm256_srli_epi16(w, 11);
-            __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(c, lo16));
-            __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(c, 16)); /* its high word */
+            __m256i w = p_w, xs = p_xs;
+            __m256i jl = _mm256_srli_epi16(xs, 12), jh = _mm256_mullo_epi16(jl, k256); /* j, j << 8 */
+            __m256i v = _mm256_add_epi16(_mm256_shuffle_epi8(vl, jl), _mm256_shuffle_epi8(vh, jh));
+            __m256i s = _mm256_blendv_epi8(_mm256_shuffle_epi8(sl, jl), _mm256_shuffle_epi8(sh, jh), hib);
+            v = _mm256_sub_epi16(v, _mm256_mulhi_epu16(s, xs)); /* V[j] - floor(S[j] r 2^-7) */
+            __m256i ev = _mm256_srlv_epi32(_mm256_and_si256(v, lo16), _mm256_and_si256(_mm256_srli_epi16(w, 11), lo16));
+            __m256i od = _mm256_srlv_epi32(v, _mm256_srli_epi32(w, 27)); /* its high word, by the high word's c */
             __m256i r = _mm256_blend_epi16(ev, od, 0xaa);
             _mm256_storeu_si256((__m256i *)(y + i - 16), r);
         }
