@@ -8,9 +8,15 @@
  * The last two columns are the ratios the issue asks for (issue 14): time
  * of the float array / time of the fixed array, fast and exact.
  * Not a test: timings depend on the machine and its load.
- * Times are the thread's CPU time (so other load on the machine does not
- * count).  Usage: bench_fixed [repetitions]  (default 100); each figure is the fastest
- * of 7 rounds of `repetitions` passes.  Prints a Markdown table.
+ * Each pass over the 2^16 inputs is timed alone (CLOCK_MONOTONIC) and a
+ * figure is the fastest pass: a pass that another job's time slice or
+ * interrupt hit is dropped rather than averaged in.  The eight candidates
+ * of a row take turns, 7 rounds of `repetitions` passes each, so that a
+ * slow stretch of the machine falls on all of them, not on one side of a
+ * ratio.  (Until 2026-12-07: the fastest of 7 rounds' averages, each
+ * candidate's rounds in a row, two decimals; a 10% change did not show on
+ * a loaded 2-core machine.)  Usage: bench_fixed [repetitions] (default
+ * 100).  Prints a Markdown table.
  * Built twice (mk/fixedgen.mk): bench_fixed runs the library's own dispatch
  * (the widest clone this CPU has), bench_fixed_avx2 the same sources as a
  * CPU with x86-64-v3 but no AVX-512 runs them (PF_BENCH_AVX2), so both
@@ -38,26 +44,38 @@ static volatile int64_t sink;
 static double now(void)
 {
     struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t); /* CPU time: robust to a loaded machine */
+    clock_gettime(CLOCK_MONOTONIC, &t); /* the vDSO's: a pass is ~10 us */
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
 typedef void (*runner)(const void *fn, const void *x, void *y, size_t n);
 
-static double time_it(runner r, const void *fn, const void *x, void *y, int reps)
+/* one candidate of a row: its runner, function pointer, input and output */
+typedef struct {
+    runner r;
+    const void *fn, *x;
+    void *y;
+} cand;
+
+/* t[k] = ns per element of c[k]'s fastest pass; candidates with r NULL
+   get NAN.  Rounds take the candidates in turn. */
+static void time_all(const cand *c, int nc, int reps, double *t)
 {
-    double best = 1e30;
-    for (int round = 0; round < 7; round++) {
-        double t0 = now();
-        for (int k = 0; k < reps; k++) {
-            r(fn, x, y, N);
-            sink += ((const char *)y)[k & (N - 1)];
+    for (int k = 0; k < nc; k++)
+        t[k] = c[k].r ? 1e30 : NAN;
+    for (int round = 0; round < 7; round++)
+        for (int k = 0; k < nc; k++) {
+            if (!c[k].r)
+                continue;
+            for (int i = 0; i < reps; i++) {
+                double t0 = now();
+                c[k].r(c[k].fn, c[k].x, c[k].y, N);
+                double dt = (now() - t0) / N * 1e9;
+                sink += ((const char *)c[k].y)[i & (N - 1)];
+                if (dt < t[k])
+                    t[k] = dt;
+            }
         }
-        double t = (now() - t0) / ((double)reps * N) * 1e9;
-        if (t < best)
-            best = t;
-    }
-    return best;
 }
 
 /* scalar loops through the right pointer type (noinline: a plain call per
@@ -166,8 +184,9 @@ int main(int argc, char **argv)
     int reps = (int)pfcli_bench_count(argc, argv, "bench_fixed",
                                       "usage: bench_fixed [REPETITIONS]\n"
                                       "ns per element of the library's fixed-point functions beside the float\n"
-                                      "variants (a Markdown table); each figure the fastest of 7 rounds of\n"
-                                      "REPETITIONS passes, 1..100000 (default 100).\n",
+                                      "variants (a Markdown table); each figure the fastest single pass over\n"
+                                      "the 2^16 inputs of 7 rounds of REPETITIONS passes, 1..100000 (default\n"
+                                      "100), the candidates of a row taking turns.\n",
                                       1, 100000, 100);
 #if defined(PF_BENCH_AVX2)
     const char *isa = "as on an AVX2 CPU (x86-64-v3 code: the generated files built for it, the 16-bit "
@@ -175,7 +194,8 @@ int main(int argc, char **argv)
 #else
     const char *isa = "the library's dispatch on this CPU (its widest clone)";
 #endif
-    printf("ns per element, best of 7 rounds of %d passes over 2^16 inputs; %s\n\n", reps, isa);
+    printf("ns per element, the fastest pass over 2^16 inputs of 7 rounds of %d passes, candidates in turn; %s\n\n",
+           reps, isa);
     printf("| function | types | fixed exact scalar | fixed exact array | fixed fast scalar | fixed fast array "
            "| float exact scalar | float exact array | float fast scalar | float fast array "
            "| fast: float/fixed array | exact: float/fixed array |\n");
@@ -206,18 +226,15 @@ int main(int argc, char **argv)
         }
         const void *x = w->bits == 16 ? (const void *)x16 : (const void *)xi;
         double t[8];
-        t[0] = time_it(w->sc, &w->fx, x, yi, reps);
-        t[1] = time_it(w->ar, &w->fxa, x, yi, reps);
-        t[2] = time_it(w->sc, &w->fxf, x, yi, reps);
-        t[3] = time_it(w->ar, &w->fxfa, x, yi, reps);
         peers p;
-        if (float_peers(w->id, &p) == 0) {
-            t[4] = time_it(sc_ff, &p.fe, xf, yf, reps);
-            t[5] = time_it(ar_ff, &p.fea, xf, yf, reps);
-            t[6] = time_it(sc_ff, &p.ff, xf, yf, reps);
-            t[7] = time_it(ar_ff, &p.ffa, xf, yf, reps);
-        } else
-            t[4] = t[5] = t[6] = t[7] = NAN; /* no float version to compare with */
+        int fl = float_peers(w->id, &p) == 0; /* else no float version to compare with */
+        const cand c[8] = {
+            {w->sc, &w->fx, x, yi},           {w->ar, &w->fxa, x, yi},
+            {w->sc, &w->fxf, x, yi},          {w->ar, &w->fxfa, x, yi},
+            {fl ? sc_ff : NULL, &p.fe, xf, yf}, {fl ? ar_ff : NULL, &p.fea, xf, yf},
+            {fl ? sc_ff : NULL, &p.ff, xf, yf}, {fl ? ar_ff : NULL, &p.ffa, xf, yf},
+        };
+        time_all(c, 8, reps, t);
         char types[96];
         const char *ty = row_types[r], *arrow = strstr(ty, " -> ");
         size_t k = arrow ? (size_t)(arrow - ty) : strlen(ty);
@@ -227,7 +244,7 @@ int main(int argc, char **argv)
             snprintf(types, sizeof types, "%s", ty);
         printf("| %s | %s |", w->fn, types);
         for (int k = 0; k < 8; k++)
-            printf(" %.2f |", t[k]);
+            printf(" %.3f |", t[k]);
         printf(" %.2f | %.2f |\n", t[7] / t[3], t[5] / t[1]);
         fflush(stdout);
     }
