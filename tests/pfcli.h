@@ -200,11 +200,12 @@ static inline int pfcli_out_open(pfcli_out *o, const char *path, char *err, size
             snprintf(next, sizeof next, "%s", t);
         else
             snprintf(next, sizeof next, "%.*s/%s", (int)(slash - o->final), o->final, t);
-        if (strlen(next) >= sizeof o->final) {
+        size_t len = strlen(next);
+        if (len >= sizeof o->final) {
             snprintf(err, n, "cannot follow the symlink %.400s", path);
             return -1;
         }
-        snprintf(o->final, sizeof o->final, "%s", next);
+        memcpy(o->final, next, len + 1);
     }
     if (stat(o->final, &sb) == 0 && !S_ISREG(sb.st_mode)) {
         if (S_ISDIR(sb.st_mode)) {
