@@ -494,15 +494,19 @@ static int gen_unprivileged(const char *const *args)
     if (getuid() == 0) {
         /* nobody may not reach the build tree (a clone under a 0700
            directory, as mktemp -d makes): run a copy from the scratch
-           directory, which it can (exec failed with 127 there) */
-        size_t n = 0;
-        char *bin = tu_slurp(path, &n);
-        assert_non_null(bin);
-        snprintf(path, sizeof path, "%s/pfmathgen-copy", scratch);
-        unlink(path);
-        put("pfmathgen-copy", bin, n);
-        free(bin);
-        assert_int_equal(chmod(path, 0755), 0);
+           directory, which it can (exec failed with 127 there); one copy
+           per scratch directory */
+        char copy[PATH_MAX];
+        snprintf(copy, sizeof copy, "%s/pfmathgen-copy", scratch);
+        if (access(copy, X_OK) != 0) {
+            size_t n = 0;
+            char *bin = tu_slurp(path, &n);
+            assert_non_null(bin);
+            put("pfmathgen-copy", bin, n);
+            free(bin);
+            assert_int_equal(chmod(copy, 0755), 0);
+        }
+        snprintf(path, sizeof path, "%s", copy);
     }
     const char *v[16] = {path};
     for (int i = 0; args[i] && i < 14; i++)

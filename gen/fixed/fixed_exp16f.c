@@ -211,6 +211,17 @@ void fx_exp16f_budget(fx_gen *G)
     G->poly_err = 0;
 }
 
+/* The AVX2 loop carries j in the chord when every 16 S[j] fits a 16-bit
+   word; else it takes the older loop with j in both index bytes.  The
+   provenance text and the emitter ask the same question here. */
+static int avx2_chord_fits(const fx_exp_red *X)
+{
+    for (int k = 0; k < 16; k++)
+        if (X->fs[k] >= 4096)
+            return 0;
+    return 1;
+}
+
 void fx_exp16f_texts(fx_gen *G, int base2)
 {
     const fx_exp_red *X = &G->exp;
@@ -244,9 +255,7 @@ void fx_exp16f_texts(fx_gen *G, int base2)
     snprintf(G->alt_poly, sizeof G->alt_poly,
              "worst case over every input %.4f of the fast bound max(2^-10 |f|, 4 lsb); |y - f| <= %.3e |f| + 1 lsb",
              X->fratio, X->fr);
-    int s16ok = 1;
-    for (int k = 0; k < 16; k++)
-        s16ok &= X->fs[k] < 4096;
+    int s16ok = avx2_chord_fits(X);
     if (s16ok)
         snprintf(G->wide_text, sizeof G->wide_text,
                  "16-bit words throughout; AVX-512BW (x86-64-v4): lookups vpermw, the shift vpsrlvw; AVX2 "
@@ -357,9 +366,7 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
        two pipes, the multiplies two others, so the index steps are
        multiplies where that balances them; the same values (all 2^16
        inputs, test_fixed_hash's AVX2 row) */
-    int s16ok = 1;
-    for (int k = 0; k < 16; k++)
-        s16ok &= X->fs[k] < 4096;
+    int s16ok = avx2_chord_fits(X);
     int vadd = X->fv[0] % 257 == 0;
     if (s16ok) {
         pf_printf(kern,
