@@ -212,7 +212,7 @@ static void goal_line(goals *g, const char *fn, const char *dom, const char *isa
         verdict = na_reason;
         g->na++;
     } else {
-        snprintf(m, sizeof m, "%.2f%s", measured, unit);
+        pfb_goal_fmt(m, sizeof m, measured, want, unit);
         int ok = higher_is_better ? measured >= want : measured <= want;
         verdict = ok ? "pass" : "**MISS**";
         if (ok)
@@ -234,6 +234,11 @@ static void goals_for(goals *g, pf_func f, const pfb_domain *d, const row *r, in
     const row *ex_s = find(r, n, "pfmath", "scalar");
     if (ex_s && ex_s->have_err)
         goal_line(g, fn, d->tag, "all", "exact: max ULP (sample)", ex_s->err.max_ulp, 1.0, "", 0, NULL);
+    /* issue 12: the scalar exact form at least as fast as glibc's (throughput) */
+    const row *gl = find(r, n, "glibc", "scalar");
+    if (ex_s)
+        goal_line(g, fn, d->tag, "scalar", "exact scalar vs glibc (speed ratio)",
+                  gl ? gl->thr_med / ex_s->thr_med : NAN, 1.0, "x", 1, gl ? NULL : "n/a (no glibc function)");
     int short_poly = f == PF_EXP || f == PF_EXP2 || f == PF_LOG || f == PF_LOG2 || f == PF_SIN ||
                      f == PF_COS;
     const char *isas[] = {"avx512", "avx2", "sse2", "dispatch"};
@@ -766,7 +771,8 @@ int main(int argc, char **argv)
     bench_fixed(md, csv, (int)reps, target, seed, only);
 
     /* goals: the lines collected above, then the list of misses */
-    fprintf(md, "\n## Goals of issue 7 (same run, array forms, same ISA; ratio = peer ns / pfmath ns)\n\n");
+    fprintf(md, "\n## Goals of issues 7 and 12 (same run, same ISA; array forms, and the scalar exact form "
+                "against glibc; ratio = peer ns / pfmath ns)\n\n");
     fprintf(md, "| function | domain | ISA | goal | target | measured | verdict |\n|---|---|---|---|---|---|---|\n");
     fclose(g.md);
     fputs(goal_text, md);

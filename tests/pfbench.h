@@ -68,6 +68,11 @@ void pfb_pareto(const double *t, const double *e, int n, int *on);
 /* median, min and max of v[0..n-1] (v is sorted in place) */
 void pfb_median(double *v, int n, double *med, double *min, double *max);
 
+/* measured + unit into buf with two decimals, or more (up to six) while
+   those would print the same text as want: a missed goal never reads as
+   met, nor a met one as missed */
+void pfb_goal_fmt(char *buf, size_t n, double measured, double want, const char *unit);
+
 /* ---- candidates (pfbench_peers.c, pfbench_ours.c) ---- */
 
 typedef void (*pfb_arr1)(const float *x, float *y, size_t n);

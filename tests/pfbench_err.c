@@ -2,6 +2,7 @@
 #include "pfbench.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -163,4 +164,20 @@ void pfb_median(double *v, int n, double *med, double *min, double *max)
     *min = v[0];
     *max = v[n - 1];
     *med = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* measured as text beside a goal: two decimals, more while the text would
+   read as the goal itself (0.997 against 1.00 is "0.997", not "1.00", so a
+   row can never say 1.00x next to MISS), at most six */
+void pfb_goal_fmt(char *buf, size_t n, double measured, double want, const char *unit)
+{
+    int d = 2;
+    for (; d < 6 && measured != want; d++) {
+        char a[48], b[48];
+        snprintf(a, sizeof a, "%.*f", d, measured);
+        snprintf(b, sizeof b, "%.*f", d, want);
+        if (strcmp(a, b) != 0)
+            break;
+    }
+    snprintf(buf, n, "%.*f%s", d, measured, unit);
 }

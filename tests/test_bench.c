@@ -217,6 +217,29 @@ static void test_pareto_and_median(void **st)
     assert_true(med == 2.5 && mn == 1 && mx == 4);
 }
 
+/* a goal's measured value never prints as the goal itself unless equal:
+   0.997 against 1 would read "1.00x" beside MISS with two decimals */
+static void test_goal_text(void **st)
+{
+    (void)st;
+    char b[64];
+    pfb_goal_fmt(b, sizeof b, 0.997, 1.0, "x");
+    assert_string_equal(b, "0.997x");
+    pfb_goal_fmt(b, sizeof b, 0.99996, 1.0, "x");
+    assert_string_equal(b, "0.99996x");
+    pfb_goal_fmt(b, sizeof b, 1.5004, 1.5, "x");
+    assert_string_equal(b, "1.5004x");
+    pfb_goal_fmt(b, sizeof b, 1.5, 1.5, "x");
+    assert_string_equal(b, "1.50x");
+    pfb_goal_fmt(b, sizeof b, 1.2345, 1.5, "x");
+    assert_string_equal(b, "1.23x");
+    pfb_goal_fmt(b, sizeof b, 0.81, 1.0, "");
+    assert_string_equal(b, "0.81");
+    /* closer than 10^-6: six decimals, the most it prints (a tie at this precision) */
+    pfb_goal_fmt(b, sizeof b, 1.0 - 1e-9, 1.0, "x");
+    assert_string_equal(b, "1.000000x");
+}
+
 /* the fixed-point rows' machinery, on pffixed.h's correctly rounded sqrt
    (ufixed<16,8> -> ufixed<16,12>): every input visited once, max error
    <= 0.5 LSB, and 1 LSB more when the result is bumped by one */
@@ -280,6 +303,7 @@ int main(void)
         cmocka_unit_test(test_detects_one_ulp),
         cmocka_unit_test(test_sampler),
         cmocka_unit_test(test_pareto_and_median),
+        cmocka_unit_test(test_goal_text),
         cmocka_unit_test(test_fixed_rows),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
