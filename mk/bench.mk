@@ -10,7 +10,8 @@ PROGS += $(BUILD)/pfbench
 # the error pass runs on every core (the timing is single-threaded)
 $(BUILD)/obj/tests/pfbench_err.o: ALL_CFLAGS += -fopenmp
 
-$(BUILD)/pfbench: $(PFBENCH_OBJS) $(BUILD)/libpfref.a
+# output files by pfmathgen's rules, from its own object (tests/pfcli_out.h)
+$(BUILD)/pfbench: $(PFBENCH_OBJS) $(BUILD)/obj/gen/front/output.o $(BUILD)/libpfref.a
 	$(CC) $(LDFLAGS) -fopenmp -o $@ $^ -lsleef -lmvec $(LIBS_NUM)
 
 # bench.md, bench.csv and bench-<func>.svg in $(BUILD).  PFBENCH_ARGS passes

@@ -51,9 +51,9 @@ $(BUILD)/pfnoise-bench: tests/pfnoise_bench.c tests/noise_baseline.c tests/noise
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(NOISE_BENCH_DEF) $(ALL_CFLAGS) -MMD -MP $< tests/noise_baseline.c $(NOISE_BENCH_STB) -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lm
 
-$(BUILD)/pfnoise-demo: tests/pfnoise_demo.c $(BUILD)/libpfmath.a
+$(BUILD)/pfnoise-demo: tests/pfnoise_demo.c $(BUILD)/obj/gen/front/output.o $(BUILD)/libpfmath.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lm
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< $(BUILD)/obj/gen/front/output.o -o $@ $(LDFLAGS) $(BUILD)/libpfmath.a -lm
 
 # Speed table against stb_perlin (not part of `make test`): ns per sample,
 # median of 15 interleaved passes of thread CPU time.

@@ -5,6 +5,7 @@
 #include "pfbench_fixed.h"
 #include "pfbench_ladder.h"
 #include "pfcli.h"
+#include "pfcli_out.h"
 
 #include <errno.h>
 #include <getopt.h>
@@ -500,11 +501,16 @@ int main(int argc, char **argv)
     char mdpath[PATH_MAX + 16], csvpath[PATH_MAX + 16];
     snprintf(mdpath, sizeof mdpath, "%s/bench.md", outdir);
     snprintf(csvpath, sizeof csvpath, "%s/bench.csv", outdir);
-    /* static: the exit handler may still see them after a die2 */
-    static pfcli_out omd, ocsv;
-    if (pfcli_out_open(&omd, mdpath, err, sizeof err) || pfcli_out_open(&ocsv, csvpath, err, sizeof err)) {
+    /* both names checked before the run; nothing is written before its end */
+    pfcli_out omd, ocsv;
+    if (pfcli_out_open(&omd, mdpath, err, sizeof err) != 0) {
         fprintf(stderr, "pfbench: %s\n", err);
-        return 1; /* exit handler drops a temporary already made */
+        return 1;
+    }
+    if (pfcli_out_open(&ocsv, csvpath, err, sizeof err) != 0) {
+        pfcli_out_abort(&omd);
+        fprintf(stderr, "pfbench: %s\n", err);
+        return 1;
     }
     FILE *md = omd.f, *csv = ocsv.f;
     double t_start = wall();

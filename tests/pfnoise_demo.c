@@ -19,6 +19,7 @@
 #include <sys/stat.h>
 
 #include "pfcli.h"
+#include "pfcli_out.h"
 #include "pfnoise.h"
 
 static const char usage[] =
