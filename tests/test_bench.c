@@ -222,22 +222,24 @@ static void test_pareto_and_median(void **st)
 static void test_goal_text(void **st)
 {
     (void)st;
-    char b[64];
-    pfb_goal_fmt(b, sizeof b, 0.997, 1.0, "x");
-    assert_string_equal(b, "0.997x");
-    pfb_goal_fmt(b, sizeof b, 0.99996, 1.0, "x");
-    assert_string_equal(b, "0.99996x");
-    pfb_goal_fmt(b, sizeof b, 1.5004, 1.5, "x");
-    assert_string_equal(b, "1.5004x");
-    pfb_goal_fmt(b, sizeof b, 1.5, 1.5, "x");
-    assert_string_equal(b, "1.50x");
-    pfb_goal_fmt(b, sizeof b, 1.2345, 1.5, "x");
-    assert_string_equal(b, "1.23x");
-    pfb_goal_fmt(b, sizeof b, 0.81, 1.0, "");
-    assert_string_equal(b, "0.81");
-    /* closer than 10^-6: six decimals, the most it prints (a tie at this precision) */
-    pfb_goal_fmt(b, sizeof b, 1.0 - 1e-9, 1.0, "x");
-    assert_string_equal(b, "1.000000x");
+    static const struct {
+        double m, want;
+        const char *unit, *text;
+    } c[] = {
+        {0.997, 1.0, "x", "0.997x"},
+        {0.99996, 1.0, "x", "0.99996x"},
+        {1.5004, 1.5, "x", "1.5004x"},
+        {1.5, 1.5, "x", "1.50x"},
+        {1.2345, 1.5, "x", "1.23x"},
+        {0.81, 1.0, "", "0.81"},
+        /* closer than 10^-6: six decimals, the most it prints (a tie at this precision) */
+        {1.0 - 1e-9, 1.0, "x", "1.000000x"},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        char b[64];
+        pfb_goal_fmt(b, sizeof b, c[i].m, c[i].want, c[i].unit);
+        assert_string_equal(b, c[i].text);
+    }
 }
 
 /* the fixed-point rows' machinery, on pffixed.h's correctly rounded sqrt
