@@ -18,7 +18,8 @@
  * Lanes:       16-bit words throughout, x log2(e) to 2^-20 a 16x16 -> 32-bit product (pmullw, 
  *              pmulhuw) plus a carry; AVX-512BW (x86-64-v4): lookups vpermw, the shift vpsrlvw; 
  *              AVX2 (x86-64-v3): a lookup two vpshufb and a vpblendvb, the shift a pmulhuw by 
- *              2^(17 - s); the default clone, scalar form: the same steps in plain C
+ *              2^(17 - s), the top clamp the bias add's saturation (vpaddsw); the default 
+ *              clone, scalar form: the same steps in plain C
  * Method:      minimax absolute error of 2^r on [0, 2^-4] (nlopt SLSQP, epigraph form), c1 and 
  *              c2 rounded to nearest at 2^-16 and 2^-12 (their multiply-highs' lsbs); tables 
  *              rounded to nearest from MPFR (256 bits): A[j] = (2^(j/16) - 1) 2^16, D[j] = 
@@ -399,8 +400,8 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
         kc[k] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)b[k]));
     kc[4] = _mm256_set1_epi16(-256); /* the high bytes, for vpblendvb */
     kc[5] = _mm256_set1_epi16(0x101);
-    kc[6] = _mm256_setr_epi8(0, -1, 0, 0, 0, 0, 0, 0, -128, -1, 0, 0, 0, 0, 0, 0,
-                             0, -1, 0, 0, 0, 0, 0, 0, -128, -1, 0, 0, 0, 0, 0, 0); /* H's bytes */
+    kc[6] = _mm256_setr_epi8(0, -1, -1, -1, -1, -1, -1, -1, -128, -1, -1, -1, -1, -1, -1, -1,
+                             0, -1, -1, -1, -1, -1, -1, -1, -128, -1, -1, -1, -1, -1, -1, -1); /* H's bytes */
     kc[7] = _mm256_set1_epi16(-20116); /* c1 */
     kc[8] = _mm256_set1_epi16(1004); /* c2 */
     kc[9] = _mm256_set1_epi16(-2050); /* cq: (kb + cq) 0x101 = e 0x101 - 0x800, e = 17 - s */
@@ -428,8 +429,7 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
         {
             __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
             xc = _mm256_max_epi16(xc, xlo);
-            xc = _mm256_min_epi16(xc, xhi);
-            __m256i u = _mm256_add_epi16(xc, off);
+            __m256i u = _mm256_adds_epi16(xc, off); /* saturating: the top clamp (see kc[6]) */
             __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
             __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
             /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
@@ -443,8 +443,7 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
             {
                 __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
                 xc = _mm256_max_epi16(xc, xlo);
-                xc = _mm256_min_epi16(xc, xhi);
-                __m256i u = _mm256_add_epi16(xc, off);
+                __m256i u = _mm256_adds_epi16(xc, off); /* saturating: the top clamp (see kc[6]) */
                 __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
                 __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
                 /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
@@ -468,7 +467,7 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
                 __m256i qq = _mm256_shuffle_epi8(pw, qi);
                 __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
                 r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), _mm256_shuffle_epi8(h15, qi)),
-                                       _mm256_cmpgt_epi16(kb, k1)); /* s = 1: 2^15 + avg(M, 0); s = 0: the max */
+                                       _mm256_cmpgt_epi16(kb, k1)); /* s = 1: 2^15 + avg(M, 0); s <= 0: the max */
                 _mm256_storeu_si256((__m256i *)(y + i - 16), r);
             }
             p_hi = n_hi, p_e = n_e;
@@ -488,7 +487,7 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
             __m256i qq = _mm256_shuffle_epi8(pw, qi);
             __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
             r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), _mm256_shuffle_epi8(h15, qi)),
-                                   _mm256_cmpgt_epi16(kb, k1)); /* s = 1: 2^15 + avg(M, 0); s = 0: the max */
+                                   _mm256_cmpgt_epi16(kb, k1)); /* s = 1: 2^15 + avg(M, 0); s <= 0: the max */
             _mm256_storeu_si256((__m256i *)(y + i - 16), r);
         }
     }
