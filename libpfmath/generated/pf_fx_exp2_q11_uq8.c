@@ -409,7 +409,9 @@ static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *rest
     if (n >= 32) {
         /* software pipelined in three stages: a pass runs the reduction of block i,
            E, the lookups and M of block i - 16, and the scaling of block i - 32
-           (three blocks in flight: one block's chain is longer than the CPU overlaps) */
+           (three blocks in flight: one block's chain is longer than the CPU overlaps;
+           Zen 3, fixed<15,11> -> ufixed<16,8>, bench_fixed 40 against two stages:
+           exp 0.234 -> 0.212, exp2 0.171 -> 0.162 ns/element) */
         __m256i p_lo, p_hi, q_m, q_hi;
         {
             __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
