@@ -536,7 +536,14 @@ static void pipe3_loop(pf_buf *kern, const char *s1, const char *s2, size_t n2, 
                  "        {\n            __m256i lo = p_lo, hi = p_hi;\n");
     put_in(kern, s2, n2, 1);
     put_in(kern, s3, n3, 1);
-    pf_printf(kern, "            _mm256_storeu_si256((__m256i *)(y + i - 16), r);\n        }\n    }\n"
+    /* 16 to 31 elements: one block, unpipelined, so short arrays keep the
+       vector loop (before this the scalar form took them all) */
+    pf_put(kern, "            _mm256_storeu_si256((__m256i *)(y + i - 16), r);\n        }\n    }\n"
+                 "    for (; i + 16 <= n; i += 16) {\n");
+    put_in(kern, s1, n1, 0);
+    put_in(kern, s2, n2, 0);
+    put_in(kern, s3, n3, 0);
+    pf_printf(kern, "        _mm256_storeu_si256((__m256i *)(y + i), r);\n    }\n"
                     "    for (; i < n; i++)\n        y[i] = %s(x[i]);\n}\n#endif",
               scalar);
 }

@@ -533,6 +533,32 @@ static void pf_exp_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restr
             _mm256_storeu_si256((__m256i *)(y + i - 16), r);
         }
     }
+    for (; i + 16 <= n; i += 16) {
+        __m256i xc = _mm256_loadu_si256((const __m256i *)(x + i));
+        xc = _mm256_max_epi16(xc, xlo);
+        __m256i u = _mm256_adds_epi16(xc, off); /* saturating: the top clamp (see kc[6]) */
+        __m256i q = _mm256_add_epi16(_mm256_mulhi_epu16(u, l2), cl);
+        __m256i lo = _mm256_add_epi16(_mm256_mullo_epi16(u, l1), q);
+        /* the carry, lo < q: lo <= q (lo = q occurs for no input) */
+        __m256i cy = _mm256_cmpeq_epi16(_mm256_max_epu16(lo, q), q);
+        __m256i hi = _mm256_sub_epi16(_mm256_mulhi_epu16(u, l1), cy);
+        __m256i e = _mm256_mulhi_epu16(lo, _mm256_add_epi16(c1, _mm256_mulhi_epu16(lo, c2)));
+        __m256i jl = _mm256_and_si256(hi, jmask), jh = _mm256_slli_epi16(jl, 8); /* j, j << 8 */
+        __m256i a = _mm256_or_si256(_mm256_shuffle_epi8(al, jl), _mm256_shuffle_epi8(ah, jh));
+        __m256i v = _mm256_avg_epu16(e, _mm256_mulhi_epu16(a, e));
+        v = _mm256_add_epi16(v, _mm256_srli_epi16(_mm256_shuffle_epi8(dt, jh), 8));
+        __m256i m = _mm256_adds_epu16(a, _mm256_srli_epi16(v, 3));
+        __m256i kb = _mm256_srli_epi16(hi, 4);
+        /* Q = 2^e, e = 17 - s: its low byte 2^e at byte index e, its high byte 2^(e - 8) at
+           e - 8 (vpshufb's 0 where an index is negative: e < 8, e < 0 from s = 18, or in
+           [8, 15] for the low byte, where the table holds 0) */
+        __m256i qi = _mm256_mullo_epi16(_mm256_add_epi16(kb, cq), dup);
+        __m256i qq = _mm256_shuffle_epi8(pw, qi);
+        __m256i r = _mm256_avg_epu16(qq, _mm256_mulhi_epu16(m, qq));
+        r = _mm256_blendv_epi8(r, _mm256_adds_epu16(_mm256_avg_epu16(m, _mm256_setzero_si256()), _mm256_shuffle_epi8(h15, qi)),
+                               _mm256_cmpgt_epi16(kb, k1)); /* s = 1: 2^15 + avg(M, 0); s <= 0: the max */
+        _mm256_storeu_si256((__m256i *)(y + i), r);
+    }
     for (; i < n; i++)
         y[i] = pf_exp_q11_uq8(x[i]);
 }
