@@ -72,21 +72,71 @@ static int tab_y(const fx_log_red *L, uint32_t x, int32_t *y, double *pre)
 }
 
 /* F(t) 2^Ef at t = i 2^-15 for i in [0, 2^15], from MPFR */
-static void tab_grid(long double *g, int base2, int ef)
+/* g[i] = log(1 + i 2^-15) (log2: / ln2) 2^ef, i in [0, 2^15], MPFR at 128
+   bits rounded to long double.  prep_tab asks for the same grid at several
+   ef, each up to six times: the logarithms are computed once per base
+   (kept; generation runs on one thread) and scaled by 2^ef, which is exact
+   and commutes with the rounding (no value is subnormal or overflows), so
+   g is what the per-call computation gave.  -1: out of memory. */
+static int tab_grid(long double *g, int base2, int ef)
 {
-    mpfr_t t, l;
-    mpfr_inits2(128, t, l, (mpfr_ptr)0);
-    mpfr_const_log2(l, MPFR_RNDN);
-    for (int i = 0; i <= 32768; i++) {
-        mpfr_set_si(t, i, MPFR_RNDN);
-        mpfr_div_2ui(t, t, 15, MPFR_RNDN);
-        mpfr_log1p(t, t, MPFR_RNDN);
-        if (base2)
-            mpfr_div(t, t, l, MPFR_RNDN);
-        mpfr_mul_2si(t, t, ef, MPFR_RNDN);
-        g[i] = mpfr_get_ld(t, MPFR_RNDN);
+    static long double *base[2];
+    if (!base[base2]) {
+        long double *b = malloc(sizeof *b * 32769);
+        if (!b)
+            return -1;
+        mpfr_t t, l;
+        mpfr_inits2(128, t, l, (mpfr_ptr)0);
+        mpfr_const_log2(l, MPFR_RNDN);
+        for (int i = 0; i <= 32768; i++) {
+            mpfr_set_si(t, i, MPFR_RNDN);
+            mpfr_div_2ui(t, t, 15, MPFR_RNDN);
+            mpfr_log1p(t, t, MPFR_RNDN);
+            if (base2)
+                mpfr_div(t, t, l, MPFR_RNDN);
+            b[i] = mpfr_get_ld(t, MPFR_RNDN);
+        }
+        mpfr_clears(t, l, (mpfr_ptr)0);
+        base[base2] = b;
     }
-    mpfr_clears(t, l, (mpfr_ptr)0);
+    for (int i = 0; i <= 32768; i++)
+        g[i] = ldexpl(base[base2][i], ef);
+    return 0;
+}
+
+/* log(x 2^-Ei) (log2: / ln2) 2^Eo for every stored x in [1, 65535] of an
+   unsigned 16-bit input, MPFR at 128 bits rounded to double: what the table
+   and Horner kernel searches measure each candidate against.  prep_tab
+   tries up to 30 tables, each over every input, so the 65535 logarithms
+   are computed once per (Ei, Eo, base2) and kept (generation runs on one
+   thread); the values are those each search computed for itself before.
+   NULL: out of memory. */
+static const double *log_refs(int Ei, int Eo, int base2)
+{
+    static double *ref;
+    static int kei, keo, kb;
+    if (ref && kei == Ei && keo == Eo && kb == base2)
+        return ref;
+    double *r = ref ? ref : malloc(sizeof *r * 65536);
+    ref = NULL;
+    if (!r)
+        return NULL;
+    mpfr_t xr, lr;
+    mpfr_inits2(128, xr, lr, (mpfr_ptr)0);
+    mpfr_const_log2(lr, MPFR_RNDN);
+    r[0] = -INFINITY;
+    for (uint32_t x = 1; x < 65536; x++) {
+        mpfr_set_ui(xr, x, MPFR_RNDN);
+        mpfr_mul_2si(xr, xr, -Ei, MPFR_RNDN);
+        mpfr_log(xr, xr, MPFR_RNDN);
+        if (base2)
+            mpfr_div(xr, xr, lr, MPFR_RNDN);
+        mpfr_mul_2si(xr, xr, Eo, MPFR_RNDN);
+        r[x] = mpfr_get_d(xr, MPFR_RNDN);
+    }
+    mpfr_clears(xr, lr, (mpfr_ptr)0);
+    ref = r, kei = Ei, keo = Eo, kb = base2;
+    return ref;
 }
 
 /* tables for Ef, TL or not; then the bound over every input.  0: ok */
@@ -164,9 +214,9 @@ static int tab_try(fx_gen *G, int base2, int ef, int tlo, int jb, const long dou
     if (tlo)
         L->tl[16] = -L->tv[0];
     /* the bound: every input, against MPFR */
-    mpfr_t xr, lr;
-    mpfr_inits2(128, xr, lr, (mpfr_ptr)0);
-    mpfr_const_log2(lr, MPFR_RNDN);
+    const double *refs = log_refs(Ei, Eo, base2);
+    if (!refs)
+        return -1;
     double worst = 0;
     int ok = 1;
     int64_t imax = pf_type_max_stored(&G->in);
@@ -181,13 +231,7 @@ static int tab_try(fx_gen *G, int base2, int ef, int tlo, int jb, const long dou
             ok = y == mn;
             continue;
         }
-        mpfr_set_si(xr, (long)x, MPFR_RNDN);
-        mpfr_mul_2si(xr, xr, -Ei, MPFR_RNDN);
-        mpfr_log(xr, xr, MPFR_RNDN);
-        if (base2)
-            mpfr_div(xr, xr, lr, MPFR_RNDN);
-        mpfr_mul_2si(xr, xr, Eo, MPFR_RNDN);
-        double ref = mpfr_get_d(xr, MPFR_RNDN);
+        double ref = refs[x];
         if (ref < (double)mn || ref > (double)mx || y < mn || y > mx) {
             ok = 0;
             break;
@@ -195,7 +239,6 @@ static int tab_try(fx_gen *G, int base2, int ef, int tlo, int jb, const long dou
         double e = fabs(pre - ref);
         worst = e > worst ? e : worst;
     }
-    mpfr_clears(xr, lr, (mpfr_ptr)0);
     if (!ok)
         return -1;
     L->terr = worst * (1 + 1e-12) + 1e-12; /* MPFR to 128 bits, rounded to double: far below */
@@ -231,8 +274,8 @@ static int prep_tab(fx_gen *G, int base2)
     for (int jb = 3; jb <= 5 && rc != 0; jb++)
         for (int tlo = 0; tlo <= !base2 && rc != 0; tlo++)
             for (int ef = 15; ef > G->out.exp && rc != 0; ef--) {
-                tab_grid(g, base2, ef);
-                if (tab_try(G, base2, ef, tlo, jb, g) == 0 && (jb > 3 || tab_fs(&G->log)))
+                if (tab_grid(g, base2, ef) == 0 && tab_try(G, base2, ef, tlo, jb, g) == 0 &&
+                    (jb > 3 || tab_fs(&G->log)))
                     rc = 0;
             }
     free(g);
@@ -935,24 +978,17 @@ static int prep_poly(fx_gen *G, int base2)
     mpfr_rint(xr, xr, MPFR_RNDN);
     L->k15 = (int64_t)mpfr_get_si(xr, MPFR_RNDN); /* log: round(ln2 2^15) */
     int n = 1 << Eo;
-    double *lo = malloc(sizeof *lo * (size_t)n), *hi = malloc(sizeof *hi * (size_t)n), *ref = malloc(sizeof *ref * 65536);
+    mpfr_clears(xr, lr, (mpfr_ptr)0);
+    double *lo = malloc(sizeof *lo * (size_t)n), *hi = malloc(sizeof *hi * (size_t)n);
+    const double *ref = log_refs(Ei, Eo, base2);
     if (!lo || !hi || !ref) {
         free(lo);
         free(hi);
-        free(ref);
-        mpfr_clears(xr, lr, (mpfr_ptr)0);
         return -2;
     }
     for (int k = 0; k < n; k++)
         lo[k] = INFINITY, hi[k] = -INFINITY;
     for (uint32_t x = 1; x < 65536; x++) {
-        mpfr_set_ui(xr, x, MPFR_RNDN);
-        mpfr_mul_2si(xr, xr, -Ei, MPFR_RNDN);
-        mpfr_log(xr, xr, MPFR_RNDN);
-        if (base2)
-            mpfr_div(xr, xr, lr, MPFR_RNDN);
-        mpfr_mul_2si(xr, xr, Eo, MPFR_RNDN);
-        ref[x] = mpfr_get_d(xr, MPFR_RNDN);
         int lz = 16 - fx_bitlen(x);
         uint32_t u = (x << lz) & 0xffffu;
         int k = (int)(((u << 1) & 0xffffu) >> (16 - Eo));
@@ -960,7 +996,6 @@ static int prep_poly(fx_gen *G, int base2)
         lo[k] = r < lo[k] ? r : lo[k];
         hi[k] = r > hi[k] ? r : hi[k];
     }
-    mpfr_clears(xr, lr, (mpfr_ptr)0);
     int32_t c3 = (int32_t)lround((double)fp.c[3] * n), d2 = (int32_t)lround(-(double)fp.c[2] * n),
             c1 = (int32_t)lround((double)fp.c[1] * n);
     /* the search: a box around the fit (the cut of t and the floors move the
@@ -1002,7 +1037,6 @@ static int prep_poly(fx_gen *G, int base2)
     }
     free(lo);
     free(hi);
-    free(ref);
     if (!ok)
         return -2;
     L->terr = worst * (1 + 1e-12) + 1e-12; /* MPFR to 128 bits, rounded to double: far below */
