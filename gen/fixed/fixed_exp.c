@@ -502,8 +502,8 @@ static void put_in(pf_buf *b, const char *s, size_t len, int n)
    between 6.3 and 6.7 with its alignment); bench_fixed 40, ns/element: exp
    0.234 -> 0.212, exp2 0.171 -> 0.162.  Tried and slower or no better
    (exp2): four stages, the three unrolled by two (no register moves), k and
-   Q in stage 2, E in stage 1.  Blocks left over and n < 32: the scalar
-   form */
+   Q in stage 2, E in stage 1.  n in [16, 32): one unpipelined block;
+   fewer than 16 left over: the scalar form */
 static void pipe3_loop(pf_buf *kern, const char *s1, const char *s2, size_t n2, const char *s3, const char *scalar)
 {
     size_t n1 = strlen(s1), n3 = strlen(s3);
