@@ -127,10 +127,7 @@ static uint64_t avx2_loop_mismatches(const char *src, size_t len, const fx_gen *
        of them sanitized code; the plain copy makes that check for every
        case (the sanitized copy ran it for a quarter of the cases, about a
        quarter of its time on 2026-12-07) */
-    int sanitized = 0;
-#if defined(__SANITIZE_ADDRESS__)
-    sanitized = 1;
-#endif
+    int sanitized = tu_sanitized();
     if (sanitized || !strstr(src, "_array_avx2(") || !__builtin_cpu_supports("x86-64-v3")) {
         free(x);
         free(y);

@@ -107,10 +107,7 @@ static void check(const char *func, const char *variant, int order, double U)
        the source the plain copy compiles, then that loop against the scalar
        form on the same inputs, neither of them sanitized code; the plain
        copy's check is the same, input for input */
-    int sanitized = 0;
-#if defined(__SANITIZE_ADDRESS__)
-    sanitized = 1;
-#endif
+    int sanitized = tu_sanitized();
     /* on a CPU without AVX-512 (x86-64-v4), a1 above is that loop already
        (the template's dispatch), checked on the same inputs */
     char after[512];

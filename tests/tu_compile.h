@@ -24,6 +24,16 @@ static void *tu_compile_load_def(const char *def, const char *src, size_t len, c
     return h;
 }
 
+/* 1 in the sanitized build of a test (make test's build/asan tree) */
+static int tu_sanitized(void)
+{
+#if defined(__SANITIZE_ADDRESS__)
+    return 1;
+#else
+    return 0;
+#endif
+}
+
 /* 1 when building src again with macro defined would run the array loop
  * its plain build already runs on this CPU, so that a second build tests
  * nothing new: this CPU lacks x86-64-v4, and macro occurs once in src, in
