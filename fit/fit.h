@@ -95,9 +95,11 @@ fit_real fit_round_coef(fit_real v, fit_coeffmt fmt, int *exp);
 void fit_measure(const fit_problem *pb, fit_poly *p);
 
 /* Between these two calls (one thread; fit_round brackets its chains with
- * them) fit_eval_target remembers g at every t it has seen for problems with
- * pb's target and domain. */
-void fit_target_cache_begin(const fit_problem *pb);
+ * them, the float generator every fit of one function, the ladder search
+ * all its candidates) fit_eval_target remembers g(t) by the target, its
+ * context and t.  They nest: only the outermost pair allocates and frees.
+ * A target's context must not change in between. */
+void fit_target_cache_begin(void);
 void fit_target_cache_end(void);
 
 /* g(t) and g'(t) in binary128 (g' by a central difference at 512 bits). */

@@ -46,65 +46,73 @@ fit_real fit_get_mpfr(const mpfr_t v)
     return (fit_real)h + ((fit_real)m + (fit_real)l);
 }
 
-/* While fit_round runs, every refit evaluates g at the same nodes (the
- * problem only gains coefficient pins): remember g(t) by the bits of t.
- * Open addressing; when full, values are simply not stored. */
-#define TCACHE_SIZE 16384
+/* While a cache scope is open, fits evaluate g at many of the same t:
+ * fit_round's refits at the same nodes (the problem only gains coefficient
+ * pins), fit_measure's grid of 4097 points at every order the generator
+ * tries and for each polynomial it measures, and the ladder search's
+ * candidates, which fit the same targets again.  g(t) depends on the target
+ * function, its context and t only (not on the problem's domain, order or
+ * constraints), so it is remembered by those three; a target's context must
+ * not change within a scope.  Scopes nest: an inner begin only counts, the
+ * outermost end frees.  Open addressing; when full, values are simply not
+ * stored.  The values are MPFR's either way, so a fit is the same with or
+ * without the cache. */
+#define TCACHE_SIZE 131072
 typedef struct {
-    unsigned char used[TCACHE_SIZE];
-    fit_real t[TCACHE_SIZE], g[TCACHE_SIZE];
-} tcache;
-static _Thread_local tcache *tc_cur;
-static _Thread_local const fit_problem *tc_owner;
+    fit_target_fn g;
+    const void *ctx;
+    fit_real t, v;
+    unsigned char used;
+} tentry;
+static _Thread_local tentry *tc_cur;
+static _Thread_local int tc_depth;
 
-void fit_target_cache_begin(const fit_problem *pb)
+void fit_target_cache_begin(void)
 {
-    if (tc_cur)
+    if (tc_depth++ > 0)
         return;
-    tc_cur = calloc(1, sizeof *tc_cur);
-    tc_owner = pb;
+    tc_cur = calloc(TCACHE_SIZE, sizeof *tc_cur); /* NULL: no cache, every g from MPFR */
 }
 
 void fit_target_cache_end(void)
 {
+    if (tc_depth <= 0 || --tc_depth > 0)
+        return;
     free(tc_cur);
     tc_cur = NULL;
-    tc_owner = NULL;
 }
 
-static size_t tc_slot(fit_real t)
+static size_t tc_slot(const fit_problem *pb, fit_real t)
 {
-    unsigned char b[sizeof t];
+    unsigned char b[sizeof t + sizeof pb->g + sizeof pb->ctx];
     memcpy(b, &t, sizeof t);
+    memcpy(b + sizeof t, &pb->g, sizeof pb->g);
+    memcpy(b + sizeof t + sizeof pb->g, &pb->ctx, sizeof pb->ctx);
     uint64_t h = 1469598103934665603ull;
-    for (size_t i = 0; i < 16 && i < sizeof t; i++)
+    for (size_t i = 0; i < sizeof b; i++)
         h = (h ^ b[i]) * 1099511628211ull;
     return (size_t)(h % TCACHE_SIZE);
-}
-
-static int tc_usable(const fit_problem *pb)
-{
-    /* same target and domain as the problem fit_round started with */
-    return tc_cur && pb->g == tc_owner->g && pb->ctx == tc_owner->ctx && pb->a == tc_owner->a &&
-           pb->b == tc_owner->b;
 }
 
 static fit_real eval_target_mpfr(const fit_problem *pb, fit_real t);
 
 fit_real fit_eval_target(const fit_problem *pb, fit_real t)
 {
-    if (!tc_usable(pb))
+    if (!tc_cur)
         return eval_target_mpfr(pb, t);
-    size_t i = tc_slot(t);
+    size_t i = tc_slot(pb, t);
     for (size_t probe = 0; probe < 64; probe++, i = (i + 1) % TCACHE_SIZE) {
-        if (!tc_cur->used[i]) {
-            tc_cur->t[i] = t;
-            tc_cur->g[i] = eval_target_mpfr(pb, t);
-            tc_cur->used[i] = 1;
-            return tc_cur->g[i];
+        tentry *e = &tc_cur[i];
+        if (!e->used) {
+            e->g = pb->g;
+            e->ctx = pb->ctx;
+            e->t = t;
+            e->v = eval_target_mpfr(pb, t);
+            e->used = 1;
+            return e->v;
         }
-        if (memcmp(&tc_cur->t[i], &t, 16) == 0)
-            return tc_cur->g[i];
+        if (e->g == pb->g && e->ctx == pb->ctx && memcmp(&e->t, &t, sizeof t) == 0)
+            return e->v;
     }
     return eval_target_mpfr(pb, t);
 }

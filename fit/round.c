@@ -172,7 +172,7 @@ int fit_round(const fit_problem *pb, fit_coeffmt fmt, fit_refit_fn refit,
 {
     if (fmt.fmt == FIT_COEF_REAL)
         return 0;
-    fit_target_cache_begin(pb);
+    fit_target_cache_begin();
     const fit_poly start = *inout;
     rgrid G;
     if (rgrid_init(&G, pb) != 0) {

@@ -108,15 +108,21 @@ static int fit_order(const pf_spec *s, int order, int minimax, int errkind, fit_
     pf_spec_problem(s, order, pb);
     pb->errkind = errkind;
     fit_refit_fn refit = minimax ? fit_minimax : fit_lsq;
-    if (refit(pb, real, err, errlen) != 0)
-        return -1;
-    *poly = *real;
-    fit_measure(pb, real);
-    fit_coeffmt fmt = {FIT_COEF_FLOAT, 0};
-    if (fit_round(pb, fmt, refit, poly, NULL, err, errlen) != 0)
-        return -1;
-    fit_measure(pb, poly);
-    return 0;
+    /* the fit, its rounding and both measurements share g's values (and,
+       inside pf_generate's scope, every other order of the function) */
+    fit_target_cache_begin();
+    int rc = -1;
+    if (refit(pb, real, err, errlen) == 0) {
+        *poly = *real;
+        fit_measure(pb, real);
+        fit_coeffmt fmt = {FIT_COEF_FLOAT, 0};
+        if (fit_round(pb, fmt, refit, poly, NULL, err, errlen) == 0) {
+            fit_measure(pb, poly);
+            rc = 0;
+        }
+    }
+    fit_target_cache_end();
+    return rc;
 }
 
 static void sweep_emitted(pf_gen_result *r, void *h, char *err, size_t errlen)
@@ -154,31 +160,13 @@ static void sweep_emitted(pf_gen_result *r, void *h, char *err, size_t errlen)
     r->swept = 1;
 }
 
-int pf_generate(const pf_gen_req *rq, pf_gen_result *r, char *err, size_t errlen)
+/* The fits of one function: the requested order, or the smallest that
+   meets the target, and the least-squares fit of the same order beside a
+   minimax one.  Every fit is of the same target, so one cache scope lets
+   them share g's values (MPFR at 256 bits: most of the time of a run).  Returns the order, or -1 with err set. */
+static int fit_all(const pf_gen_req *rq, const pf_spec *s, pf_gen_result *r, int errkind, double target,
+                   char *err, size_t errlen)
 {
-    memset(r, 0, sizeof *r);
-    r->below_err = -1;
-    if (!pf_spec_func_known(rq->func)) {
-        snprintf(err, errlen, "unknown function '%s' (known: %s)", rq->func, pf_spec_func_list());
-        return -1;
-    }
-    const pf_spec *s = pf_spec_find(rq->func, rq->variant, rq->reduction);
-    if (!s) {
-        snprintf(err, errlen, "no %s variant of %s%s%s", rq->variant, rq->func,
-                 rq->reduction ? " with reduction " : "", rq->reduction ? rq->reduction : "");
-        return -1;
-    }
-    r->spec = s;
-    if (rq->name)
-        snprintf(r->name, sizeof r->name, "%s", rq->name);
-    else
-        snprintf(r->name, sizeof r->name, "pf_%sf%s", s->func, !strcmp(s->variant, "fast") ? "_fast" : "");
-    r->minimax = rq->method ? !strcmp(rq->method, "minimax") : !strcmp(s->variant, "exact");
-    int errkind = rq->target > 0 && rq->target_abs ? FIT_ABS : s->errkind;
-    double target = rq->target > 0 ? rq->target : s->fast_target;
-    r->target = rq->target;
-    r->target_abs = rq->target_abs;
-    snprintf(r->target_text, sizeof r->target_text, "%s", rq->target_text ? rq->target_text : "");
     int order = rq->order ? rq->order : rq->target > 0 ? 0 : s->default_order;
     if (order) {
         if (fit_order(s, order, r->minimax, errkind, &r->real, &r->poly, &r->pb, err, errlen) != 0)
@@ -221,6 +209,39 @@ int pf_generate(const pf_gen_req *rq, pf_gen_result *r, char *err, size_t errlen
         if (fit_order(s, order, 0, errkind, &tmp, &r->lsq_poly, &pb2, err, errlen) != 0)
             return -1;
     }
+    return order;
+}
+
+int pf_generate(const pf_gen_req *rq, pf_gen_result *r, char *err, size_t errlen)
+{
+    memset(r, 0, sizeof *r);
+    r->below_err = -1;
+    if (!pf_spec_func_known(rq->func)) {
+        snprintf(err, errlen, "unknown function '%s' (known: %s)", rq->func, pf_spec_func_list());
+        return -1;
+    }
+    const pf_spec *s = pf_spec_find(rq->func, rq->variant, rq->reduction);
+    if (!s) {
+        snprintf(err, errlen, "no %s variant of %s%s%s", rq->variant, rq->func,
+                 rq->reduction ? " with reduction " : "", rq->reduction ? rq->reduction : "");
+        return -1;
+    }
+    r->spec = s;
+    if (rq->name)
+        snprintf(r->name, sizeof r->name, "%s", rq->name);
+    else
+        snprintf(r->name, sizeof r->name, "pf_%sf%s", s->func, !strcmp(s->variant, "fast") ? "_fast" : "");
+    r->minimax = rq->method ? !strcmp(rq->method, "minimax") : !strcmp(s->variant, "exact");
+    int errkind = rq->target > 0 && rq->target_abs ? FIT_ABS : s->errkind;
+    double target = rq->target > 0 ? rq->target : s->fast_target;
+    r->target = rq->target;
+    r->target_abs = rq->target_abs;
+    snprintf(r->target_text, sizeof r->target_text, "%s", rq->target_text ? rq->target_text : "");
+    fit_target_cache_begin();
+    int order = fit_all(rq, s, r, errkind, target, err, errlen);
+    fit_target_cache_end();
+    if (order < 0)
+        return -1;
     r->order = order;
     if (s->model) {
         if (s->model(&r->poly, order, &r->scheme) != 0) {

@@ -334,7 +334,11 @@ int pf_ladder_generate(const pf_gen_req *base, double U, int sample, FILE *log, 
         snprintf(err, errlen, "out of memory");
         return 1;
     }
+    /* the candidates fit the same targets again (every template and order
+       of one function): one cache scope shares g's MPFR values among them */
+    fit_target_cache_begin();
     int rc = search(base, U, sample, mem, res, err, errlen);
+    fit_target_cache_end();
     fclose(mem);
     if (rc == 0)
         fwrite(text, 1, len, log);
