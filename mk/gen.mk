@@ -42,3 +42,8 @@ TESTS += $(BUILD)/tests/check-readme-examples
 $(BUILD)/tests/check-readme-examples: tests/check-readme-examples.sh $(BUILD)/pfmathgen $(BUILD)/pfsweep
 	@mkdir -p $(dir $@)
 	sed -e 's|@BIN@|$(abspath $(BUILD))|' $< > $@ && chmod +x $@
+# Every link of README.md and docs/*.md points to a file and heading that exist.
+TESTS += $(BUILD)/tests/check-doc-links
+$(BUILD)/tests/check-doc-links: tests/check-doc-links.sh
+	@mkdir -p $(dir $@)
+	sed -e 's|@BIN@|$(abspath $(BUILD))|' $< > $@ && chmod +x $@

@@ -72,6 +72,7 @@ weight() {
     test_scene) echo 20 ;;
     test_ladder_log) echo 19 ;;
     check-readme-examples) echo 19 ;;
+    check-doc-links) echo 0 ;;
     asan/check-regen-fixed) echo 18 ;;
     test_sollya) echo 18 ;;
     check-regen) echo 16 ;;
