@@ -38,7 +38,8 @@ flush() {
 # Start order: the longest programs first, so that two long ones do not end
 # up as the run's tail on a 2-core machine (a long program started last keeps
 # one core busy after everything else is done).  weight: CPU seconds of the
-# program on the 2-core Zen 3 of 2026-12-07 (/usr/bin/time, user + sys;
+# program on the 2-core Zen 3 of 2026-12-07 (the ladder tests: 2026-12-08,
+# after the fit cache; /usr/bin/time, user + sys;
 # "asan/": the copy in the sanitizer build); a program not listed counts 5 s.
 # Only the start order depends on this table; outputs are printed in the
 # order given, as before, and a wrong or stale weight only costs time.
@@ -46,16 +47,16 @@ weight() {
   local k=${1##*/}
   case $1 in */asan/*) k=asan/$k ;; esac
   case $k in
-    asan/test_ladder_atrig) echo 109 ;;
-    test_ladder_atrig) echo 68 ;;
+    asan/test_ladder_atrig) echo 30 ;;
+    test_ladder_atrig) echo 28 ;;
     test_fixed_hash) echo 56 ;;
     test_fixedgen_funcs) echo 50 ;;
-    asan/test_ladder_trig) echo 49 ;;
+    asan/test_ladder_trig) echo 31 ;;
     asan/test_fixedgen) echo 48 ;;
     check-regen-fixed) echo 34 ;;
     asan/test_ref) echo 33 ;;
     asan/test_trig) echo 32 ;;
-    test_ladder_trig) echo 32 ;;
+    test_ladder_trig) echo 23 ;;
     asan/test_noisegen) echo 31 ;;
     asan/test_fixedgen_funcs) echo 30 ;;
     test_fixedgen) echo 30 ;;
@@ -64,13 +65,13 @@ weight() {
     asan/test_fit) echo 27 ;;
     asan/test_sollya) echo 27 ;;
     test_fit) echo 26 ;;
-    asan/test_ladder_log) echo 25 ;;
+    asan/test_ladder_log) echo 20 ;;
     asan/check-regen) echo 22 ;;
     test_trig) echo 21 ;;
     asan/test_exp) echo 20 ;;
-    asan/test_ladder) echo 20 ;;
+    asan/test_ladder) echo 10 ;;
     test_scene) echo 20 ;;
-    test_ladder_log) echo 19 ;;
+    test_ladder_log) echo 16 ;;
     check-readme-examples) echo 19 ;;
     check-doc-links) echo 0 ;;
     asan/check-regen-fixed) echo 18 ;;
@@ -87,7 +88,7 @@ weight() {
     asan/test_log) echo 10 ;;
     asan/test_tools_cli) echo 10 ;;
     test_atrig) echo 10 ;;
-    test_ladder) echo 10 ;;
+    test_ladder) echo 7 ;;
     test_cli) echo 8 ;;
     test_log) echo 6 ;;
     test_noise_spectrum) echo 6 ;;
