@@ -101,6 +101,11 @@ void fit_measure(const fit_problem *pb, fit_poly *p);
  * A target's context must not change in between. */
 void fit_target_cache_begin(void);
 void fit_target_cache_end(void);
+/* for tests: a scope whose table has the given number of slots (1: every
+   value shares one probe chain), and how many values the open scope holds
+   (0 outside a scope) */
+void fit_target_cache_begin_n(size_t slots);
+size_t fit_target_cache_count(void);
 
 /* g(t) and g'(t) in binary128 (g' by a central difference at 512 bits). */
 fit_real fit_eval_target(const fit_problem *pb, fit_real t);

@@ -66,13 +66,21 @@ typedef struct {
 } tentry;
 static _Thread_local tentry *tc_cur;
 static _Thread_local int tc_depth;
+static _Thread_local size_t tc_count; /* values stored in the open scope */
+static _Thread_local size_t tc_size;  /* its slots */
 
-void fit_target_cache_begin(void)
+void fit_target_cache_begin_n(size_t slots)
 {
     if (tc_depth++ > 0)
         return;
-    tc_cur = calloc(TCACHE_SIZE, sizeof *tc_cur); /* NULL: no cache, every g from MPFR */
+    tc_size = slots ? slots : 1;
+    tc_cur = calloc(tc_size, sizeof *tc_cur); /* NULL: no cache, every g from MPFR */
+    tc_count = 0;
 }
+
+void fit_target_cache_begin(void) { fit_target_cache_begin_n(TCACHE_SIZE); }
+
+size_t fit_target_cache_count(void) { return tc_cur ? tc_count : 0; }
 
 void fit_target_cache_end(void)
 {
@@ -91,7 +99,7 @@ static size_t tc_slot(const fit_problem *pb, fit_real t)
     uint64_t h = 1469598103934665603ull;
     for (size_t i = 0; i < sizeof b; i++)
         h = (h ^ b[i]) * 1099511628211ull;
-    return (size_t)(h % TCACHE_SIZE);
+    return (size_t)(h % tc_size);
 }
 
 static fit_real eval_target_mpfr(const fit_problem *pb, fit_real t);
@@ -101,7 +109,7 @@ fit_real fit_eval_target(const fit_problem *pb, fit_real t)
     if (!tc_cur)
         return eval_target_mpfr(pb, t);
     size_t i = tc_slot(pb, t);
-    for (size_t probe = 0; probe < 64; probe++, i = (i + 1) % TCACHE_SIZE) {
+    for (size_t probe = 0; probe < 64 && probe < tc_size; probe++, i = (i + 1) % tc_size) {
         tentry *e = &tc_cur[i];
         if (!e->used) {
             e->g = pb->g;
@@ -109,6 +117,7 @@ fit_real fit_eval_target(const fit_problem *pb, fit_real t)
             e->t = t;
             e->v = eval_target_mpfr(pb, t);
             e->used = 1;
+            tc_count++;
             return e->v;
         }
         if (e->g == pb->g && e->ctx == pb->ctx && memcmp(&e->t, &t, sizeof t) == 0)

@@ -315,6 +315,64 @@ static void test_parity_and_measure(void **st)
     assert_true(fabs(taylor.max_err_at - 1) < 1e-9);
 }
 
+/* The target cache (fit_target_cache_begin/end) returns g(t) of the
+ * problem's own target and context: two targets and one target under two
+ * contexts, asked at the same t inside nested scopes, give exactly what MPFR
+ * gives outside any scope, and so does every t again after the cache has
+ * seen it; the inner end keeps the outer scope's values.  Then, with a
+ * table of one slot, every key meets every other's entry: each must still
+ * get its own value. */
+static void g_scaled(mpfr_t y, const mpfr_t t, const void *c)
+{
+    mpfr_mul_d(y, t, *(const double *)c, MPFR_RNDN);
+}
+
+static void test_target_cache(void **st)
+{
+    (void)st;
+    static const double two = 2, three = 3;
+    fit_problem pb[4] = {{0}};
+    pb[0].g = g_sin;
+    pb[1].g = g_log1p;
+    pb[2].g = g_scaled, pb[2].ctx = &two;
+    pb[3].g = g_scaled, pb[3].ctx = &three;
+    enum { NT = 64 };
+    fit_real want[4][NT];
+    for (int k = 0; k < 4; k++)
+        for (int i = 0; i < NT; i++)
+            want[k][i] = fit_eval_target(&pb[k], (fit_real)i / 64);
+    assert_int_equal(fit_target_cache_count(), 0);
+    fit_target_cache_begin();
+    for (int pass = 0; pass < 3; pass++) {
+        if (pass == 1)
+            fit_target_cache_begin(); /* nested */
+        for (int i = 0; i < NT; i++)
+            for (int k = 0; k < 4; k++) {
+                fit_real v = fit_eval_target(&pb[k], (fit_real)i / 64);
+                assert_memory_equal(&v, &want[k][i], sizeof v);
+            }
+        assert_int_equal(fit_target_cache_count(), 4 * NT); /* each (target, context, t) once */
+        if (pass == 1)
+            fit_target_cache_end(); /* the outer scope's values stay */
+    }
+    assert_true(want[2][5] != want[3][5] && want[0][5] != want[1][5]);
+    fit_target_cache_end();
+    assert_int_equal(fit_target_cache_count(), 0);
+    /* a table of one slot: every (target, context, t) meets the others'
+       entries on its probe chain, and must not take their values */
+    for (int first = 0; first < 4; first++) {
+        fit_target_cache_begin_n(1);
+        for (int r = 0; r < 4; r++) {
+            int k = (first + r) % 4;
+            fit_real v = fit_eval_target(&pb[k], (fit_real)5 / 64);
+            assert_memory_equal(&v, &want[k][5], sizeof v);
+        }
+        assert_int_equal(fit_target_cache_count(), 1);
+        fit_target_cache_end();
+    }
+    assert_int_equal(fit_target_cache_count(), 0);
+}
+
 /* A sharp peak between grid points: g(t) = 1/(1 + K (t - t0)^2) against
  * p = 0 (absolute error), max exactly 1 at t0.  With K = 1e7 and t0 half a
  * grid step from the nearest of fit_measure's 4097 grid points on [0, 1],
@@ -448,7 +506,7 @@ int main(void)
         cmocka_unit_test(test_gauss_legendre),        cmocka_unit_test(test_order20_against_mpfr),
         cmocka_unit_test(test_nodes_converged),       cmocka_unit_test(test_pin_and_refit),
         cmocka_unit_test(test_parity_and_measure),    cmocka_unit_test(test_measure_sharp_peak),    cmocka_unit_test(test_bad_problems),
-        cmocka_unit_test(test_high_order_monotone), cmocka_unit_test(test_minimax_not_worse_than_lsq),
+        cmocka_unit_test(test_high_order_monotone), cmocka_unit_test(test_minimax_not_worse_than_lsq), cmocka_unit_test(test_target_cache),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
