@@ -110,6 +110,7 @@ weight() {
     asan/test_noise_scalar) echo 1 ;;
     test_clones) echo 1 ;;
     test_fixed_lib) echo 1 ;;
+    test_fx_bw_emul) echo 1 ;;
     test_noise) echo 1 ;;
     test_noise_fbm) echo 1 ;;
     test_noise_fixed) echo 1 ;;
