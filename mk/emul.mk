@@ -56,3 +56,10 @@ $(BUILD)/emul/%.o: $(BUILD)/emul/%.c $(BUILD)/emul/simde_fill.h.gch
 $(BUILD)/tests/test_fx_bw_emul: tests/test_fx_bw_emul.c $(BUILD)/emul/simde_fill.h.gch $(BUILD)/emul/emul_list.h $(EMUL_OBJS) $(BUILD)/libpfmath.a
 	@mkdir -p $(dir $@)
 	$(CC) $(EMUL_CFLAGS) -MMD -MP $< -o $@ $(EMUL_OBJS) $(LDFLAGS) $(BUILD)/libpfmath.a -lcmocka -lm
+
+# test_fixedgen_funcs runs the AVX-512BW loops of the kernels it emits the
+# same way (its bw_emul_mismatches): tests/emul.sed, then $CC with these
+# flags (the precompiled header's; absolute paths, as it runs anywhere)
+EMUL_CFLAGS_ABS := -I$(abspath $(BUILD)/emul) -I$(abspath tests) $(filter-out -I%,$(EMUL_CFLAGS))
+$(BUILD)/tests/test_fixedgen_funcs: CPPFLAGS += -DPF_EMUL_SED='"$(abspath tests/emul.sed)"' -DPF_EMUL_LIB='"$(abspath libpfmath/generated)"' -DPF_EMUL_CFLAGS='"$(EMUL_CFLAGS_ABS)"'
+$(BUILD)/tests/test_fixedgen_funcs: $(BUILD)/emul/simde_fill.h.gch tests/emul.sed

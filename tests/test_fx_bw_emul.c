@@ -34,7 +34,9 @@
  * the loops lean on most, against the native AVX2 instruction on each
  * 256-bit half where one exists, else against Intel's definition, on edge
  * and random values: a wrong emulation fails there, not as a wrong loop.
- * The native checks skip on a CPU without AVX2 and FMA. */
+ * The native checks skip on a CPU without AVX2 and FMA.  test_fixedgen_funcs
+ * runs the loops of the other type pairs it emits the same way (through
+ * tests/emul.sed and this build's precompiled header). */
 #include "simde_fill.h" /* first: mk/emul.mk precompiles it */
 
 #include <setjmp.h>
