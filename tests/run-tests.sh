@@ -48,8 +48,8 @@ weight() {
   case $k in
     asan/test_ladder_atrig) echo 109 ;;
     test_ladder_atrig) echo 68 ;;
-    test_fixedgen_funcs) echo 61 ;;
     test_fixed_hash) echo 56 ;;
+    test_fixedgen_funcs) echo 56 ;;
     asan/test_ladder_trig) echo 49 ;;
     asan/test_fixedgen) echo 48 ;;
     check-regen-fixed) echo 34 ;;
