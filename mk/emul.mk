@@ -9,7 +9,8 @@
 # calling the static loop is appended, and each file is compiled alone
 # (the files share static helper names) with tests/simde_fill.h.
 # build/emul/emul_list.h lists them, PF_EMU(name, input, output), parsed
-# from the loops' signatures.  Compile time is most of the cost: SIMDe and
+# from the loops' signatures (EMUL_SIG: 16-bit input and output, as the
+# test sweeps 2^16 stored values; any other signature stops the build).  Compile time is most of the cost: SIMDe and
 # <immintrin.h> are parsed once, into a precompiled tests/simde_fill.h
 # ($(BUILD)/emul/simde_fill.h.gch, found through -I$(BUILD)/emul before
 # tests/; GCC falls back to the header if it cannot use it), and -O1 -g0
