@@ -50,7 +50,7 @@ weight() {
     asan/test_ladder_atrig) echo 30 ;;
     test_ladder_atrig) echo 28 ;;
     test_fixed_hash) echo 56 ;;
-    test_fixedgen_funcs) echo 50 ;;
+    test_fixedgen_funcs) echo 56 ;;
     asan/test_ladder_trig) echo 31 ;;
     asan/test_fixedgen) echo 48 ;;
     check-regen-fixed) echo 34 ;;
@@ -112,6 +112,7 @@ weight() {
     asan/test_noise_scalar) echo 1 ;;
     test_clones) echo 1 ;;
     test_fixed_lib) echo 1 ;;
+    test_fx_bw_emul) echo 1 ;;
     test_noise) echo 1 ;;
     test_noise_fbm) echo 1 ;;
     test_noise_fixed) echo 1 ;;

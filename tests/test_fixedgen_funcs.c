@@ -5,22 +5,28 @@
  * MPFR: exact below 1 LSB, fast within max(2^-10 relative, 4 LSB), never
  * above the generator's own error bound, scalar and array forms equal.
  * The exact sqrt is also compared with pffixed.h's correctly rounded
- * pf_fx_sqrt (an independent implementation) on every input. */
+ * pf_fx_sqrt (an independent implementation) on every input.  A kernel
+ * with an AVX-512BW loop runs it too, emulated through SIMDe as
+ * test_fx_bw_emul does for the library's (bw_emul_mismatches). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <cmocka.h>
 
 #include "compile.h"
+#include "subproc.h"
 #include "tu_compile.h"
 #include "fixed_internal.h"
 #include "fixedgen.h"
 #include "pffixed.h"
 
 #include <dlfcn.h>
+#include <fcntl.h>
 #include <fenv.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 typedef struct {
     const char *func, *in, *out;
@@ -172,6 +178,125 @@ static uint64_t avx2_loop_mismatches(const char *src, size_t len, const fx_gen *
     return diff;
 }
 
+/* A kernel with an AVX-512BW loop (<name>_array_bw, which a CPU without
+   x86-64-v4 never runs): the source through tests/emul.sed (the loop's
+   intrinsics become SIMDe's, its exported names pf_emu_*), a main()
+   appended that runs the loop over every input and compares it with the
+   scalar form (under each of tests/simde_fill.h's vrsqrt14ps emulations
+   if it uses that, as test_fx_bw_emul does), then over n = 0..300 from
+   varied starts, y one element off; compiled as a program with mk/emul.mk's
+   flags and precompiled tests/simde_fill.h (PF_EMUL_SED, PF_EMUL_CFLAGS),
+   run, its count read back.  The number of mismatches (0 without such a
+   loop; not in the sanitized copy, whose $CC child would be unsanitized
+   code repeating the plain copy's check; not for a library function's
+   kernel, the same code below its header comment as
+   libpfmath/generated/pf_fx_<name>.c (PF_EMUL_LIB), which test_fx_bw_emul
+   checks). */
+static uint64_t bw_emul_mismatches(const char *src, size_t len, const fx_gen *G)
+{
+    if (tu_sanitized() || !strstr(src, "_array_bw("))
+        return 0;
+    char lib[600];
+    snprintf(lib, sizeof lib, "%s/pf_fx_%s.c", PF_EMUL_LIB, G->name + 3);
+    FILE *lf = fopen(lib, "r");
+    if (lf) {
+        assert_int_equal(fseek(lf, 0, SEEK_END), 0);
+        long fl = ftell(lf);
+        assert_true(fl >= 0);
+        rewind(lf);
+        char *t = malloc((size_t)fl + 1);
+        assert_non_null(t);
+        size_t tn = fread(t, 1, (size_t)fl, lf);
+        fclose(lf);
+        t[tn] = 0;
+        const char *a = strstr(t, "\n */\n"), *b = strstr(src, "\n */\n");
+        int same = a && b && tn - (size_t)(a - t) == len - (size_t)(b - src) && !memcmp(a, b, len - (size_t)(b - src));
+        free(t);
+        if (same) {
+            print_message("  AVX-512BW loop: %s's, checked by test_fx_bw_emul\n", lib);
+            return 0;
+        }
+    }
+    char dir[] = "/tmp/pfmath.XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    char fc[64], ec[64], exe[64], out[64], ren[400];
+    snprintf(fc, sizeof fc, "%s/f.c", dir);
+    snprintf(ec, sizeof ec, "%s/e.c", dir);
+    snprintf(exe, sizeof exe, "%s/e", dir);
+    snprintf(out, sizeof out, "%s/out", dir);
+    snprintf(ren, sizeof ren, "s/\\b%s/pf_emu_%s/g", G->name, G->name + 3);
+    FILE *f = fopen(fc, "w");
+    assert_non_null(f);
+    assert_int_equal(fwrite(src, 1, len, f), len);
+    assert_int_equal(fclose(f), 0);
+    int fd = open(ec, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    assert_true(fd >= 0);
+    char *sed[] = {"sed", "-f", PF_EMUL_SED, "-e", ren, fc, NULL};
+    int rc = pf_spawn(sed, -1, fd, -1);
+    close(fd);
+    assert_int_equal(rc, 0);
+    const char *e = G->name + 3; /* pf_emu_<e> */
+    f = fopen(ec, "a");
+    assert_non_null(f);
+    fprintf(f,
+            "\nint pf_emu_rsqrt14_mode;\nunsigned long pf_emu_rsqrt14_calls;\n#include <stdio.h>\n#include <stdlib.h>\n"
+            "int main(void)\n{\n"
+            "    const long long lo = %lldLL, hi = %lldLL;\n"
+            "    size_t N = (size_t)(hi - lo + 1);\n"
+            "    %s *x = malloc((N + 1) * sizeof *x);\n    %s *y = malloc((N + 1) * sizeof *y);\n"
+            "    long bad = 0;\n    if (!x || !y)\n        return 2;\n"
+            "    for (size_t i = 0; i < N; i++)\n        x[i] = (%s)(lo + (long long)i);\n"
+            "    for (int m = 0; m < PF_EMU_RSQRT14_MODES; m++) {\n"
+            "        pf_emu_rsqrt14_mode = m;\n        pf_emu_%s_array_bw(x, y, N);\n"
+            "        for (size_t i = 0; i < N; i++)\n            bad += y[i] != pf_emu_%s(x[i]);\n"
+            "        if (!pf_emu_rsqrt14_calls)\n            break;\n    }\n"
+            "    pf_emu_rsqrt14_mode = 0;\n"
+            "    for (size_t n = 0; n <= 300 && n <= N; n++) {\n"
+            "        size_t p = (n * 40503u) %% (N - n + 1);\n        pf_emu_%s_array_bw(x + p, y + 1, n);\n"
+            "        for (size_t i = 0; i < n; i++)\n            bad += y[1 + i] != pf_emu_%s(x[p + i]);\n    }\n"
+            "    printf(\"%%ld %%lu\\n\", bad, pf_emu_rsqrt14_calls);\n    return 0;\n}\n",
+            (long long)pf_type_min_stored(&G->in), (long long)pf_type_max_stored(&G->in), G->it, G->ot, G->it, e, e,
+            e, e);
+    assert_int_equal(fclose(f), 0);
+    /* $CC, mk/emul.mk's flags (split on blanks), the fill header first */
+    char flags[] = PF_EMUL_CFLAGS;
+    pf_argv a;
+    assert_int_equal(pf_argv_cc(&a), 0);
+    for (char *w = strtok(flags, " "); w; w = strtok(NULL, " "))
+        assert_int_equal(pf_argv_push(&a, w), 0);
+    const char *tail[] = {"-include", "simde_fill.h", "-o", exe, ec, "-lm"};
+    for (size_t i = 0; i < sizeof tail / sizeof tail[0]; i++)
+        assert_int_equal(pf_argv_push(&a, tail[i]), 0);
+    fd = open(out, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    assert_true(fd >= 0);
+    rc = pf_spawn(a.v, -1, fd, fd);
+    pf_argv_free(&a);
+    if (rc == 0) {
+        char *run[] = {exe, NULL};
+        assert_int_equal(lseek(fd, 0, SEEK_SET), 0);
+        assert_int_equal(ftruncate(fd, 0), 0);
+        rc = pf_spawn(run, -1, fd, fd);
+    }
+    close(fd);
+    unsigned long bad = 0, calls = 0;
+    char line[300] = "";
+    f = fopen(out, "r");
+    if (f) {
+        if (!fgets(line, sizeof line, f))
+            line[0] = 0;
+        fclose(f);
+    }
+    if (rc != 0 || sscanf(line, "%lu %lu", &bad, &calls) != 2) {
+        print_message("  AVX-512BW loop (emulated): compiling or running %s failed (%d): %s", ec, rc, line);
+        bad = 1; /* the files stay for a look */
+    } else {
+        print_message("  AVX-512BW loop (emulated, SIMDe%s): %lu inputs differ from the scalar form\n",
+                      calls ? ", every vrsqrt14ps emulation" : "", bad);
+        unlink(fc), unlink(ec), unlink(exe), unlink(out), rmdir(dir);
+    }
+    return bad;
+}
+
 static int run_case(const fx_case *c, double *max_err)
 {
     fx_gen *G = calloc(1, sizeof *G);
@@ -231,6 +356,7 @@ static int run_case(const fx_case *c, double *max_err)
         ok = ok && diff == 0;
     }
     ok = ok && avx2_loop_mismatches(src, len, G, &fn) == 0;
+    ok = ok && bw_emul_mismatches(src, len, G) == 0;
     *max_err = s.max_err;
     dlclose(h);
     free(src);
