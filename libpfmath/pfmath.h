@@ -7,6 +7,9 @@
  *                  domain; max relative error 2^-10 (see README for each)
  *   *_array        the same over arrays; vectorized, runtime-dispatched to
  *                  the widest vector unit present (AVX-512, AVX2, SSE2).
+ *                  y[i] = f(x[i]) (atan2: out[i] = f(y[i], x[i])); the
+ *                  output may be an input array (in place), other overlaps
+ *                  are not supported.
  * Special values follow C99 Annex F (NaN, infinities, signed zeros); no
  * floating-point exception flags or errno are promised. */
 #ifndef PFMATH_H

@@ -8,7 +8,9 @@
  * function (exact and fast) it calls the dispatched scalar form, each scalar
  * clone and each array clone the CPU can run, on a sample of inputs
  * (special values, every exponent by random bit patterns, the function's
- * own domain), and requires bit-identical results, NaN bits included.
+ * own domain), and requires bit-identical results, NaN bits included; each
+ * array clone again in place (the output array holding an input), which
+ * pfmath.h allows.
  *
  * The clones are local symbols (pf_logf_array.arch_x86_64_v3, ...): they are
  * found in the shared object's static symbol table (.symtab) and called at
@@ -180,6 +182,24 @@ static int check_one(const func_row *f, const char *sfx, const float *x, const f
                               two ? ", y = " : "", two ? (double)y[d] : 0.0, (double)out[d],
                               (double)ref[d]);
                 return -1;
+            }
+            /* in place (pfmath.h allows the output to be an input): the
+               same bits again, the output array holding the input first */
+            for (int arg = 0; arr && arg < (two ? 2 : 1); arg++) {
+                memcpy(out, arg ? x : two ? y : x, NIN * sizeof *out);
+                if (two && arg)
+                    ((arr2)c)(y, out, out, NIN);
+                else if (two)
+                    ((arr2)c)(out, x, out, NIN);
+                else
+                    ((arr1)c)(out, out, NIN);
+                d = first_diff(ref, out, NIN);
+                if (d >= 0) {
+                    print_message("%s in place (output = %s) differs from %s at x = %a (%08x)%s%a: %a vs %a\n",
+                                  cname, two && !arg ? "y" : "x", name, (double)x[d], asu(x[d]),
+                                  two ? ", y = " : "", two ? (double)y[d] : 0.0, (double)out[d], (double)ref[d]);
+                    return -1;
+                }
             }
             compared++;
         }

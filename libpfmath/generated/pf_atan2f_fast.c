@@ -161,11 +161,14 @@ float pf_atan2f_fast(float y, float x)
 }
 
 /* Array form: the body above is branch-free, so this loop vectorizes; one
-   clone per x86-64 level, the widest the CPU has is picked at load time. */
+   clone per x86-64 level, the widest the CPU has is picked at load time.
+   No restrict: out may be y or x (in place), as pfmath.h allows; every
+   element is read before its result is stored, so the loop's ivdep holds
+   then too (GCC emits the same code either way). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_atan2f_fast_array(const float *restrict y, const float *restrict x, float *restrict out, size_t n)
+void pf_atan2f_fast_array(const float *y, const float *x, float *out, size_t n)
 {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep

@@ -144,11 +144,14 @@ float pf_atanf_fast(float x)
 }
 
 /* Array form: the body above is branch-free, so this loop vectorizes; one
-   clone per x86-64 level, the widest the CPU has is picked at load time. */
+   clone per x86-64 level, the widest the CPU has is picked at load time.
+   x and y carry no restrict: y may be x (in place), as pfmath.h allows;
+   every element is read before its result is stored, so the loop's ivdep
+   holds then too (GCC emits the same code either way). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_atanf_fast_array(const float *restrict x, float *restrict y, size_t n)
+void pf_atanf_fast_array(const float *x, float *y, size_t n)
 {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep

@@ -202,11 +202,12 @@ float pf_exp2f_fast(float x)
    with one the full body, both vectorized.  Each lane gets the bits the
    scalar form gives it: pf_exp2f_fast_bulk is the full body's arithmetic on
    ordinary inputs.  The scan reads the whole block before anything is
-   written, so in-place calls (y == x) are safe. */
+   written, so in-place calls (y == x) are safe; x and y carry no restrict
+   for that reason (as pfmath.h allows; GCC emits the same code). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_exp2f_fast_array(const float *restrict x, float *restrict y, size_t n)
+void pf_exp2f_fast_array(const float *x, float *y, size_t n)
 {
     for (size_t i0 = 0; i0 < n; i0 += 128) {
         size_t nb = n - i0 < 128 ? n - i0 : 128;

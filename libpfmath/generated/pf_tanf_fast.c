@@ -259,11 +259,12 @@ static inline void pf_tanf_fast_both_paths(const float *xb, float *yb, size_t nb
    Otherwise, or in place (or overlapping), per block of 128: a vectorized scan for rare
    lanes first; a block without one runs the Cody-Waite loop; one with a
    few (at most 16) runs it on a copy of x and redoes the rare lanes one by
-   one; one with more computes both paths and selects. */
+   one; one with more computes both paths and selects.  x and y carry no
+   restrict: y may be x, as pfmath.h allows (GCC emits the same code). */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_tanf_fast_array(const float *restrict x, float *restrict y, size_t n)
+void pf_tanf_fast_array(const float *x, float *y, size_t n)
 {
 #if pf_tanf_fast_FUSED
     if ((uintptr_t)(x + n) <= (uintptr_t)y || (uintptr_t)(y + n) <= (uintptr_t)x) {
