@@ -141,6 +141,16 @@ static int first_diff(const float *a, const float *b, size_t n)
     return -1;
 }
 
+/* the input at i, for messages: "x = ... (bits)" and, for atan2, y */
+static const char *where(const float *x, const float *y, int two, int i)
+{
+    static char buf[96];
+    int len = snprintf(buf, sizeof buf, "x = %a (%08x)", (double)x[i], asu(x[i]));
+    if (two)
+        snprintf(buf + len, sizeof buf - (size_t)len, ", y = %a", (double)y[i]);
+    return buf;
+}
+
 /* compares every clone of pf_<f>f<sfx> and pf_<f>f<sfx>_array with the
    dispatched scalar form; returns the number of clones compared */
 static int check_one(const func_row *f, const char *sfx, const float *x, const float *y,
@@ -177,10 +187,8 @@ static int check_one(const func_row *f, const char *sfx, const float *x, const f
                     out[i] = two ? ((fn2)c)(y[i], x[i]) : ((fn1)c)(x[i]);
             int d = first_diff(ref, out, NIN);
             if (d >= 0) {
-                print_message("%s differs from %s at x = %a (%08x)%s%a: %a vs %a\n", cname, name,
-                              (double)x[d], asu(x[d]),
-                              two ? ", y = " : "", two ? (double)y[d] : 0.0, (double)out[d],
-                              (double)ref[d]);
+                print_message("%s differs from %s at %s: %a vs %a\n", cname, name, where(x, y, two, d),
+                              (double)out[d], (double)ref[d]);
                 return -1;
             }
             /* in place (pfmath.h allows the output to be an input): the
@@ -195,9 +203,9 @@ static int check_one(const func_row *f, const char *sfx, const float *x, const f
                     ((arr1)c)(out, out, NIN);
                 d = first_diff(ref, out, NIN);
                 if (d >= 0) {
-                    print_message("%s in place (output = %s) differs from %s at x = %a (%08x)%s%a: %a vs %a\n",
-                                  cname, two && !arg ? "y" : "x", name, (double)x[d], asu(x[d]),
-                                  two ? ", y = " : "", two ? (double)y[d] : 0.0, (double)out[d], (double)ref[d]);
+                    print_message("%s in place (output = %s) differs from %s at %s: %a vs %a\n", cname,
+                                  two && !arg ? "y" : "x", name, where(x, y, two, d), (double)out[d],
+                                  (double)ref[d]);
                     return -1;
                 }
             }
