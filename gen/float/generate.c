@@ -108,21 +108,15 @@ static int fit_order(const pf_spec *s, int order, int minimax, int errkind, fit_
     pf_spec_problem(s, order, pb);
     pb->errkind = errkind;
     fit_refit_fn refit = minimax ? fit_minimax : fit_lsq;
-    /* the fit, its rounding and both measurements share g's values (and,
-       inside pf_generate's scope, every other order of the function) */
-    fit_target_cache_begin();
-    int rc = -1;
-    if (refit(pb, real, err, errlen) == 0) {
-        *poly = *real;
-        fit_measure(pb, real);
-        fit_coeffmt fmt = {FIT_COEF_FLOAT, 0};
-        if (fit_round(pb, fmt, refit, poly, NULL, err, errlen) == 0) {
-            fit_measure(pb, poly);
-            rc = 0;
-        }
-    }
-    fit_target_cache_end();
-    return rc;
+    if (refit(pb, real, err, errlen) != 0)
+        return -1;
+    *poly = *real;
+    fit_measure(pb, real);
+    fit_coeffmt fmt = {FIT_COEF_FLOAT, 0};
+    if (fit_round(pb, fmt, refit, poly, NULL, err, errlen) != 0)
+        return -1;
+    fit_measure(pb, poly);
+    return 0;
 }
 
 static void sweep_emitted(pf_gen_result *r, void *h, char *err, size_t errlen)
@@ -162,8 +156,9 @@ static void sweep_emitted(pf_gen_result *r, void *h, char *err, size_t errlen)
 
 /* The fits of one function: the requested order, or the smallest that
    meets the target, and the least-squares fit of the same order beside a
-   minimax one.  Every fit is of the same target, so one cache scope lets
-   them share g's values (MPFR at 256 bits: most of the time of a run).  Returns the order, or -1 with err set. */
+   minimax one.  Every fit is of the same target, so pf_generate's one cache
+   scope around this lets them share g's values (MPFR at 256 bits: most of
+   the time of a run).  Returns the order, or -1 with err set. */
 static int fit_all(const pf_gen_req *rq, const pf_spec *s, pf_gen_result *r, int errkind, double target,
                    char *err, size_t errlen)
 {
