@@ -12,8 +12,7 @@
  *   pf_<f>_<in>_<out>_fast   fast: within max(2^-10 |f(x)|, 4 LSB), cheaper
  *   ..._array(x, y, n)       y[i] = f(x[i]); vectorizes (16-bit I/O: 16-bit
  *                            lanes, with AVX-512 and AVX2 loops of their own);
- *                            x and y must not overlap, not even in place (the
- *                            definitions take them restrict)
+ *                            y may be x (in place), no other overlap
  * Type tags: q<e> is a signed type filling its storage with exponent e
  * (q12 = fixed<15,12>, q16 = fixed<31,16>), uq<e> the unsigned one
  * (uq8 = unsigned fixed<16,8>); one tag when input and output types agree.

@@ -20,7 +20,7 @@
 EMUL_SRCS := $(sort $(shell grep -l '^static void pf_[a-z0-9_]*_array_bw' libpfmath/generated/*.c 2>/dev/null))
 EMUL_OBJS := $(EMUL_SRCS:libpfmath/generated/%.c=$(BUILD)/emul/%.o)
 EMUL_CFLAGS = -I$(BUILD)/emul $(CPPFLAGS) $(ALL_CFLAGS) -O1 -g0 -Wno-psabi
-EMUL_SIG := ^static void pf_\([a-z0-9_]*\)_array_bw(const \(u\{0,1\}int16_t\) \*restrict x, \(u\{0,1\}int16_t\) \*restrict y, size_t n)$$
+EMUL_SIG := ^static void pf_\([a-z0-9_]*\)_array_bw(const \(u\{0,1\}int16_t\) \*x, \(u\{0,1\}int16_t\) \*y, size_t n)$$
 # Not in the sanitized tree (SAN set: make test's build/asan), where it
 # would cost 26 s of compiling to run nothing (Makefile's ASAN_SAME)
 ifeq ($(SAN),)

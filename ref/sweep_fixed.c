@@ -30,6 +30,25 @@ typedef int64_t (*sc_call)(void *fn, int64_t x);
                 y[i + j] = (int64_t)by[j];                                                    \
         }                                                                                     \
     }                                                                                         \
+    /* in place: one buffer, read as IT and written as OT (same size where     \
+       this is called; int16_t and uint16_t may alias each other) */          \
+    static void arrip_##in##_##out(void *fn, const int64_t *x, int64_t *y, size_t n)          \
+    {                                                                                         \
+        void (*f)(const IT *, OT *, size_t);                                                  \
+        *(void **)&f = fn;                                                                    \
+        union {                                                                               \
+            IT i[BLK];                                                                        \
+            OT o[BLK];                                                                        \
+        } b;                                                                                  \
+        for (size_t i = 0; i < n; i += BLK) {                                                 \
+            size_t m = n - i < BLK ? n - i : BLK;                                             \
+            for (size_t j = 0; j < m; j++)                                                    \
+                b.i[j] = (IT)x[i + j];                                                        \
+            f(b.i, b.o, m);                                                                   \
+            for (size_t j = 0; j < m; j++)                                                    \
+                y[i + j] = (int64_t)b.o[j];                                                   \
+        }                                                                                     \
+    }                                                                                         \
     static int64_t sc_##in##_##out(void *fn, int64_t x)                                       \
     {                                                                                         \
         OT (*f)(IT);                                                                          \
@@ -48,6 +67,9 @@ OUTS(u32, uint32_t)
 
 #define ROW(in) {arr_##in##_i8, arr_##in##_u8, arr_##in##_i16, arr_##in##_u16, arr_##in##_i32, arr_##in##_u32}
 static const arr_call arr_tab[6][6] = {ROW(i8), ROW(u8), ROW(i16), ROW(u16), ROW(i32), ROW(u32)};
+#undef ROW
+#define ROW(in) {arrip_##in##_i8, arrip_##in##_u8, arrip_##in##_i16, arrip_##in##_u16, arrip_##in##_i32, arrip_##in##_u32}
+static const arr_call arrip_tab[6][6] = {ROW(i8), ROW(u8), ROW(i16), ROW(u16), ROW(i32), ROW(u32)};
 #undef ROW
 #define ROW(in) {sc_##in##_i8, sc_##in##_u8, sc_##in##_i16, sc_##in##_u16, sc_##in##_i32, sc_##in##_u32}
 static const sc_call sc_tab[6][6] = {ROW(i8), ROW(u8), ROW(i16), ROW(u16), ROW(i32), ROW(u32)};
@@ -72,6 +94,14 @@ void pf_fx_call_array(const pf_fx_fn *fn, const int64_t *x, int64_t *y, size_t n
     }
     for (size_t i = 0; i < n; i++)
         y[i] = pf_fx_call_scalar(fn, x[i]);
+}
+
+int pf_fx_call_array_inplace(const pf_fx_fn *fn, const int64_t *x, int64_t *y, size_t n)
+{
+    if (!fn->array || pf_fmt_storage_bits(fn->in) != pf_fmt_storage_bits(fn->out))
+        return 0;
+    arrip_tab[st_index(fn->in)][st_index(fn->out)](fn->array, x, y, n);
+    return 1;
 }
 
 int64_t pf_fx_call_scalar(const pf_fx_fn *fn, int64_t x)

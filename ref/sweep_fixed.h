@@ -37,6 +37,10 @@ int pf_fx_fn_supported(pf_fmt in, pf_fmt out);
    x[i] must lie in the input format's stored range */
 void pf_fx_call_array(const pf_fx_fn *fn, const int64_t *x, int64_t *y, size_t n);
 int64_t pf_fx_call_scalar(const pf_fx_fn *fn, int64_t x);
+/* the same through the array form called in place (its output array is its
+   input array), in pieces of at most 256; 0 when that cannot be done (the
+   two formats' storage differs in size, or there is no array form) */
+int pf_fx_call_array_inplace(const pf_fx_fn *fn, const int64_t *x, int64_t *y, size_t n);
 
 /* ---- reference and error ---- */
 

@@ -31,7 +31,7 @@ for e in @FXLIB@; do
     fi
     # the public declarations match the definitions
     sig=$(grep -m1 -E "^[a-z0-9_]+ pf_$n$s\(" "$root/$o" | sed 's/$/;/')
-    asig=$(grep -m1 -E "^void pf_$n${s}_array\(" "$root/$o" | sed -e 's/ \*restrict / */g' -e 's/$/;/')
+    asig=$(grep -m1 -E "^void pf_$n${s}_array\(" "$root/$o" | sed 's/$/;/')
     if [ -n "$sig" ] && grep -qF "$sig" "$root/libpfmath/pfmath_fixed.h" && grep -qF "$asig" "$root/libpfmath/pfmath_fixed.h"; then
       pass=$((pass+1)); echo "[       OK ] pfmath_fixed.h declares pf_$n$s"
     else

@@ -5,7 +5,7 @@
  * scalar and array forms is hashed: all builds and both forms must agree
  * (the array form called on pieces of varied lengths, so that the ends of
  * its vector loops run too: the whole table alone, 2^16 values, is a
- * multiple of every block).
+ * multiple of every block), and called in place (y == x) as well.
  * The -O0 table is also swept against MPFR (exact: below 1 LSB; fast: its
  * bound), so every build is within bound.  The one golden hash is derived,
  * not recorded: the exact sqrt's table must hash like the table of
@@ -135,7 +135,7 @@ static void *build(const char *src, const char *compiler, const char *flags, con
    form is called on pieces of the table whose lengths run through the ends
    of its loops (blocks of 16 or 32 lanes, pairs and fours of them, the one
    block and the scalar elements left over), then once on the rest */
-static void tables(const pf_fx_fn *fn, int64_t *ys, int64_t *ya, uint64_t *hs, uint64_t *ha)
+static void tables(const pf_fx_fn *fn, int64_t *ys, int64_t *ya, uint64_t *hs, uint64_t *ha, uint64_t *hp)
 {
     static const int64_t piece[] = {1, 15, 16, 17, 31, 32, 33, 47, 48, 63, 64, 65, 79, 95, 96, 97, 127, 129, 1000};
     int64_t lo = pf_fmt_min_stored(fn->in), hi = pf_fmt_max_stored(fn->in), n = hi - lo + 1;
@@ -150,11 +150,23 @@ static void tables(const pf_fx_fn *fn, int64_t *ys, int64_t *ya, uint64_t *hs, u
         at += piece[k];
     }
     pf_fx_call_array(fn, x + at, ya + at, (size_t)(n - at));
-    *hs = *ha = 0xcbf29ce484222325ull;
+    *hs = *ha = *hp = 0xcbf29ce484222325ull;
     for (int64_t i = 0; i < n; i++) {
         *hs = fnv(*hs, ys[i]);
         *ha = fnv(*ha, ya[i]);
     }
+    /* and in place (y == x, as pfmath_fixed.h allows), in pieces of the
+       same lengths (at most 256 a call: pf_fx_call_array_inplace's buffer) */
+    at = 0;
+    for (size_t k = 0; at < n; k = (k + 1) % (sizeof piece / sizeof piece[0])) {
+        int64_t m = piece[k] < 256 ? piece[k] : 256;
+        m = m < n - at ? m : n - at;
+        if (!pf_fx_call_array_inplace(fn, x + at, ya + at, (size_t)m))
+            break;
+        at += m;
+    }
+    for (int64_t i = 0; i < n; i++)
+        *hp = fnv(*hp, ya[i]);
     free(x);
 }
 
@@ -197,8 +209,8 @@ static void test_flags(void **st)
                 pf_fx_fn fn = {dlsym(h, sym), dlsym(h, asym), F->in, F->out};
                 assert_non_null(fn.scalar);
                 assert_non_null(fn.array);
-                uint64_t hs, ha;
-                tables(&fn, ys, ya, &hs, &ha);
+                uint64_t hs, ha, hp;
+                tables(&fn, ys, ya, &hs, &ha, &hp);
                 char fl[80];
                 snprintf(fl, sizeof fl, "%s%s%s", flagsets[k][0], *flagsets[k][0] ? " " : "", flagsets[k][1]);
                 print_message("%-24s %-36s scalar %016llx array %016llx\n", sym, fl, (unsigned long long)hs,
@@ -227,6 +239,11 @@ static void test_flags(void **st)
                 }
                 if (hs != h0 || ha != h0) {
                     print_message("FAILED: %s with %s differs from -O0\n", sym, fl);
+                    bad++;
+                }
+                if (hp != h0) {
+                    print_message("FAILED: %s_array with %s in place (y == x) differs: %016llx\n", sym, fl,
+                                  (unsigned long long)hp);
                     bad++;
                 }
                 dlclose(h);

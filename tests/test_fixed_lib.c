@@ -3,7 +3,8 @@
  * within 2^16 of 0 and a seeded sample (all 2^32: `make sweep`), against
  * MPFR; scalar and array forms agree; the defined saturations; exact
  * values (powers of two, perfect squares, sin 0, cos 0); the exact sqrt is
- * pffixed.h's correctly rounded pf_fx_sqrt; sin is odd and cos even. */
+ * pffixed.h's correctly rounded pf_fx_sqrt; sin is odd and cos even;
+ * every array form gives the same bits in place (y == x). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -14,6 +15,7 @@
 #include "pfmath_fixed.h"
 #include "sweep_fixed.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 static void *vp(void (*f)(void))
@@ -154,6 +156,48 @@ static void test_symmetry(void **st)
     }
 }
 
+/* pfmath_fixed.h allows y == x: every array form (here, the one the CPU
+   dispatches to: the AVX-512 or AVX2 loop, else the plain clone) called in
+   place gives the scalar form's bits, on pieces whose lengths run through
+   the ends of its loops (blocks of 16 and 32 lanes, pipelined pairs and
+   fours, the scalar tail) */
+static void test_in_place(void **st)
+{
+    (void)st;
+    static const size_t piece[] = {1, 15, 16, 17, 31, 32, 33, 47, 63, 64, 65, 96, 127, 128, 129, 255, 256};
+    const size_t np = sizeof piece / sizeof piece[0];
+    int bad = 0;
+    for (int i = 0; i < NFNS; i++) {
+        const lib_fn *l = &fns[i];
+        pf_fx_fn fn = fx(l);
+        int64_t lo = pf_fmt_min_stored(l->in);
+        size_t n = pf_fmt_storage_bits(l->in) <= 16 ? (size_t)1 << 16 : (size_t)1 << 18;
+        int64_t *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
+        assert_non_null(x);
+        assert_non_null(y);
+        uint64_t s = 0x1234567 + (uint64_t)i;
+        for (size_t j = 0; j < n; j++) {
+            s = s * 6364136223846793005ull + 1442695040888963407ull;
+            x[j] = n == (size_t)1 << 16 ? lo + (int64_t)j : (int64_t)(int32_t)(uint32_t)(s >> 32);
+        }
+        size_t m;
+        for (size_t at = 0, k = 0; at < n; at += m, k++) {
+            m = piece[k % np] < n - at ? piece[k % np] : n - at;
+            assert_true(pf_fx_call_array_inplace(&fn, x + at, y + at, m));
+        }
+        for (size_t j = 0; j < n; j++)
+            if (y[j] != pf_fx_call_scalar(&fn, x[j])) {
+                print_message("FAILED: %s_array in place gives %lld at x = %lld, the scalar form %lld\n", l->name,
+                              (long long)y[j], (long long)x[j], (long long)pf_fx_call_scalar(&fn, x[j]));
+                bad++;
+                break;
+            }
+        free(x);
+        free(y);
+    }
+    assert_int_equal(bad, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -161,6 +205,7 @@ int main(void)
         cmocka_unit_test(test_defined_values),
         cmocka_unit_test(test_sqrt_correctly_rounded),
         cmocka_unit_test(test_symmetry),
+        cmocka_unit_test(test_in_place),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

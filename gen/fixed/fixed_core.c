@@ -440,16 +440,19 @@ char *fx_emit(const fx_gen *G, size_t *len)
                       "   level vectorizes (bw = 0), as the scalar form does.  The same values\n"
                       "   (pfmathgen sweeps the array form on its machine against the scalar one). */\n"
                       "%s__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
-                      "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n"
+                      "static void %s_array_bw(const %s *x, %s *y, size_t n)\n"
                       "{\n"
                       "    const int16_t *k = %s_k;\n"
                       "    __asm__(\"\" : \"+r\"(k));\n"
+                      "    int16_t kl[%d]; /* a local copy: see the array form below */\n"
+                      "    for (int j = 0; j < %d; j++)\n"
+                      "        kl[j] = k[j];\n"
                       "#pragma GCC ivdep\n"
                       "    for (size_t i = 0; i < n; i++)\n"
-                      "        y[i] = %s_inline(x[i], k, 1);\n"
+                      "        y[i] = %s_inline(x[i], kl, 1);\n"
                       "}\n"
                       "#endif\n\n",
-                      cond, G->name, G->it, G->ot, G->name, G->name);
+                      cond, G->name, G->it, G->ot, G->name, G->nk, G->nk, G->name);
             if (G->bw16 == 3) /* 2, and an AVX2 loop of its own too (<name>_array_avx2) */
                 pf_printf(&bwc,
                           "%s#if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */\n"

@@ -644,7 +644,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                         "    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));\n}\n",
                   N);
     pf_printf(kern, "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
-                    "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
+                    "static void %s_array_bw(const %s *x, %s *y, size_t n)\n{\n",
               N, G->it, G->ot);
     /* exp2 with J = 5 and E from a 64-entry table: the loop runs on
        tbn = CB - x = (c + 1) 2^Ei - 1 - (tb mod 2^Ei), whose top bits are
@@ -844,7 +844,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
               "   with Q = 2^(17 - s) for s >= 2 (one vpshufb of a table of 2^i, 0 from s = 18), and\n"
               "   2^15 + avg(M, 0) at s = 1.  The same values. */\n%s"
               "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
-              "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+              "static void %s_array_avx2(const %s *x, %s *y, size_t n)\n{\n"
               "%s"
               "    /* the constants in memory GCC cannot see through: with 16 ymm registers it\n"
               "       would otherwise rebuild some of them (mov, vmovd, vpbroadcastw) inside\n"

@@ -327,7 +327,7 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
               "__attribute__((target(\"arch=x86-64-v4\"))) static inline __m512i %s_w16(const uint32_t *t)\n{\n"
               "    return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));\n}\n"
               "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
-              "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
+              "static void %s_array_bw(const %s *x, %s *y, size_t n)\n{\n",
               cond, G->ot, N, G->it, N, N, G->it, G->ot);
     pf_printf(kern, "    const __m512i tv = %s_w16(%s_fv), ts = %s_w16(%s_fs);\n"
                     "    const __m512i d = _mm512_set1_epi16(%lld);\n",
@@ -378,7 +378,7 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
                   "   shift: v >> c in 32-bit lanes (vpsrlvd) on the even and the odd words\n"
                   "   apart.  The same values. */\n%s"
                   "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
-                  "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+                  "static void %s_array_avx2(const %s *x, %s *y, size_t n)\n{\n"
                   "    uint8_t b[4][16]; /* V + j S: low, high bytes%s; 16 S: low, high bytes */\n"
                   "    for (int k = 0; k < 16; k++) {\n"
                   "        uint16_t vp = (uint16_t)(%s_fv[k] + (uint32_t)k * %s_fs[k]), sp = (uint16_t)(16u * %s_fs[k]);\n"
@@ -433,7 +433,7 @@ void fx_exp16f_emit(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int bas
               "   no 16-bit per-element shift: v >> c in 32-bit lanes (vpsrlvd) on the even\n"
               "   and the odd words apart.  The same values. */\n%s"
               "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
-              "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+              "static void %s_array_avx2(const %s *x, %s *y, size_t n)\n{\n"
               "    uint8_t b[4][16]; /* V's low, high bytes, S's low, high bytes */\n"
               "    for (int k = 0; k < 16; k++) {\n"
               "        b[0][k] = (uint8_t)%s_fv[k];\n"

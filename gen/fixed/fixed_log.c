@@ -582,7 +582,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                   N);
     pf_printf(kern,
               "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
-              "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
+              "static void %s_array_bw(const %s *x, %s *y, size_t n)\n{\n",
               N, G->it, G->ot);
     if (fs) {
         pf_printf(kern,
@@ -709,7 +709,7 @@ static void emit_tab(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern, int ba
                   L->tlo ? " and TL" : "",
                   L->tlo ? ";\n   V - V[0] and TL + V[0] are stored, so w = 0 there" : " (w = V[0]\n   rounds to 0)");
     pf_printf(kern, "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
-                    "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n",
+                    "static void %s_array_avx2(const %s *x, %s *y, size_t n)\n{\n",
               N, G->it, G->ot);
     int nq = 0, qv = 0, qs = 0, qh = 0, ql = 0;
     /* byte planes: V (2 or 4), S (2 or 4), TH' (2, lookup only), TL (1 or 2) */
@@ -1177,7 +1177,7 @@ static void emit_poly(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern)
               "   one). */\n%s#include <immintrin.h>\n"
               "extern %s %s(%s x); /* the scalar form, for the last n %% 32 (or 16) */\n"
               "__attribute__((target(\"arch=x86-64-v4\"), noinline))\n"
-              "static void %s_array_bw(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+              "static void %s_array_bw(const %s *x, %s *y, size_t n)\n{\n"
               "    int32_t e2[32]; /* e%s 2^%d by lz; x = 0 (lz = 16): the most negative */\n"
               "    for (int k = 0; k < 32; k++)\n"
               "        e2[k] = k < 16 ? %s : k == 16 ? -32768 : 0;\n"
@@ -1229,7 +1229,7 @@ static void emit_poly(fx_gen *G, pf_buf *body, pf_buf *tabs, pf_buf *kern)
                   16 - Eo, Eo, 16 - Eo, Eo, Eo, Eo);
     pf_printf(kern,
               "__attribute__((target(\"arch=x86-64-v3\"), noinline))\n"
-              "static void %s_array_avx2(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+              "static void %s_array_avx2(const %s *x, %s *y, size_t n)\n{\n"
               "    const __m256i z = _mm256_setzero_si256(), cb = _mm256_set1_epi32(%d);\n"
               "    const __m256i c3 = _mm256_set1_epi16(%d), d2 = _mm256_set1_epi16(%d), c1 = _mm256_set1_epi16(%d);\n",
               N, G->it, G->ot, (127 + Ei) * (1 << Eo), (int)(int16_t)L->pc3, (int)(int16_t)L->pd2,

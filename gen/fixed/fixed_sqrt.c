@@ -307,7 +307,7 @@ static void emit_f16_vec(fx_gen *G, pf_buf *b)
         int L = v4 ? 32 : 16;
         pf_printf(b,
                   "__attribute__((target(\"arch=x86-64-v%d\"), noinline))\n"
-                  "static void %s_array_%s(const %s *restrict x, %s *restrict y, size_t n)\n{\n"
+                  "static void %s_array_%s(const %s *x, %s *y, size_t n)\n{\n"
                   "    const %si er = %s_set1_epi16(0x%x), es = %s_set1_epi16(0x%x), one = %s_set1_epi16(1);\n"
                   "    const %s br = %s_set1_ps(0x1p%df), bs = %s_set1_ps(0x1p%df), three = %s_set1_ps(3.0f);\n"
                   "    const %s one_f = %s_set1_ps(1.0f);\n",

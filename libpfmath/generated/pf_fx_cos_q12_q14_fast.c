@@ -263,7 +263,7 @@ PF_FX_INLINE int16_t pf_cos_q12_q14_fast_inline(int16_t x, const int16_t *k, int
 #include <immintrin.h>
 extern int16_t pf_cos_q12_q14_fast(int16_t x); /* the scalar form, for the last n % 32 */
 __attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_cos_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_cos_q12_q14_fast_array_bw(const int16_t *x, int16_t *y, size_t n)
 {
     const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2);
     const __m512i c1 = _mm512_set1_epi16(25733), c3 = _mm512_set1_epi16(21012), c5 = _mm512_set1_epi16(4628);
@@ -409,7 +409,7 @@ static void pf_cos_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *res
    with min(x, -x)).  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
-static void pf_cos_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_cos_q12_q14_fast_array_avx2(const int16_t *x, int16_t *y, size_t n)
 {
     const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2);
     const __m256i c1 = _mm256_set1_epi16(25733), c3 = _mm256_set1_epi16(21012), c5 = _mm256_set1_epi16(4628);
@@ -504,7 +504,7 @@ int16_t pf_cos_q12_q14_fast(int16_t x)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_cos_q12_q14_fast_array(const int16_t *restrict x, int16_t *restrict y, size_t n)
+void pf_cos_q12_q14_fast_array(const int16_t *x, int16_t *y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */
@@ -526,9 +526,16 @@ void pf_cos_q12_q14_fast_array(const int16_t *restrict x, int16_t *restrict y, s
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
 #endif
+    /* y may be x (in place), so neither carries restrict; read through k, the
+       constants could then be stored to through y for all the compiler knows,
+       and would be reloaded every pass: a local copy, whose address never
+       escapes, cannot be */
+    int16_t kl[5];
+    for (int j = 0; j < 5; j++)
+        kl[j] = k[j];
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_cos_q12_q14_fast_inline(x[i], k, PF_FX_BW_NATIVE);
+        y[i] = pf_cos_q12_q14_fast_inline(x[i], kl, PF_FX_BW_NATIVE);
 }

@@ -300,7 +300,7 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_
     return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
 }
 __attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_exp2_q11_uq8_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+static void pf_exp2_q11_uq8_array_bw(const int16_t *x, uint16_t *y, size_t n)
 {
 /* P[(k + K0) & 31] at k & 31 = i (P above rotated by K0) */
 static const uint32_t pf_exp2_q11_uq8_tpk[32] = {
@@ -368,7 +368,7 @@ static const uint32_t pf_exp2_q11_uq8_tpk[32] = {
    2^15 + avg(M, 0) at s = 1.  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
-static void pf_exp2_q11_uq8_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+static void pf_exp2_q11_uq8_array_avx2(const int16_t *x, uint16_t *y, size_t n)
 {
     uint8_t b[4][16]; /* A's low, high bytes, D, the bytes of Q = 2^e (b[3][i] = 2^i, 0 from i = 8) */
     for (int k = 0; k < 16; k++) {
@@ -553,7 +553,7 @@ uint16_t pf_exp2_q11_uq8(int16_t x)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_exp2_q11_uq8_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+void pf_exp2_q11_uq8_array(const int16_t *x, uint16_t *y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */
@@ -575,9 +575,16 @@ void pf_exp2_q11_uq8_array(const int16_t *restrict x, uint16_t *restrict y, size
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
 #endif
+    /* y may be x (in place), so neither carries restrict; read through k, the
+       constants could then be stored to through y for all the compiler knows,
+       and would be reloaded every pass: a local copy, whose address never
+       escapes, cannot be */
+    int16_t kl[1];
+    for (int j = 0; j < 1; j++)
+        kl[j] = k[j];
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_exp2_q11_uq8_inline(x[i], k, PF_FX_BW_NATIVE);
+        y[i] = pf_exp2_q11_uq8_inline(x[i], kl, PF_FX_BW_NATIVE);
 }

@@ -268,7 +268,7 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_exp2_q11_uq8_
     return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
 }
 __attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_exp2_q11_uq8_fast_array_bw(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+static void pf_exp2_q11_uq8_fast_array_bw(const int16_t *x, uint16_t *y, size_t n)
 {
     const __m512i tv = pf_exp2_q11_uq8_fast_w16(pf_exp2_q11_uq8_fast_fv), ts = pf_exp2_q11_uq8_fast_w16(pf_exp2_q11_uq8_fast_fs);
     const __m512i d = _mm512_set1_epi16(16384);
@@ -320,7 +320,7 @@ static void pf_exp2_q11_uq8_fast_array_bw(const int16_t *restrict x, uint16_t *r
    apart.  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
-static void pf_exp2_q11_uq8_fast_array_avx2(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+static void pf_exp2_q11_uq8_fast_array_avx2(const int16_t *x, uint16_t *y, size_t n)
 {
     uint8_t b[4][16]; /* V + j S: low, high bytes less a = V[0] / 257 (the index's other byte reads entry 0: a and 0, so the sum is V[j] + j S[j]); 16 S: low, high bytes */
     for (int k = 0; k < 16; k++) {
@@ -408,7 +408,7 @@ uint16_t pf_exp2_q11_uq8_fast(int16_t x)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_exp2_q11_uq8_fast_array(const int16_t *restrict x, uint16_t *restrict y, size_t n)
+void pf_exp2_q11_uq8_fast_array(const int16_t *x, uint16_t *y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */
@@ -430,9 +430,16 @@ void pf_exp2_q11_uq8_fast_array(const int16_t *restrict x, uint16_t *restrict y,
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
 #endif
+    /* y may be x (in place), so neither carries restrict; read through k, the
+       constants could then be stored to through y for all the compiler knows,
+       and would be reloaded every pass: a local copy, whose address never
+       escapes, cannot be */
+    int16_t kl[1];
+    for (int j = 0; j < 1; j++)
+        kl[j] = k[j];
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_exp2_q11_uq8_fast_inline(x[i], k, PF_FX_BW_NATIVE);
+        y[i] = pf_exp2_q11_uq8_fast_inline(x[i], kl, PF_FX_BW_NATIVE);
 }

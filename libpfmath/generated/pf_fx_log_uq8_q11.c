@@ -293,7 +293,7 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_log_uq8_q11_w
                               _mm512_cvtepi32_epi16(_mm512_loadu_si512(t + 16)), 1);
 }
 __attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_log_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_log_uq8_q11_array_bw(const uint16_t *x, int16_t *y, size_t n)
 {
     /* pmulhuw(S 2^6, u) = S (32 + j) + floor(S f 2^-16), exact: V - S (32 + j) is
        stored (words, mod 2^16), and f is not formed */
@@ -370,7 +370,7 @@ static void pf_log_uq8_q11_array_bw(const uint16_t *restrict x, int16_t *restric
    two vpmullw, no lookup (V - 22713 s is stored).  x = 0: e' = -115, and the
    saturating add gives -32768 (pfmathgen checked it).  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
-static void pf_log_uq8_q11_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_log_uq8_q11_array_avx2(const uint16_t *x, int16_t *y, size_t n)
 {
     uint8_t b[8][16]; /* byte planes: V - q s low, high (entries 0-15, 16-31); S low, high (0-15, 16-31) */
     for (int k = 0; k < 16; k++) {
@@ -487,7 +487,7 @@ int16_t pf_log_uq8_q11(uint16_t x)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_log_uq8_q11_array(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+void pf_log_uq8_q11_array(const uint16_t *x, int16_t *y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */
@@ -509,9 +509,16 @@ void pf_log_uq8_q11_array(const uint16_t *restrict x, int16_t *restrict y, size_
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
 #endif
+    /* y may be x (in place), so neither carries restrict; read through k, the
+       constants could then be stored to through y for all the compiler knows,
+       and would be reloaded every pass: a local copy, whose address never
+       escapes, cannot be */
+    int16_t kl[1];
+    for (int j = 0; j < 1; j++)
+        kl[j] = k[j];
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_log_uq8_q11_inline(x[i], k, PF_FX_BW_NATIVE);
+        y[i] = pf_log_uq8_q11_inline(x[i], kl, PF_FX_BW_NATIVE);
 }

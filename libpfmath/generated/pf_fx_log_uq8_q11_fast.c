@@ -264,7 +264,7 @@ PF_FX_INLINE int16_t pf_log_uq8_q11_fast_inline(uint16_t x, const int16_t *k, in
 #include <immintrin.h>
 extern int16_t pf_log_uq8_q11_fast(uint16_t x); /* the scalar form, for the last n % 32 (or 16) */
 __attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_log_uq8_q11_fast_array_bw(const uint16_t *x, int16_t *y, size_t n)
 {
     int32_t e2[32]; /* e ln2 2^11 by lz; x = 0 (lz = 16): the most negative */
     for (int k = 0; k < 32; k++)
@@ -327,7 +327,7 @@ static void pf_log_uq8_q11_fast_array_bw(const uint16_t *restrict x, int16_t *re
    by step, software pipelined (measured on Zen 3, this loop alone: 6.4 ->
    5.8 core cycles per 16 lanes).  The same values. */
 __attribute__((target("arch=x86-64-v3"), noinline))
-static void pf_log_uq8_q11_fast_array_avx2(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_log_uq8_q11_fast_array_avx2(const uint16_t *x, int16_t *y, size_t n)
 {
     const __m256i z = _mm256_setzero_si256(), cb = _mm256_set1_epi32(276480);
     const __m256i c3 = _mm256_set1_epi16(240), d2 = _mm256_set1_epi16(848), c1 = _mm256_set1_epi16(2029);
@@ -439,7 +439,7 @@ int16_t pf_log_uq8_q11_fast(uint16_t x)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_log_uq8_q11_fast_array(const uint16_t *restrict x, int16_t *restrict y, size_t n)
+void pf_log_uq8_q11_fast_array(const uint16_t *x, int16_t *y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */
@@ -461,9 +461,16 @@ void pf_log_uq8_q11_fast_array(const uint16_t *restrict x, int16_t *restrict y, 
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
 #endif
+    /* y may be x (in place), so neither carries restrict; read through k, the
+       constants could then be stored to through y for all the compiler knows,
+       and would be reloaded every pass: a local copy, whose address never
+       escapes, cannot be */
+    int16_t kl[3];
+    for (int j = 0; j < 3; j++)
+        kl[j] = k[j];
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_log_uq8_q11_fast_inline(x[i], k, PF_FX_BW_NATIVE);
+        y[i] = pf_log_uq8_q11_fast_inline(x[i], kl, PF_FX_BW_NATIVE);
 }

@@ -288,7 +288,7 @@ __attribute__((target("arch=x86-64-v4"))) static inline __m512i pf_sin_q12_q14_w
     return _mm512_broadcast_i64x4(_mm512_cvtepi32_epi16(_mm512_loadu_si512(t)));
 }
 __attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_sin_q12_q14_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_sin_q12_q14_array_bw(const int16_t *x, int16_t *y, size_t n)
 {
     const __m512i c0 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c0), c1 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c1), c2 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c2);
     const __m512i c3 = pf_sin_q12_q14_w16(pf_sin_q12_q14_c3);
@@ -365,7 +365,7 @@ __attribute__((target("arch=x86-64-v3"))) static inline __m256i pf_sin_q12_q14_l
     return _mm256_or_si256(_mm256_shuffle_epi8(p[0], ia), _mm256_shuffle_epi8(p[1], ib));
 }
 __attribute__((target("arch=x86-64-v3"), noinline))
-static void pf_sin_q12_q14_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_sin_q12_q14_array_avx2(const int16_t *x, int16_t *y, size_t n)
 {
     const int32_t *tab[4] = {pf_sin_q12_q14_c0, pf_sin_q12_q14_c1, pf_sin_q12_q14_c2, pf_sin_q12_q14_c3};
     uint8_t b[4][2][16]; /* per table: the low bytes, the high bytes */
@@ -470,7 +470,7 @@ int16_t pf_sin_q12_q14(int16_t x)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_sin_q12_q14_array(const int16_t *restrict x, int16_t *restrict y, size_t n)
+void pf_sin_q12_q14_array(const int16_t *x, int16_t *y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */
@@ -492,9 +492,16 @@ void pf_sin_q12_q14_array(const int16_t *restrict x, int16_t *restrict y, size_t
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
 #endif
+    /* y may be x (in place), so neither carries restrict; read through k, the
+       constants could then be stored to through y for all the compiler knows,
+       and would be reloaded every pass: a local copy, whose address never
+       escapes, cannot be */
+    int16_t kl[3];
+    for (int j = 0; j < 3; j++)
+        kl[j] = k[j];
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_sin_q12_q14_inline(x[i], k, PF_FX_BW_NATIVE);
+        y[i] = pf_sin_q12_q14_inline(x[i], kl, PF_FX_BW_NATIVE);
 }

@@ -265,7 +265,7 @@ PF_FX_INLINE int16_t pf_sin_q12_q14_fast_inline(int16_t x, const int16_t *k, int
 #include <immintrin.h>
 extern int16_t pf_sin_q12_q14_fast(int16_t x); /* the scalar form, for the last n % 32 */
 __attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_sin_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_sin_q12_q14_fast_array_bw(const int16_t *x, int16_t *y, size_t n)
 {
     const __m512i kl = _mm512_set1_epi16(-29722), kh = _mm512_set1_epi16(2);
     const __m512i c1 = _mm512_set1_epi16(25733), c3 = _mm512_set1_epi16(21012), c5 = _mm512_set1_epi16(4628);
@@ -427,7 +427,7 @@ static void pf_sin_q12_q14_fast_array_bw(const int16_t *restrict x, int16_t *res
    with min(x, -x)).  The same values. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target("arch=x86-64-v3"), noinline))
-static void pf_sin_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *restrict y, size_t n)
+static void pf_sin_q12_q14_fast_array_avx2(const int16_t *x, int16_t *y, size_t n)
 {
     const __m256i kl = _mm256_set1_epi16(-29722), kh = _mm256_set1_epi16(2);
     const __m256i c1 = _mm256_set1_epi16(25733), c3 = _mm256_set1_epi16(21012), c5 = _mm256_set1_epi16(4628);
@@ -457,22 +457,22 @@ static void pf_sin_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *r
         __m256i q0 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s0, c5));
         __m256i p0 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s0, q0));
         __m256i r0 = _mm256_mulhrs_epi16(z0, p0);
-        r0 = _mm256_sign_epi16(_mm256_sign_epi16(r0, _mm256_xor_si256(hi0, z0)), xv0);
+        r0 = _mm256_sign_epi16(_mm256_sign_epi16(r0, _mm256_xor_si256(hi0, z0)), _mm256_loadu_si256((const __m256i *)(x + i)));
         _mm256_storeu_si256((__m256i *)(y + i), r0);
         __m256i q1 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s1, c5));
         __m256i p1 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s1, q1));
         __m256i r1 = _mm256_mulhrs_epi16(z1, p1);
-        r1 = _mm256_sign_epi16(_mm256_sign_epi16(r1, _mm256_xor_si256(hi1, z1)), xv1);
+        r1 = _mm256_sign_epi16(_mm256_sign_epi16(r1, _mm256_xor_si256(hi1, z1)), _mm256_loadu_si256((const __m256i *)(x + i + 16)));
         _mm256_storeu_si256((__m256i *)(y + i + 16), r1);
         __m256i q2 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s2, c5));
         __m256i p2 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s2, q2));
         __m256i r2 = _mm256_mulhrs_epi16(z2, p2);
-        r2 = _mm256_sign_epi16(_mm256_sign_epi16(r2, _mm256_xor_si256(hi2, z2)), xv2);
+        r2 = _mm256_sign_epi16(_mm256_sign_epi16(r2, _mm256_xor_si256(hi2, z2)), _mm256_loadu_si256((const __m256i *)(x + i + 32)));
         _mm256_storeu_si256((__m256i *)(y + i + 32), r2);
         __m256i q3 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s3, c5));
         __m256i p3 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s3, q3));
         __m256i r3 = _mm256_mulhrs_epi16(z3, p3);
-        r3 = _mm256_sign_epi16(_mm256_sign_epi16(r3, _mm256_xor_si256(hi3, z3)), xv3);
+        r3 = _mm256_sign_epi16(_mm256_sign_epi16(r3, _mm256_xor_si256(hi3, z3)), _mm256_loadu_si256((const __m256i *)(x + i + 48)));
         _mm256_storeu_si256((__m256i *)(y + i + 48), r3);
     }
     for (; i + 16 <= n; i += 16) {
@@ -484,7 +484,7 @@ static void pf_sin_q12_q14_fast_array_avx2(const int16_t *restrict x, int16_t *r
         __m256i q0 = _mm256_sub_epi16(c3, _mm256_mulhi_epu16(s0, c5));
         __m256i p0 = _mm256_sub_epi16(c1, _mm256_mulhi_epu16(s0, q0));
         __m256i r0 = _mm256_mulhrs_epi16(z0, p0);
-        r0 = _mm256_sign_epi16(_mm256_sign_epi16(r0, _mm256_xor_si256(hi0, z0)), xv0);
+        r0 = _mm256_sign_epi16(_mm256_sign_epi16(r0, _mm256_xor_si256(hi0, z0)), _mm256_loadu_si256((const __m256i *)(x + i)));
         _mm256_storeu_si256((__m256i *)(y + i), r0);
     }
     for (; i < n; i++)
@@ -521,7 +521,7 @@ int16_t pf_sin_q12_q14_fast(int16_t x)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_sin_q12_q14_fast_array(const int16_t *restrict x, int16_t *restrict y, size_t n)
+void pf_sin_q12_q14_fast_array(const int16_t *x, int16_t *y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */
@@ -543,9 +543,16 @@ void pf_sin_q12_q14_fast_array(const int16_t *restrict x, int16_t *restrict y, s
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
 #endif
+    /* y may be x (in place), so neither carries restrict; read through k, the
+       constants could then be stored to through y for all the compiler knows,
+       and would be reloaded every pass: a local copy, whose address never
+       escapes, cannot be */
+    int16_t kl[5];
+    for (int j = 0; j < 5; j++)
+        kl[j] = k[j];
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_sin_q12_q14_fast_inline(x[i], k, PF_FX_BW_NATIVE);
+        y[i] = pf_sin_q12_q14_fast_inline(x[i], kl, PF_FX_BW_NATIVE);
 }

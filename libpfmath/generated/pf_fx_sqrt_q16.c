@@ -180,11 +180,13 @@ int32_t pf_sqrt_q16(int32_t x)
    vectorizes.  Built for a baseline without AVX2, it gets one clone per
    x86-64 level and the widest the CPU has is picked at load time (when the
    baseline already has AVX2, e.g. -march=native, the loop is simply built
-   for it).  Every clone computes the same bits: integers only. */
+   for it).  Every clone computes the same bits: integers only.  y may be x
+   (in place): each element is read before its result is stored, so the
+   ivdep below holds then too. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_sqrt_q16_array(const int32_t *restrict x, int32_t *restrict y, size_t n)
+void pf_sqrt_q16_array(const int32_t *x, int32_t *y, size_t n)
 {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep

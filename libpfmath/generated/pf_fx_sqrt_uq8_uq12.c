@@ -265,7 +265,7 @@ PF_FX_INLINE uint16_t pf_sqrt_uq8_uq12_inline(uint16_t x, const int16_t *k, int 
 #include <immintrin.h>
 extern uint16_t pf_sqrt_uq8_uq12(uint16_t x); /* the scalar form, for the last n % 32 */
 __attribute__((target("arch=x86-64-v4"), noinline))
-static void pf_sqrt_uq8_uq12_array_bw(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
+static void pf_sqrt_uq8_uq12_array_bw(const uint16_t *x, uint16_t *y, size_t n)
 {
     const __m512i er = _mm512_set1_epi16(0x5200), es = _mm512_set1_epi16(0x5300), one = _mm512_set1_epi16(1);
     const __m512 br = _mm512_set1_ps(0x1p37f), bs = _mm512_set1_ps(0x1p39f), three = _mm512_set1_ps(3.0f);
@@ -290,7 +290,7 @@ static void pf_sqrt_uq8_uq12_array_bw(const uint16_t *restrict x, uint16_t *rest
         y[i] = pf_sqrt_uq8_uq12(x[i]);
 }
 __attribute__((target("arch=x86-64-v3"), noinline))
-static void pf_sqrt_uq8_uq12_array_avx2(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
+static void pf_sqrt_uq8_uq12_array_avx2(const uint16_t *x, uint16_t *y, size_t n)
 {
     const __m256i er = _mm256_set1_epi16(0x5200), es = _mm256_set1_epi16(0x5300), one = _mm256_set1_epi16(1);
     const __m256 br = _mm256_set1_ps(0x1p37f), bs = _mm256_set1_ps(0x1p39f), three = _mm256_set1_ps(3.0f);
@@ -338,7 +338,7 @@ uint16_t pf_sqrt_uq8_uq12(uint16_t x)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
-void pf_sqrt_uq8_uq12_array(const uint16_t *restrict x, uint16_t *restrict y, size_t n)
+void pf_sqrt_uq8_uq12_array(const uint16_t *x, uint16_t *y, size_t n)
 {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__AVX2__)
 #if defined(PF_FX_TEST_AVX2) /* tests: the AVX2 loop on any x86-64-v3 CPU (it is built for v3: FMA, BMI2 too) */
@@ -360,9 +360,16 @@ void pf_sqrt_uq8_uq12_array(const uint16_t *restrict x, uint16_t *restrict y, si
 #if defined(__GNUC__)
     __asm__("" : "+r"(k));
 #endif
+    /* y may be x (in place), so neither carries restrict; read through k, the
+       constants could then be stored to through y for all the compiler knows,
+       and would be reloaded every pass: a local copy, whose address never
+       escapes, cannot be */
+    int16_t kl[1];
+    for (int j = 0; j < 1; j++)
+        kl[j] = k[j];
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
     for (size_t i = 0; i < n; i++)
-        y[i] = pf_sqrt_uq8_uq12_inline(x[i], k, PF_FX_BW_NATIVE);
+        y[i] = pf_sqrt_uq8_uq12_inline(x[i], kl, PF_FX_BW_NATIVE);
 }
