@@ -3,7 +3,8 @@
  * and large exponents, integer inputs, signed inputs to log and sqrt,
  * outputs that saturate), compiled here and swept over EVERY input against
  * MPFR: exact below 1 LSB, fast within max(2^-10 relative, 4 LSB), never
- * above the generator's own error bound, scalar and array forms equal.
+ * above the generator's own error bound, scalar and array forms equal
+ * (the array also in place, y == x, where both types have one storage size).
  * The exact sqrt is also compared with pffixed.h's correctly rounded
  * pf_fx_sqrt (an independent implementation) on every input.  A kernel
  * with an AVX-512BW loop runs it too, emulated through SIMDe as
@@ -107,6 +108,23 @@ static int array_raises_invalid(const pf_fx_fn *f, const int64_t *x, int64_t *y,
     return fetestexcept(FE_INVALID) != 0;
 }
 
+/* The array form called in place (y == x, which an emitted file allows
+   when its two types' storage has one size) against y, its results out of
+   place: the number of inputs that differ (0 when in place does not apply) */
+static uint64_t inplace_mismatches(const pf_fx_fn *f, const int64_t *x, const int64_t *y, size_t n)
+{
+    int64_t *yp = malloc(n * sizeof *yp);
+    assert_non_null(yp);
+    uint64_t diff = 0;
+    if (pf_fx_call_array_inplace(f, x, yp, n))
+        for (size_t i = 0; i < n; i++)
+            diff += yp[i] != y[i];
+    free(yp);
+    if (diff)
+        print_message("  in place (y == x): %llu inputs differ\n", (unsigned long long)diff);
+    return diff;
+}
+
 /* A kernel with an AVX2 loop of its own (<name>_array_avx2, taken on
    x86-64-v3; this machine's dispatch takes the v4 one): compiled again with
    PF_FX_TEST_AVX2, which makes the array form take it on any CPU with
@@ -127,6 +145,7 @@ static uint64_t avx2_loop_mismatches(const char *src, size_t len, const fx_gen *
         print_message("  the array form raised the invalid-operation flag\n");
         diff++;
     }
+    diff += inplace_mismatches(f, x, y, n);
     /* The sanitized copy of this test does not build the AVX2 loop again:
        $CC (no sanitizer) compiling the same source as the plain copy, whose
        loop is then compared with the scalar form on the same inputs, neither
@@ -171,7 +190,9 @@ static uint64_t avx2_loop_mismatches(const char *src, size_t len, const fx_gen *
     }
     for (size_t i = 0; i < n; i++)
         diff += y[i] != pf_fx_call_scalar(f, x[i]);
-    print_message("  AVX2 loop (PF_FX_TEST_AVX2): %llu inputs differ from the scalar form\n", (unsigned long long)diff);
+    diff += inplace_mismatches(&fa, x, y, n);
+    print_message("  AVX2 loop (PF_FX_TEST_AVX2): %llu inputs differ from the scalar form (or in place)\n",
+                  (unsigned long long)diff);
     free(x);
     free(y);
     dlclose(h);
