@@ -35,3 +35,15 @@ $(BUILD)/tests/test_bench: tests/test_bench.c $(PFBENCH_TESTED) $(BUILD)/libpfre
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< $(PFBENCH_TESTED) -o $@ $(LDFLAGS) -fopenmp \
 	  $(BUILD)/libpfref.a $(BUILD)/libpfmath.a -lcmocka $(LIBS_NUM)
+
+# The scalar exact forms against glibc by how predictable the inputs are
+# (tests/bench_scalar.c: n = 4096, 65536 and 2^20 distinct inputs), in
+# $(BUILD)/bench-scalar.md, after the other benches (one timing at a time)
+PROGS += $(BUILD)/bench_scalar
+$(BUILD)/bench_scalar: tests/bench_scalar.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) -ldl -lm
+.PHONY: bench-scalar
+bench: bench-scalar
+bench-scalar: $(BUILD)/bench_scalar $(BUILD)/libpfmath.so | bench-float bench-noise bench-fixed
+	$(BUILD)/bench_scalar $(BUILD)/libpfmath.so | tee $(BUILD)/bench-scalar.md
