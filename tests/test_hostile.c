@@ -594,6 +594,61 @@ static void test_scene_editor_files(void **st)
     tu_rm_tree(scratch);
 }
 
+/* cc -std=c17 -Wall -Werror -fsyntax-only REL in the scratch directory:
+ * the status (127: no cc) */
+static int syntax_ok(const char *rel)
+{
+    const char *v[] = {"cc", "-std=c17", "-Wall", "-Werror", "-fsyntax-only", rel, NULL};
+    tu_execvp_in(scratch, v, &R);
+    print_message("  cc %s -> %d %s", rel, R.status, R.err);
+    return R.status;
+}
+
+/* A file name is recorded in the C's comments (Regenerate:, scene.h's
+ * first line).  "*", a backslash (or ??/), a newline, "/" is no "*" "/"
+ * there, but lines are spliced before comments end: the comment ended,
+ * the rest of the name was compiled, and the C did not build (with
+ * --no-sweep exit 0; a chosen name could put code in it). */
+static void test_names_in_comments(void **st)
+{
+    (void)st;
+    new_scratch();
+    const char *dirs[] = {"d*\\\n", "e*?\?/\n", "f/\\\n"};
+    char p[600], o[1300];
+    for (size_t i = 0; i < sizeof dirs / sizeof dirs[0]; i++) {
+        /* every directory on the way ("e*??" holds "\n") */
+        snprintf(p, sizeof p, "%s/%s", scratch, dirs[i]);
+        for (char *s = p + strlen(scratch) + 1;; s++)
+            if (*s == '/' || !*s) {
+                char c = *s;
+                *s = 0;
+                assert_true(mkdir(p, 0777) == 0 || errno == EEXIST);
+                if (!(*s = c))
+                    break;
+            }
+        snprintf(o, sizeof o, "%s/*x.c", dirs[i]);
+        GEN("--func", "log", "--variant", "fast", "--no-sweep", "-o", o);
+        assert_int_equal(R.status, 0);
+        if (syntax_ok(o) == 127) {
+            print_message("  (no cc: skipped)\n");
+            tu_rm_tree(scratch);
+            return;
+        }
+        assert_int_equal(R.status, 0);
+        /* the scene file's own name, and the fixed-point generator's comment */
+        snprintf(o, sizeof o, "%s/s.scene", dirs[i]);
+        puts_file(o, cheap_scene);
+        snprintf(p, sizeof p, "%sout", dirs[i]);
+        GEN("--scene", o, "-o", p, "--prefix", "s_");
+        assert_int_equal(R.status, 0);
+        snprintf(o, sizeof o, "%s/scene.h", p);
+        assert_int_equal(syntax_ok(o), 0);
+        snprintf(o, sizeof o, "%s/s_sqrt_u8_8_u8_8.c", p);
+        assert_int_equal(syntax_ok(o), 0);
+    }
+    tu_rm_tree(scratch);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -610,6 +665,7 @@ int main(void)
         cmocka_unit_test(test_scene_file_not_replaced),
         cmocka_unit_test(test_read_only_target),
         cmocka_unit_test(test_scene_editor_files),
+        cmocka_unit_test(test_names_in_comments),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

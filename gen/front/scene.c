@@ -342,12 +342,17 @@ static int gen_fixed(scene *S, const scene_entry *x, FILE *rep)
     return 0;
 }
 
-/* text for a C comment: "*" "/" would end it */
+/* text for a C comment: "*" "/" would end it, and so would "*", a
+ * backslash (or the trigraph ??/), a newline and "/", lines being spliced
+ * before comments end (pf_cli_command_line); "/" "*" is -Wcomment's
+ * warning, a trigraph -Wtrigraphs'.  A blank goes between "*" or "/" and
+ * another of "/", "*", a backslash, and between "?" and "?". */
 static void comment_text(FILE *h, const char *s)
 {
     for (; *s; s++) {
         fputc(*s, h);
-        if (s[0] == '*' && s[1] == '/')
+        if (((s[0] == '*' || s[0] == '/') && s[1] && s[1] != s[0] && strchr("/*\\", s[1])) ||
+            (s[0] == '?' && s[1] == '?'))
             fputc(' ', h);
     }
 }
