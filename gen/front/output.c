@@ -205,10 +205,14 @@ int pf_out_stage(const char *path, const char *data, size_t n, pf_out_staged *s,
     s->n = n;
     if (special)
         return 0;
-    /* ".NAME.XXXXXX" beside the target: the same file system, so rename is atomic */
+    /* ".NAME.XXXXXX" beside the target: the same file system, so rename is
+       atomic.  NAME is the target's name cut to 64 bytes: a name of up to
+       NAME_MAX bytes is a good target, but 8 more made the temporary's
+       ENAMETOOLONG, after the whole fit (pf_out_check had passed it). */
     char *d = pf_out_dirname(r);
     const char *base = strrchr(r, '/') ? strrchr(r, '/') + 1 : r;
-    size_t len = (d ? strlen(d) : 0) + strlen(base) + 16;
+    int blen = strlen(base) > 64 ? 64 : (int)strlen(base);
+    size_t len = (d ? strlen(d) : 0) + (size_t)blen + 16;
     s->tmp = d ? malloc(len) : NULL;
     if (!s->tmp) {
         free(d);
@@ -216,7 +220,7 @@ int pf_out_stage(const char *path, const char *data, size_t n, pf_out_staged *s,
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    snprintf(s->tmp, len, "%s/.%s.XXXXXX", d, base);
+    snprintf(s->tmp, len, "%s/.%.*s.XXXXXX", d, blen, base);
     free(d);
     int fd = mkstemp(s->tmp);
     if (fd < 0) {
