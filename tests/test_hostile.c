@@ -649,6 +649,27 @@ static void test_names_in_comments(void **st)
     tu_rm_tree(scratch);
 }
 
+/* A scene's DIR/NAME.c that is a directory (or read-only, or the scene
+ * file) is known from the scene's line: exit 2 before any fit, as for
+ * scene.h and report.txt; it was exit 1 after all of them. */
+static void test_scene_entry_file_first(void **st)
+{
+    (void)st;
+    new_scratch();
+    puts_file("s.scene", cheap_scene);
+    char p[600];
+    snprintf(p, sizeof p, "%s/out", scratch);
+    assert_int_equal(mkdir(p, 0777), 0);
+    snprintf(p, sizeof p, "%s/out/s_sqrt_u8_8_u8_8.c", scratch);
+    assert_int_equal(mkdir(p, 0777), 0);
+    GEN("--scene", "s.scene", "-o", "out");
+    expect2();
+    assert_non_null(strstr(R.err, "is a directory"));
+    assert_int_equal(kind("out/s_sqrt_u8_8_u8_8.c"), S_IFDIR);
+    assert_false(exists("out/scene.h"));
+    tu_rm_tree(scratch);
+}
+
 /* -o NAME of 255 bytes (NAME_MAX) is a name "> NAME" writes; the temporary
  * ".NAME.XXXXXX" beside it was 263, so the run failed (exit 1) after the
  * whole fit.  One byte more is refused before it (exit 2). */
@@ -697,6 +718,7 @@ int main(void)
         cmocka_unit_test(test_scene_editor_files),
         cmocka_unit_test(test_names_in_comments),
         cmocka_unit_test(test_longest_name),
+        cmocka_unit_test(test_scene_entry_file_first),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

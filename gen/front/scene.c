@@ -567,6 +567,16 @@ int pf_scene_run(const pf_request *rq)
         if (!rc && exists)
             rc = check_file(S, fixed_files[i]);
     }
+    /* and every entry's NAME.c, known from its line: a directory or the
+       scene file under that name was found only at the write, after all
+       the fits (exit 1) */
+    for (int i = 0; i < S->ne && !rc; i++) {
+        char file[sizeof S->e[i].name + 4];
+        snprintf(file, sizeof file, "%s.c", S->e[i].name);
+        rc = clobbers_scene(S, file);
+        if (!rc && exists)
+            rc = check_file(S, file);
+    }
     char *rtext = NULL;
     size_t rlen = 0;
     FILE *rep = rc ? NULL : open_memstream(&rtext, &rlen);
