@@ -65,7 +65,7 @@ static uint32_t asuint(float f) { uint32_t u; memcpy(&u, &f, 4); return u; }
 
 static void die2(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pfbench: %s%s\n", msg, arg ? arg : "");
+    pfcli_line("pfbench", msg, arg); /* one line, whatever arg holds */
     exit(2);
 }
 
@@ -474,11 +474,11 @@ int main(int argc, char **argv)
     if (!list && (stat(outdir, &osb) != 0 || !S_ISDIR(osb.st_mode) || access(outdir, W_OK | X_OK) != 0))
         die2("--out is not a writable directory: ", outdir);
     if (pfb_ours_open(lib, err, sizeof err)) {
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     if (ladder && pfb_ladder_open(ladder, err, sizeof err)) {
-        fprintf(stderr, "pfbench: --ladder: %s\n", err);
+        pfcli_line("pfbench", "--ladder: ", err);
         return 1;
     }
 
@@ -504,12 +504,12 @@ int main(int argc, char **argv)
     /* both names checked before the run; nothing is written before its end */
     pfcli_out omd, ocsv;
     if (pfcli_out_open(&omd, mdpath, err, sizeof err) != 0) {
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     if (pfcli_out_open(&ocsv, csvpath, err, sizeof err) != 0) {
         pfcli_out_abort(&omd);
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     FILE *md = omd.f, *csv = ocsv.f;
@@ -807,11 +807,11 @@ int main(int argc, char **argv)
     fprintf(md, "\nTotal bench time %.0f s.\n", wall() - t_start);
     if (pfcli_out_commit(&omd, err, sizeof err) != 0) {
         pfcli_out_abort(&ocsv);
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     if (pfcli_out_commit(&ocsv, err, sizeof err) != 0) {
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     fprintf(stderr, "pfbench: wrote %s and %s (%.0f s); %d goals met, %d missed\n", mdpath, csvpath,

@@ -35,7 +35,7 @@ static const char usage[] =
 
 static void die2(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pfsweep: %s%s\n", msg, arg ? arg : "");
+    pfcli_line("pfsweep", msg, arg); /* one line, whatever arg holds */
     exit(2);
 }
 
@@ -137,19 +137,21 @@ int main(int argc, char **argv)
         }
         h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
         if (!h) {
-            fprintf(stderr, "pfsweep: %s\n", dlerror());
+            pfcli_line("pfsweep", dlerror(), NULL);
             return 1;
         }
     } else {
         h = pf_compile_load_file(src, err, sizeof err);
         if (!h) {
-            fprintf(stderr, "pfsweep: %s\n", err);
+            pfcli_line("pfsweep", err, NULL);
             return 1;
         }
     }
     void *p = dlsym(h, sym);
     if (!p) {
-        fprintf(stderr, "pfsweep: no function %s in %s\n", sym, src ? src : lib ? lib : "libpfmath.so");
+        char m[PATH_MAX + 256];
+        snprintf(m, sizeof m, "no function %s in %s", sym, src ? src : lib ? lib : "libpfmath.so");
+        pfcli_line("pfsweep", m, NULL);
         return 1;
     }
     pf_fn1 f1 = NULL;

@@ -42,7 +42,7 @@ static const char usage[] =
 
 static void die2(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pfsweep: %s%s\n", msg, arg ? arg : "");
+    pfcli_line("pfsweep", msg, arg); /* one line, whatever arg holds */
     exit(2);
 }
 
@@ -50,12 +50,14 @@ static void parse(const char *what, const char *s, pf_type *t)
 {
     char e[200];
     if (pf_type_parse(s, t, e, sizeof e) != 0) {
-        fprintf(stderr, "pfsweep: bad %s: %s\n", what, e);
-        exit(2);
+        char m[300];
+        snprintf(m, sizeof m, "bad %s: %s", what, e);
+        die2(m, NULL);
     }
     if (t->is_float || t->storage_bits > 32) {
-        fprintf(stderr, "pfsweep: %s %s: expected a fixed-point type of at most 32 bits\n", what, s);
-        exit(2);
+        char m[400];
+        snprintf(m, sizeof m, "%s %.200s: expected a fixed-point type of at most 32 bits", what, s);
+        die2(m, NULL);
     }
 }
 
@@ -159,19 +161,21 @@ int pfsweep_fixed_main(int argc, char **argv)
         }
         h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
         if (!h) {
-            fprintf(stderr, "pfsweep: %s\n", dlerror());
+            pfcli_line("pfsweep", dlerror(), NULL);
             return 1;
         }
     } else {
         h = pf_compile_load_file(src, err, sizeof err);
         if (!h) {
-            fprintf(stderr, "pfsweep: %s\n", err);
+            pfcli_line("pfsweep", err, NULL);
             return 1;
         }
     }
     pf_fx_fn fn = {dlsym(h, sym), dlsym(h, asym), pf_type_to_fmt(&in), pf_type_to_fmt(&out)};
     if (!fn.scalar) {
-        fprintf(stderr, "pfsweep: no function %s in %s\n", sym, src ? src : lib ? lib : "libpfmath.so");
+        char m[PATH_MAX + 256];
+        snprintf(m, sizeof m, "no function %s in %s", sym, src ? src : lib ? lib : "libpfmath.so");
+        pfcli_line("pfsweep", m, NULL);
         return 1;
     }
     char ti[64], to[64], title[512];

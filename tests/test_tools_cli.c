@@ -136,6 +136,34 @@ static void test_pfsweep_names_and_repeats(void **st)
     REFUSE("pfsweep", "--func", "sin", "--func", "cos", "--type", "fixed<15,12>");
 }
 
+/* A newline in a value made the message two lines (pfmathgen's, and
+ * pfcli_refuse's, print control characters as '?'); the load failures
+ * (exit 1) that name the user's file too. */
+static void test_one_line_messages(void **st)
+{
+    (void)st;
+    REFUSE("pfsweep", "--func", "no\nsuch");
+    REFUSE("pfsweep", "--func", "log", "--variant", "a\nb");
+    REFUSE("pfsweep", "--func", "log", "--seed", "1\n");
+    REFUSE("pfsweep", "--func", "log", "--bo\ngus");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,\n>");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<40,\n1>");
+    REFUSE("pfsweep", "--func", "no\nsuch", "--type", "fixed<15,12>");
+    REFUSE("pfbench", "--func", "no\nsuch");
+    REFUSE("pfbench", "--out", "/nonexistent\n/x");
+    const char *const l1[] = {"pfsweep", "--func", "log", "--lib", "/nonexistent\nx.so", NULL};
+    const char *const l2[] = {"pfsweep", "--func", "log", "--source", "/nonexistent\nx.c", NULL};
+    const char *const l3[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--lib", "/nonexistent\nx.so", NULL};
+    const char *const *l[] = {l1, l2, l3};
+    for (size_t i = 0; i < sizeof l / sizeof l[0]; i++) {
+        run_result r;
+        run(l[i], &r);
+        print_message("%s -> %d: %s", l[i][4], r.status, r.err);
+        assert_int_equal(r.status, 1);
+        assert_int_equal(tu_count_lines(r.err), 1);
+    }
+}
+
 /* bench.md and bench.csv as they were before a refused run */
 static void check_outputs_kept(const char *dir)
 {
@@ -441,6 +469,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pfsweep_numbers),
         cmocka_unit_test(test_pfsweep_names_and_repeats),
+        cmocka_unit_test(test_one_line_messages),
         cmocka_unit_test(test_pfbench),
         cmocka_unit_test(test_pfbench_writes),
         cmocka_unit_test(test_pfnoise_demo),
