@@ -372,6 +372,7 @@ static void bench_fixed(FILE *md, FILE *csv, int reps, double target, uint64_t s
 
 int main(int argc, char **argv)
 {
+    pfcli_check_stdout("pfbench"); /* --list and --help on a full disk: exit 1 */
     static const struct option opts[] = {
         {"lib", required_argument, 0, 'l'},     {"out", required_argument, 0, 'o'},
         {"func", required_argument, 0, 'f'},    {"reps", required_argument, 0, 'r'},

@@ -44,6 +44,7 @@ int pfsweep_pairs(pf_sweep_stats *s, pf_func f, pf_fn2 fn, uint64_t seed, uint64
 
 int main(int argc, char **argv)
 {
+    pfcli_check_stdout("pfsweep"); /* the results are its output: > /dev/full is exit 1 */
     for (int i = 1; i < argc; i++)
         if (!strncmp(argv[i], "--type", 6) || !strncmp(argv[i], "--out-type", 10))
             return pfsweep_fixed_main(argc, argv);

@@ -34,6 +34,9 @@ static void slurp_into(const char *path, char *buf, size_t n)
         fclose(f);
 }
 
+/* set: the next runs' standard output is /dev/full (ENOSPC on every write) */
+static int run_to_full;
+
 /* argv[0] is the program's name under the build directory */
 static void run(const char *const *argv, run_result *r)
 {
@@ -44,7 +47,8 @@ static void run(const char *const *argv, run_result *r)
     pid_t pid = fork();
     assert_true(pid >= 0);
     if (pid == 0) {
-        int fo = open(o, O_WRONLY | O_CREAT | O_TRUNC, 0644), fe = open(e, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int fo = open(run_to_full ? "/dev/full" : o, O_WRONLY | O_CREAT | O_TRUNC, 0644),
+            fe = open(e, O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (fo < 0 || fe < 0 || dup2(fo, 1) < 0 || dup2(fe, 2) < 0)
             _exit(127);
         execv(path, (char *const *)argv);
@@ -162,6 +166,35 @@ static void test_one_line_messages(void **st)
         assert_int_equal(r.status, 1);
         assert_int_equal(tu_count_lines(r.err), 1);
     }
+}
+
+/* Standard output on a full disk: the results (pfsweep), --list or --help
+ * were lost and the status said 0; now 1, with one line saying so. */
+static void test_stdout_full(void **st)
+{
+    (void)st;
+    if (access("/dev/full", W_OK) != 0)
+        skip();
+    const char *const a1[] = {"pfsweep", "--func", "log", "--samples", "16", NULL};
+    const char *const a2[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
+                              "--samples", "16", NULL};
+    const char *const a3[] = {"pfsweep", "--help", NULL};
+    char lib[PATH_MAX];
+    tu_prog_path("libpfmath.so", lib, sizeof lib);
+    const char *const a4[] = {"pfbench", "--list", "--lib", lib, "--func", "log", NULL};
+    const char *const a5[] = {"pfbench", "--help", NULL};
+    const char *const a6[] = {"pfmathgen", "--help", NULL};
+    const char *const *a[] = {a1, a2, a3, a4, a5, a6};
+    run_to_full = 1;
+    for (size_t i = 0; i < sizeof a / sizeof a[0]; i++) {
+        run_result r;
+        run(a[i], &r);
+        print_message("%s %s > /dev/full -> %d: %s", a[i][0], a[i][1], r.status, r.err);
+        assert_int_equal(r.status, 1);
+        assert_int_equal(tu_count_lines(r.err), 1);
+        assert_non_null(strstr(r.err, "standard output"));
+    }
+    run_to_full = 0;
 }
 
 /* bench.md and bench.csv as they were before a refused run */
@@ -470,6 +503,7 @@ int main(void)
         cmocka_unit_test(test_pfsweep_numbers),
         cmocka_unit_test(test_pfsweep_names_and_repeats),
         cmocka_unit_test(test_one_line_messages),
+        cmocka_unit_test(test_stdout_full),
         cmocka_unit_test(test_pfbench),
         cmocka_unit_test(test_pfbench_writes),
         cmocka_unit_test(test_pfnoise_demo),

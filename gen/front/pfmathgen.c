@@ -180,6 +180,7 @@ int main(int argc, char **argv)
         pf_say(err);
         return 2;
     }
+    int rc = 0;
     if (rq.help) {
         pf_type t;
         int fixed = fx_noise_is(rq.func);
@@ -187,17 +188,17 @@ int main(int argc, char **argv)
             fixed = 1;
         if (rq.out_type_s && pf_type_parse(rq.out_type_s, &t, NULL, 0) == 0 && !t.is_float)
             fixed = 1;
+        /* no return here: the text, too, is checked as written below */
         if (fixed)
             fputs(fx_usage_text(), stdout);
         else
             printf(usage, pf_spec_func_list());
-        return 0;
-    }
-    int rc;
-    switch (rq.mode) {
-    case PF_MODE_SCENE: rc = pf_scene_run(&rq); break;
-    case PF_MODE_FLOAT: rc = run_float(&rq); break;
-    default: rc = run_fixed(&rq); break;
+    } else {
+        switch (rq.mode) {
+        case PF_MODE_SCENE: rc = pf_scene_run(&rq); break;
+        case PF_MODE_FLOAT: rc = run_float(&rq); break;
+        default: rc = run_fixed(&rq); break;
+        }
     }
     pf_request_free(&rq);
     /* C or JSON on a full disk or a closed pipe is a failure, not success */
