@@ -670,6 +670,43 @@ static void test_scene_entry_file_first(void **st)
     tu_rm_tree(scratch);
 }
 
+/* --plot /dev/full -o a.c: the plot fails (ENOSPC) and the run says 1, and
+ * a.c keeps what it held: it was renamed into place first.  A device is
+ * written before any rename (pf_out_commit_all). */
+static void test_device_fails_first(void **st)
+{
+    (void)st;
+    if (!have_gnuplot() || access("/dev/full", W_OK) != 0) {
+        print_message("  (no gnuplot or /dev/full: skipped)\n");
+        return;
+    }
+    new_scratch();
+    puts_file("a.c", "the user's a.c\n");
+    GEN("--func", "log", "--variant", "fast", "--no-sweep", "--plot", "/dev/full", "-o", "a.c");
+    print_message("  -> %d: %s", R.status, R.err);
+    assert_int_equal(R.status, 1);
+    assert_non_null(strstr(R.err, "/dev/full"));
+    char *m = get("a.c");
+    assert_string_equal(m, "the user's a.c\n");
+    free(m);
+    /* the same through a link in a scene's DIR: nothing renamed there */
+    puts_file("s.scene", cheap_scene);
+    char p[600];
+    snprintf(p, sizeof p, "%s/out", scratch);
+    assert_int_equal(mkdir(p, 0777), 0);
+    puts_file("out/scene.h", "the user's scene.h\n");
+    snprintf(p, sizeof p, "%s/out/report.txt", scratch);
+    assert_int_equal(symlink("/dev/full", p), 0);
+    GEN("--scene", "s.scene", "-o", "out");
+    print_message("  -> %d: %s", R.status, R.err);
+    assert_int_equal(R.status, 1);
+    m = get("out/scene.h");
+    assert_string_equal(m, "the user's scene.h\n");
+    free(m);
+    assert_int_equal(count_c("out"), 0);
+    tu_rm_tree(scratch);
+}
+
 /* -o NAME of 255 bytes (NAME_MAX) is a name "> NAME" writes; the temporary
  * ".NAME.XXXXXX" beside it was 263, so the run failed (exit 1) after the
  * whole fit.  One byte more is refused before it (exit 2). */
@@ -719,6 +756,7 @@ int main(void)
         cmocka_unit_test(test_names_in_comments),
         cmocka_unit_test(test_longest_name),
         cmocka_unit_test(test_scene_entry_file_first),
+        cmocka_unit_test(test_device_fails_first),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

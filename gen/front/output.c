@@ -274,6 +274,19 @@ int pf_out_commit(pf_out_staged *s, char *err, size_t errlen)
     return rc;
 }
 
+int pf_out_commit_all(pf_out_staged *s, int n, char *err, size_t errlen)
+{
+    int rc = 0;
+    /* pass 0: the special files (tmp NULL), pass 1: the renames */
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < n && !rc; i++)
+            if (s[i].target && !s[i].tmp == !pass)
+                rc = pf_out_commit(&s[i], err, errlen);
+    for (int i = 0; i < n; i++)
+        pf_out_abort(&s[i]);
+    return rc;
+}
+
 void pf_out_abort(pf_out_staged *s)
 {
     if (s->tmp)

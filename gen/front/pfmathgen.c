@@ -70,18 +70,16 @@ static const char usage[] =
 static int write_outputs(const pf_request *rq, const char *src, size_t len, const char *svg, size_t svglen)
 {
     char err[600];
-    pf_out_staged c = {0}, p = {0};
+    pf_out_staged st[2] = {{0}, {0}}; /* the C, the plot */
     int rc = 0;
-    if (rq->output && pf_out_stage(rq->output, src, len, &c, err, sizeof err) != 0)
+    if (rq->output && pf_out_stage(rq->output, src, len, &st[0], err, sizeof err) != 0)
         rc = 1;
-    if (!rc && svg && pf_out_stage(rq->plot, svg, svglen, &p, err, sizeof err) != 0)
+    if (!rc && svg && pf_out_stage(rq->plot, svg, svglen, &st[1], err, sizeof err) != 0)
         rc = 1;
-    if (!rc && rq->output && pf_out_commit(&c, err, sizeof err) != 0)
+    if (!rc && pf_out_commit_all(st, 2, err, sizeof err) != 0)
         rc = 1;
-    if (!rc && svg && pf_out_commit(&p, err, sizeof err) != 0)
-        rc = 1;
-    pf_out_abort(&c);
-    pf_out_abort(&p);
+    pf_out_abort(&st[0]);
+    pf_out_abort(&st[1]);
     if (rc)
         pf_say(err);
     return rc;

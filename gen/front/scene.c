@@ -509,9 +509,9 @@ static int write_all(scene *S, int exists)
             rc = 1;
         free(path);
     }
-    for (int i = 0; i < S->nout && !rc; i++)
-        if (pf_out_commit(&st[i], err, sizeof err) != 0)
-            rc = 1;
+    /* the special files (a link to a device) first: pf_out_commit_all */
+    if (!rc && pf_out_commit_all(st, S->nout, err, sizeof err) != 0)
+        rc = 1;
     for (int i = 0; i < S->nout; i++)
         pf_out_abort(&st[i]);
     if (rc) {
