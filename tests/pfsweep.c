@@ -84,7 +84,13 @@ int main(int argc, char **argv)
                 die2("--lib: empty path (without a PATH: --lib alone)", NULL);
             break;
         case 's': src = optarg; break;
-        case 'N': name = optarg; break;
+        case 'N':
+            /* whole, or refused: sym[160] cut it, and the message then
+               named a symbol that was not the one given */
+            if (strlen(optarg) >= 160)
+                die2("--name: a symbol of at most 159 characters, not ", optarg);
+            name = optarg;
+            break;
         case 'a': all = 1; break;
         case 'n':
             if (pfcli_u64(optarg, 0, 1ull << 32, &samples))

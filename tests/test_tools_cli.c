@@ -138,6 +138,12 @@ static void test_pfsweep_names_and_repeats(void **st)
     REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--max-lsb", "0");
     REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--type", "fixed<15,13>");
     REFUSE("pfsweep", "--func", "sin", "--func", "cos", "--type", "fixed<15,12>");
+    /* a --name longer than the symbol buffer was cut (exit 1, "no function"
+       with another name than the one given) */
+    static char longname[200];
+    memset(longname, 'a', sizeof longname - 1);
+    REFUSE("pfsweep", "--func", "log", "--name", longname);
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--name", longname);
 }
 
 /* A newline in a value made the message two lines (pfmathgen's, and
