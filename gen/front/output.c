@@ -82,6 +82,22 @@ static char *check_target(const char *what, const char *path, int *special, char
         snprintf(err, errlen, "%s: empty file name", what);
         return NULL;
     }
+    /* a pipe reached through /proc/self/fd (-o /dev/stdout |
+       less): that link reads "pipe:[N]", no name for resolve to follow
+       (it failed with ENOENT after the fit), but the kernel opens it, so
+       the name given is written in place like any special file */
+    struct stat sp;
+    if (stat(path, &sp) == 0 && S_ISFIFO(sp.st_mode)) {
+        if (access(path, W_OK) != 0) {
+            snprintf(err, errlen, "%s %s: cannot write (%s)", what, path, strerror(errno));
+            return NULL;
+        }
+        *special = 1;
+        char *p = strdup(path);
+        if (!p)
+            snprintf(err, errlen, "out of memory");
+        return p;
+    }
     char e2[PATH_MAX + 64];
     char *r = resolve(path, e2, sizeof e2);
     if (!r) {
