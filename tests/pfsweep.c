@@ -124,6 +124,10 @@ int main(int argc, char **argv)
         die2("--lib and --source exclude each other", NULL);
     if (seen['P'] && !(all && pfref_arity((pf_func)fid) == 2))
         die2("--pairs is for atan2 with --all (see --help)", NULL);
+    /* --all of a one-argument function sweeps every float and draws no
+       sample: --samples and --seed were accepted and had no effect */
+    if (all && pfref_arity((pf_func)fid) == 1 && (seen['n'] || seen['S']))
+        die2("--samples and --seed are for the seeded sample, which --all replaces by every float (see --help)", NULL);
     if (!use_lib && !src)
         use_lib = 1;
     char sym[160];

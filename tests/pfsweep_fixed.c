@@ -135,6 +135,11 @@ int pfsweep_fixed_main(int argc, char **argv)
     if (fid != PF_SIN && fid != PF_COS && fid != PF_EXP && fid != PF_EXP2 && fid != PF_LOG && fid != PF_LOG2 &&
         fid != PF_SQRT)
         die2("no fixed-point function ", func);
+    /* main() came here for an argument starting with --type, which may
+       have been another option's value (--name --type): then no type was
+       given, and in/out were read uninitialized */
+    if (!ts && !os)
+        die2("a fixed-point sweep needs --type (and --out-type); '--type' was another option's value", NULL);
     pf_type in, out;
     if (ts)
         parse("--type", ts, &in);
@@ -144,6 +149,12 @@ int pfsweep_fixed_main(int argc, char **argv)
         in = out;
     if (!os)
         out = in;
+    /* an input of at most 16 bits, or --all, is swept whole: there is no
+       sample, and --samples or --seed were accepted and had no effect */
+    if ((in.storage_bits <= 16 || all) && (seen['n'] || seen['S']))
+        die2(all ? "--samples and --seed are for the seeded sample, which --all replaces by every input"
+                 : "--samples and --seed are for 32-bit inputs: every input of 8 or 16 bits is swept",
+             NULL);
     if (use_lib && src)
         die2("--lib and --source exclude each other", NULL);
     if (!use_lib && !src)

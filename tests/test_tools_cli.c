@@ -34,7 +34,8 @@ static void slurp_into(const char *path, char *buf, size_t n)
         fclose(f);
 }
 
-/* set: the next runs' standard output is /dev/full (ENOSPC on every write) */
+/* set: the next run's standard output is /dev/full (ENOSPC on every
+   write); run() clears it, so a failed test leaves no later run there */
 static int run_to_full;
 
 /* argv[0] is the program's name under the build directory */
@@ -44,10 +45,12 @@ static void run(const char *const *argv, run_result *r)
     tu_prog_path(argv[0], path, sizeof path);
     snprintf(o, sizeof o, "%s/stdout", scratch);
     snprintf(e, sizeof e, "%s/stderr", scratch);
+    int full = run_to_full;
+    run_to_full = 0;
     pid_t pid = fork();
     assert_true(pid >= 0);
     if (pid == 0) {
-        int fo = open(run_to_full ? "/dev/full" : o, O_WRONLY | O_CREAT | O_TRUNC, 0644),
+        int fo = open(full ? "/dev/full" : o, O_WRONLY | O_CREAT | O_TRUNC, 0644),
             fe = open(e, O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (fo < 0 || fe < 0 || dup2(fo, 1) < 0 || dup2(fe, 2) < 0)
             _exit(127);
@@ -138,6 +141,16 @@ static void test_pfsweep_names_and_repeats(void **st)
     REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--max-lsb", "0");
     REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--type", "fixed<15,13>");
     REFUSE("pfsweep", "--func", "sin", "--func", "cos", "--type", "fixed<15,12>");
+    /* options that had no effect: --samples and --seed where no sample is
+       drawn (--all of a one-argument function; a 16-bit fixed input) */
+    REFUSE("pfsweep", "--func", "log", "--all", "--samples", "5");
+    REFUSE("pfsweep", "--func", "log", "--all", "--seed", "3");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>", "--samples", "5");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>", "--seed", "3");
+    /* "--type" as another option's value sent the run to the fixed-point
+       sweep with no type (read uninitialized) */
+    REFUSE("pfsweep", "--func", "sin", "--name", "--type");
+    REFUSE("pfsweep", "--func", "sin", "--source", "--type");
     /* a --name longer than the symbol buffer was cut (exit 1, "no function"
        with another name than the one given) */
     static char longname[200];
@@ -183,7 +196,7 @@ static void test_stdout_full(void **st)
         skip();
     const char *const a1[] = {"pfsweep", "--func", "log", "--samples", "16", NULL};
     const char *const a2[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
-                              "--samples", "16", NULL};
+                              NULL};
     const char *const a3[] = {"pfsweep", "--help", NULL};
     char lib[PATH_MAX];
     tu_prog_path("libpfmath.so", lib, sizeof lib);
@@ -191,16 +204,15 @@ static void test_stdout_full(void **st)
     const char *const a5[] = {"pfbench", "--help", NULL};
     const char *const a6[] = {"pfmathgen", "--help", NULL};
     const char *const *a[] = {a1, a2, a3, a4, a5, a6};
-    run_to_full = 1;
     for (size_t i = 0; i < sizeof a / sizeof a[0]; i++) {
         run_result r;
+        run_to_full = 1;
         run(a[i], &r);
         print_message("%s %s > /dev/full -> %d: %s", a[i][0], a[i][1], r.status, r.err);
         assert_int_equal(r.status, 1);
         assert_int_equal(tu_count_lines(r.err), 1);
         assert_non_null(strstr(r.err, "standard output"));
     }
-    run_to_full = 0;
 }
 
 /* bench.md and bench.csv as they were before a refused run */
@@ -423,7 +435,7 @@ static void test_lib_paths(void **st)
     run_result r;
     /* "--lib PATH" as the fixed-point help writes it */
     const char *const a[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
-                             "--lib", lib, "--samples", "100", NULL};
+                             "--lib", lib, NULL}; /* (--samples: no sample for 16 bits, refused) */
     run(a, &r);
     print_message("pfsweep ... --lib PATH -> %d: %s", r.status, r.err);
     assert_int_equal(r.status, 0);
@@ -432,7 +444,7 @@ static void test_lib_paths(void **st)
     assert_non_null(getcwd(cwd, sizeof cwd));
     assert_int_equal(chdir(dir), 0);
     const char *const b[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
-                             "--lib=libpfmath.so", "--samples", "100", NULL};
+                             "--lib=libpfmath.so", NULL};
     run(b, &r);
     assert_int_equal(chdir(cwd), 0);
     print_message("pfsweep ... --lib=libpfmath.so (in its directory) -> %d: %s", r.status, r.err);
