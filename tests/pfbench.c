@@ -430,6 +430,10 @@ int main(int argc, char **argv)
     }
     if (optind < argc)
         die2("unexpected argument ", argv[optind]);
+    /* --list times and writes nothing: these were accepted and ignored */
+    for (const char *c = "ornSm"; list && *c; c++)
+        if (seen[(unsigned char)*c])
+            die2("--list takes only --lib, --func and --ladder, not --", pfcli_name(opts, *c));
     int nd;
     const pfb_domain *doms = pfb_domains(&nd);
     if (only) {
@@ -486,6 +490,8 @@ int main(int argc, char **argv)
     if (list) {
         for (int i = 0; i < nd; i++) {
             const pfb_domain *d = &doms[i];
+            if (!selected(only, pfref_name(d->f)))
+                continue; /* --list --func log listed every function */
             pfb_cand c[PFB_MAX_CANDS];
             int n = 0;
             pfb_ours(d->f, c, &n);

@@ -215,6 +215,29 @@ static void test_stdout_full(void **st)
     }
 }
 
+/* pfbench --list --func log listed every function; --out, --reps,
+ * --samples, --seed, --ms with --list were accepted and did nothing */
+static void test_pfbench_list(void **st)
+{
+    (void)st;
+    char lib[PATH_MAX];
+    tu_prog_path("libpfmath.so", lib, sizeof lib);
+    const char *const a[] = {"pfbench", "--list", "--lib", lib, "--func", "log,exp", NULL};
+    run_result r;
+    run(a, &r);
+    print_message("pfbench --list --func log,exp -> %d:\n%s", r.status, r.out);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "log "));
+    assert_non_null(strstr(r.out, "exp "));
+    assert_null(strstr(r.out, "sin "));
+    assert_null(strstr(r.out, "log2 "));
+    REFUSE("pfbench", "--list", "--lib", lib, "--out", scratch);
+    REFUSE("pfbench", "--list", "--lib", lib, "--reps", "11");
+    REFUSE("pfbench", "--list", "--lib", lib, "--samples", "65536");
+    REFUSE("pfbench", "--list", "--lib", lib, "--seed", "1");
+    REFUSE("pfbench", "--list", "--lib", lib, "--ms", "1");
+}
+
 /* bench.md and bench.csv as they were before a refused run */
 static void check_outputs_kept(const char *dir)
 {
@@ -522,6 +545,7 @@ int main(void)
         cmocka_unit_test(test_pfsweep_names_and_repeats),
         cmocka_unit_test(test_one_line_messages),
         cmocka_unit_test(test_stdout_full),
+        cmocka_unit_test(test_pfbench_list),
         cmocka_unit_test(test_pfbench),
         cmocka_unit_test(test_pfbench_writes),
         cmocka_unit_test(test_pfnoise_demo),
