@@ -105,7 +105,10 @@ static char *check_target(const char *what, const char *path, int *special, char
         return NULL;
     }
     struct stat sb;
+    uid_t owner = (uid_t)-1; /* an existing regular file's owner */
     if (stat(r, &sb) == 0) {
+        if (S_ISREG(sb.st_mode))
+            owner = sb.st_uid;
         if (S_ISDIR(sb.st_mode)) {
             snprintf(err, errlen, "%s %s: is a directory (give a file name)", what, path);
             free(r);
@@ -145,6 +148,12 @@ static char *check_target(const char *what, const char *path, int *special, char
         why = "is not a directory";
     else if (access(d, W_OK | X_OK) != 0)
         why = "is not writable";
+    /* another user's file in a sticky directory (/tmp) may be written but
+       not renamed over (EPERM, after the fit): refused now, as the rename
+       is the only way this file is replaced (root may, as CAP_FOWNER) */
+    else if (owner != (uid_t)-1 && (sb.st_mode & S_ISVTX) && geteuid() != 0 && owner != geteuid() &&
+             sb.st_uid != geteuid())
+        why = "is sticky and the file is another user's: it cannot be replaced (remove it, or give another name)";
     if (why) {
         snprintf(err, errlen, "%s %s: the directory %s %s", what, path, d, why);
         free(d);
