@@ -574,6 +574,22 @@ static void test_read_only_target(void **st)
     tu_rm_tree(scratch);
 }
 
+/* --json -o /dev/stdout > f: the JSON went to f, then the rename replaced
+ * f with the C, exit 0, the JSON gone; -o f 2> f the same with the report.
+ * (tu_execvp_in's standard output and error are regular files.) */
+static void test_output_is_std_stream(void **st)
+{
+    (void)st;
+    new_scratch();
+    GEN("--func", "log", "--variant", "fast", "--no-sweep", "--json", "-o", "/dev/stdout");
+    expect2();
+    assert_non_null(strstr(R.err, "standard output"));
+    GEN("--func", "log", "--variant", "fast", "--no-sweep", "-o", "/dev/stderr");
+    expect2();
+    assert_non_null(strstr(R.err, "standard error"));
+    tu_rm_tree(scratch);
+}
+
 /* Another user's writable file in a sticky directory (as in /tmp): the
  * check passed it, and the rename failed with EPERM after the fit (exit
  * 1).  Now refused before it, the file as it was.  (Root only: the file
@@ -828,6 +844,7 @@ int main(void)
         cmocka_unit_test(test_device_fails_first),
         cmocka_unit_test(test_dev_stdout_pipe),
         cmocka_unit_test(test_sticky_dir),
+        cmocka_unit_test(test_output_is_std_stream),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

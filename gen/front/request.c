@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 
 /* The best float-coefficient fits here reach about 2^-40 (exp at order 30:
  * 1.15e-12 = 2^-39.7; log: Sollya's fpminimax at order 30 gives 6.5e-12).
@@ -323,6 +324,15 @@ static int plot_name_ok(const char *path)
     return !dot || dot == base || !strcasecmp(dot, ".svg");
 }
 
+/* 1 when path is the regular file open as descriptor fd: a rename over it
+   (output.h) leaves what was written to fd in the replaced file, lost */
+static int is_fd_file(const char *path, int fd)
+{
+    struct stat a, b;
+    return fstat(fd, &a) == 0 && S_ISREG(a.st_mode) && stat(path, &b) == 0 && a.st_dev == b.st_dev &&
+           a.st_ino == b.st_ino;
+}
+
 /* -o and --plot: checked before the fit (output.h).  "-o -" is standard
    output, as no -o is (a file named '-' was written before 2026-12-07). */
 static int check_outputs(pf_request *rq, char *err, size_t errlen)
@@ -342,6 +352,17 @@ static int check_outputs(pf_request *rq, char *err, size_t errlen)
         return 2;
     if (rq->output && rq->plot && pf_out_same(rq->output, rq->plot))
         return bad(err, errlen, "-o and --plot name the same file");
+    /* "--json -o /dev/stdout > f" (or "-o f 2> f"): the JSON (the report)
+       went to the file that the rename then replaced, exit 0 */
+    const char *names[2] = {rq->output, rq->plot}, *opt[2] = {"-o", "--plot"};
+    for (int i = 0; i < 2; i++) {
+        if (names[i] && rq->json && is_fd_file(names[i], 1))
+            return bad(err, errlen, "%s %.200s is the file standard output goes to, where --json writes", opt[i],
+                       names[i]);
+        if (names[i] && is_fd_file(names[i], 2))
+            return bad(err, errlen, "%s %.200s is the file standard error goes to, where the report goes", opt[i],
+                       names[i]);
+    }
     return 0;
 }
 
