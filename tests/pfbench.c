@@ -65,7 +65,7 @@ static uint32_t asuint(float f) { uint32_t u; memcpy(&u, &f, 4); return u; }
 
 static void die2(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pfbench: %s%s\n", msg, arg ? arg : "");
+    pfcli_line("pfbench", msg, arg); /* one line, whatever arg holds */
     exit(2);
 }
 
@@ -372,6 +372,7 @@ static void bench_fixed(FILE *md, FILE *csv, int reps, double target, uint64_t s
 
 int main(int argc, char **argv)
 {
+    pfcli_check_stdout("pfbench"); /* --list and --help on a full disk: exit 1 */
     static const struct option opts[] = {
         {"lib", required_argument, 0, 'l'},     {"out", required_argument, 0, 'o'},
         {"func", required_argument, 0, 'f'},    {"reps", required_argument, 0, 'r'},
@@ -429,6 +430,10 @@ int main(int argc, char **argv)
     }
     if (optind < argc)
         die2("unexpected argument ", argv[optind]);
+    /* --list times and writes nothing: these were accepted and ignored */
+    for (const char *c = "ornSm"; list && *c; c++)
+        if (seen[(unsigned char)*c])
+            die2("--list takes only --lib, --func and --ladder, not --", pfcli_name(opts, *c));
     int nd;
     const pfb_domain *doms = pfb_domains(&nd);
     if (only) {
@@ -474,17 +479,19 @@ int main(int argc, char **argv)
     if (!list && (stat(outdir, &osb) != 0 || !S_ISDIR(osb.st_mode) || access(outdir, W_OK | X_OK) != 0))
         die2("--out is not a writable directory: ", outdir);
     if (pfb_ours_open(lib, err, sizeof err)) {
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     if (ladder && pfb_ladder_open(ladder, err, sizeof err)) {
-        fprintf(stderr, "pfbench: --ladder: %s\n", err);
+        pfcli_line("pfbench", "--ladder: ", err);
         return 1;
     }
 
     if (list) {
         for (int i = 0; i < nd; i++) {
             const pfb_domain *d = &doms[i];
+            if (!selected(only, pfref_name(d->f)))
+                continue; /* --list --func log listed every function */
             pfb_cand c[PFB_MAX_CANDS];
             int n = 0;
             pfb_ours(d->f, c, &n);
@@ -504,12 +511,12 @@ int main(int argc, char **argv)
     /* both names checked before the run; nothing is written before its end */
     pfcli_out omd, ocsv;
     if (pfcli_out_open(&omd, mdpath, err, sizeof err) != 0) {
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     if (pfcli_out_open(&ocsv, csvpath, err, sizeof err) != 0) {
         pfcli_out_abort(&omd);
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     FILE *md = omd.f, *csv = ocsv.f;
@@ -807,11 +814,11 @@ int main(int argc, char **argv)
     fprintf(md, "\nTotal bench time %.0f s.\n", wall() - t_start);
     if (pfcli_out_commit(&omd, err, sizeof err) != 0) {
         pfcli_out_abort(&ocsv);
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     if (pfcli_out_commit(&ocsv, err, sizeof err) != 0) {
-        fprintf(stderr, "pfbench: %s\n", err);
+        pfcli_line("pfbench", err, NULL);
         return 1;
     }
     fprintf(stderr, "pfbench: wrote %s and %s (%.0f s); %d goals met, %d missed\n", mdpath, csvpath,

@@ -65,6 +65,39 @@ static inline int pfcli_lib_path(const char *s, char *out, size_t n)
     return k < 0 || (size_t)k >= n ? -1 : 0;
 }
 
+/* one line on stderr: "PROG: AB", control characters as '?' (a newline in a
+   user's file name or option value does not make a second line) */
+static inline void pfcli_line(const char *prog, const char *a, const char *b)
+{
+    fprintf(stderr, "%s: ", prog);
+    for (const char *s = a; s; s = s == a ? b : NULL)
+        for (const char *p = s; *p; p++)
+            fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, stderr);
+    fputc('\n', stderr);
+}
+
+/* Standard output that could not be taken (> /dev/full, a closed pipe with
+   SIGPIPE ignored) is a failure, not a run that said 0 with its results
+   lost: registered at the start of main, this flushes it at exit and ends
+   with status 1 and one line when that fails, whatever main returned. */
+static inline const char **pfcli_stdout_prog(void)
+{
+    static const char *prog;
+    return &prog;
+}
+static inline void pfcli_stdout_at_exit(void)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        pfcli_line(*pfcli_stdout_prog(), "cannot write the standard output", NULL);
+        _exit(1);
+    }
+}
+static inline void pfcli_check_stdout(const char *prog)
+{
+    *pfcli_stdout_prog() = prog;
+    atexit(pfcli_stdout_at_exit);
+}
+
 /* one line on stderr: "PROG: MSG'ARG'", control characters of ARG as '?'
    (a user's newline does not make a second line), then exit 2 */
 static inline void pfcli_refuse(const char *prog, const char *msg, const char *arg)

@@ -35,7 +35,7 @@ static const char usage[] =
 
 static void die2(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pfsweep: %s%s\n", msg, arg ? arg : "");
+    pfcli_line("pfsweep", msg, arg); /* one line, whatever arg holds */
     exit(2);
 }
 
@@ -44,6 +44,7 @@ int pfsweep_pairs(pf_sweep_stats *s, pf_func f, pf_fn2 fn, uint64_t seed, uint64
 
 int main(int argc, char **argv)
 {
+    pfcli_check_stdout("pfsweep"); /* the results are its output: > /dev/full is exit 1 */
     for (int i = 1; i < argc; i++)
         if (!strncmp(argv[i], "--type", 6) || !strncmp(argv[i], "--out-type", 10))
             return pfsweep_fixed_main(argc, argv);
@@ -83,7 +84,13 @@ int main(int argc, char **argv)
                 die2("--lib: empty path (without a PATH: --lib alone)", NULL);
             break;
         case 's': src = optarg; break;
-        case 'N': name = optarg; break;
+        case 'N':
+            /* whole, or refused: sym[160] cut it, and the message then
+               named a symbol that was not the one given */
+            if (strlen(optarg) >= 160)
+                die2("--name: a symbol of at most 159 characters, not ", optarg);
+            name = optarg;
+            break;
         case 'a': all = 1; break;
         case 'n':
             if (pfcli_u64(optarg, 0, 1ull << 32, &samples))
@@ -117,6 +124,10 @@ int main(int argc, char **argv)
         die2("--lib and --source exclude each other", NULL);
     if (seen['P'] && !(all && pfref_arity((pf_func)fid) == 2))
         die2("--pairs is for atan2 with --all (see --help)", NULL);
+    /* --all of a one-argument function sweeps every float and draws no
+       sample: --samples and --seed were accepted and had no effect */
+    if (all && pfref_arity((pf_func)fid) == 1 && (seen['n'] || seen['S']))
+        die2("--samples and --seed are for the seeded sample, which --all replaces by every float (see --help)", NULL);
     if (!use_lib && !src)
         use_lib = 1;
     char sym[160];
@@ -137,19 +148,21 @@ int main(int argc, char **argv)
         }
         h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
         if (!h) {
-            fprintf(stderr, "pfsweep: %s\n", dlerror());
+            pfcli_line("pfsweep", dlerror(), NULL);
             return 1;
         }
     } else {
         h = pf_compile_load_file(src, err, sizeof err);
         if (!h) {
-            fprintf(stderr, "pfsweep: %s\n", err);
+            pfcli_line("pfsweep", err, NULL);
             return 1;
         }
     }
     void *p = dlsym(h, sym);
     if (!p) {
-        fprintf(stderr, "pfsweep: no function %s in %s\n", sym, src ? src : lib ? lib : "libpfmath.so");
+        char m[PATH_MAX + 256];
+        snprintf(m, sizeof m, "no function %s in %s", sym, src ? src : lib ? lib : "libpfmath.so");
+        pfcli_line("pfsweep", m, NULL);
         return 1;
     }
     pf_fn1 f1 = NULL;

@@ -42,7 +42,7 @@ static const char usage[] =
 
 static void die2(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pfsweep: %s%s\n", msg, arg ? arg : "");
+    pfcli_line("pfsweep", msg, arg); /* one line, whatever arg holds */
     exit(2);
 }
 
@@ -50,12 +50,14 @@ static void parse(const char *what, const char *s, pf_type *t)
 {
     char e[200];
     if (pf_type_parse(s, t, e, sizeof e) != 0) {
-        fprintf(stderr, "pfsweep: bad %s: %s\n", what, e);
-        exit(2);
+        char m[300];
+        snprintf(m, sizeof m, "bad %s: %s", what, e);
+        die2(m, NULL);
     }
     if (t->is_float || t->storage_bits > 32) {
-        fprintf(stderr, "pfsweep: %s %s: expected a fixed-point type of at most 32 bits\n", what, s);
-        exit(2);
+        char m[400];
+        snprintf(m, sizeof m, "%s %.200s: expected a fixed-point type of at most 32 bits", what, s);
+        die2(m, NULL);
     }
 }
 
@@ -98,7 +100,13 @@ int pfsweep_fixed_main(int argc, char **argv)
                 die2("--lib: empty path (without a PATH: --lib alone)", NULL);
             break;
         case 's': src = optarg; break;
-        case 'N': name = optarg; break;
+        case 'N':
+            /* whole, or refused: sym[160] cut it, and the message then
+               named a symbol that was not the one given */
+            if (strlen(optarg) >= 160)
+                die2("--name: a symbol of at most 159 characters, not ", optarg);
+            name = optarg;
+            break;
         case 'a': all = 1; break;
         case 'n':
             if (pfcli_u64(optarg, 0, 1ull << 32, &samples))
@@ -127,6 +135,11 @@ int pfsweep_fixed_main(int argc, char **argv)
     if (fid != PF_SIN && fid != PF_COS && fid != PF_EXP && fid != PF_EXP2 && fid != PF_LOG && fid != PF_LOG2 &&
         fid != PF_SQRT)
         die2("no fixed-point function ", func);
+    /* main() came here for an argument starting with --type, which may
+       have been another option's value (--name --type): then no type was
+       given, and in/out were read uninitialized */
+    if (!ts && !os)
+        die2("a fixed-point sweep needs --type (and --out-type); '--type' was another option's value", NULL);
     pf_type in, out;
     if (ts)
         parse("--type", ts, &in);
@@ -136,6 +149,12 @@ int pfsweep_fixed_main(int argc, char **argv)
         in = out;
     if (!os)
         out = in;
+    /* an input of at most 16 bits, or --all, is swept whole: there is no
+       sample, and --samples or --seed were accepted and had no effect */
+    if ((in.storage_bits <= 16 || all) && (seen['n'] || seen['S']))
+        die2(all ? "--samples and --seed are for the seeded sample, which --all replaces by every input"
+                 : "--samples and --seed are for 32-bit inputs: every input of 8 or 16 bits is swept",
+             NULL);
     if (use_lib && src)
         die2("--lib and --source exclude each other", NULL);
     if (!use_lib && !src)
@@ -159,19 +178,21 @@ int pfsweep_fixed_main(int argc, char **argv)
         }
         h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
         if (!h) {
-            fprintf(stderr, "pfsweep: %s\n", dlerror());
+            pfcli_line("pfsweep", dlerror(), NULL);
             return 1;
         }
     } else {
         h = pf_compile_load_file(src, err, sizeof err);
         if (!h) {
-            fprintf(stderr, "pfsweep: %s\n", err);
+            pfcli_line("pfsweep", err, NULL);
             return 1;
         }
     }
     pf_fx_fn fn = {dlsym(h, sym), dlsym(h, asym), pf_type_to_fmt(&in), pf_type_to_fmt(&out)};
     if (!fn.scalar) {
-        fprintf(stderr, "pfsweep: no function %s in %s\n", sym, src ? src : lib ? lib : "libpfmath.so");
+        char m[PATH_MAX + 256];
+        snprintf(m, sizeof m, "no function %s in %s", sym, src ? src : lib ? lib : "libpfmath.so");
+        pfcli_line("pfsweep", m, NULL);
         return 1;
     }
     char ti[64], to[64], title[512];

@@ -121,6 +121,22 @@ static void test_names(void **st)
     expect_usage_error("--func", "sin", "--type", "fixed<15,12>", "--name", "float");
     expect_usage_error("--func", "noise3", "--type", "fixed<15,12>", "--name", "char");
     expect_usage_error("--func", "log", "--name", "caf\xc3\xa9");
+    /* names of the headers the emitted C includes, or reserved for them:
+       logf compiled and replaced libm's; memcpy failed after the fit */
+    const char *libc[] = {"logf", "sqrtf", "log", "expl", "fmaf", "memcpy", "strlen", "NAN", "INT64_C",
+                          "uint8_t", "size_t", "_x"};
+    for (size_t i = 0; i < sizeof libc / sizeof libc[0]; i++)
+        expect_usage_error("--func", "log", "--variant", "fast", "--no-sweep", "--name", libc[i]);
+    expect_usage_error("--func", "sqrt", "--type", "ufixed<8,8>", "--no-sweep", "--name", "sqrtf");
+    /* noise's NAME1 .. NAME4: expm1 */
+    expect_usage_error("--func", "noise", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>", "--no-sweep",
+                       "--name", "expm");
+    /* names that only start or end like them are names */
+    const char *fine[] = {"logfx", "my_logf", "expf_fast", "str_2", "uint8", "INT64"};
+    for (size_t i = 0; i < sizeof fine / sizeof fine[0]; i++) {
+        tu_runl(&R, "pfmathgen", "--func", "log", "--variant", "fast", "--no-sweep", "--name", fine[i], NULL);
+        assert_int_equal(R.status, 0);
+    }
     char longname[160];
     memset(longname, 'a', 128);
     longname[128] = 0;

@@ -34,6 +34,10 @@ static void slurp_into(const char *path, char *buf, size_t n)
         fclose(f);
 }
 
+/* set: the next run's standard output is /dev/full (ENOSPC on every
+   write); run() clears it, so a failed test leaves no later run there */
+static int run_to_full;
+
 /* argv[0] is the program's name under the build directory */
 static void run(const char *const *argv, run_result *r)
 {
@@ -41,10 +45,13 @@ static void run(const char *const *argv, run_result *r)
     tu_prog_path(argv[0], path, sizeof path);
     snprintf(o, sizeof o, "%s/stdout", scratch);
     snprintf(e, sizeof e, "%s/stderr", scratch);
+    int full = run_to_full;
+    run_to_full = 0;
     pid_t pid = fork();
     assert_true(pid >= 0);
     if (pid == 0) {
-        int fo = open(o, O_WRONLY | O_CREAT | O_TRUNC, 0644), fe = open(e, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int fo = open(full ? "/dev/full" : o, O_WRONLY | O_CREAT | O_TRUNC, 0644),
+            fe = open(e, O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (fo < 0 || fe < 0 || dup2(fo, 1) < 0 || dup2(fe, 2) < 0)
             _exit(127);
         execv(path, (char *const *)argv);
@@ -134,6 +141,101 @@ static void test_pfsweep_names_and_repeats(void **st)
     REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--max-lsb", "0");
     REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--type", "fixed<15,13>");
     REFUSE("pfsweep", "--func", "sin", "--func", "cos", "--type", "fixed<15,12>");
+    /* options that had no effect: --samples and --seed where no sample is
+       drawn (--all of a one-argument function; a 16-bit fixed input) */
+    REFUSE("pfsweep", "--func", "log", "--all", "--samples", "5");
+    REFUSE("pfsweep", "--func", "log", "--all", "--seed", "3");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>", "--samples", "5");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>", "--seed", "3");
+    /* "--type" as another option's value sent the run to the fixed-point
+       sweep with no type (read uninitialized) */
+    REFUSE("pfsweep", "--func", "sin", "--name", "--type");
+    REFUSE("pfsweep", "--func", "sin", "--source", "--type");
+    /* a --name longer than the symbol buffer was cut (exit 1, "no function"
+       with another name than the one given) */
+    static char longname[200];
+    memset(longname, 'a', sizeof longname - 1);
+    REFUSE("pfsweep", "--func", "log", "--name", longname);
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--name", longname);
+}
+
+/* A newline in a value made the message two lines (pfmathgen's, and
+ * pfcli_refuse's, print control characters as '?'); the load failures
+ * (exit 1) that name the user's file too. */
+static void test_one_line_messages(void **st)
+{
+    (void)st;
+    REFUSE("pfsweep", "--func", "no\nsuch");
+    REFUSE("pfsweep", "--func", "log", "--variant", "a\nb");
+    REFUSE("pfsweep", "--func", "log", "--seed", "1\n");
+    REFUSE("pfsweep", "--func", "log", "--bo\ngus");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,\n>");
+    REFUSE("pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<40,\n1>");
+    REFUSE("pfsweep", "--func", "no\nsuch", "--type", "fixed<15,12>");
+    REFUSE("pfbench", "--func", "no\nsuch");
+    REFUSE("pfbench", "--out", "/nonexistent\n/x");
+    const char *const l1[] = {"pfsweep", "--func", "log", "--lib", "/nonexistent\nx.so", NULL};
+    const char *const l2[] = {"pfsweep", "--func", "log", "--source", "/nonexistent\nx.c", NULL};
+    const char *const l3[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--lib", "/nonexistent\nx.so", NULL};
+    const char *const *l[] = {l1, l2, l3};
+    for (size_t i = 0; i < sizeof l / sizeof l[0]; i++) {
+        run_result r;
+        run(l[i], &r);
+        print_message("%s -> %d: %s", l[i][4], r.status, r.err);
+        assert_int_equal(r.status, 1);
+        assert_int_equal(tu_count_lines(r.err), 1);
+    }
+}
+
+/* Standard output on a full disk: the results (pfsweep), --list or --help
+ * were lost and the status said 0; now 1, with one line saying so. */
+static void test_stdout_full(void **st)
+{
+    (void)st;
+    if (access("/dev/full", W_OK) != 0)
+        skip();
+    const char *const a1[] = {"pfsweep", "--func", "log", "--samples", "16", NULL};
+    const char *const a2[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
+                              NULL};
+    const char *const a3[] = {"pfsweep", "--help", NULL};
+    char lib[PATH_MAX];
+    tu_prog_path("libpfmath.so", lib, sizeof lib);
+    const char *const a4[] = {"pfbench", "--list", "--lib", lib, "--func", "log", NULL};
+    const char *const a5[] = {"pfbench", "--help", NULL};
+    const char *const a6[] = {"pfmathgen", "--help", NULL};
+    const char *const *a[] = {a1, a2, a3, a4, a5, a6};
+    for (size_t i = 0; i < sizeof a / sizeof a[0]; i++) {
+        run_result r;
+        run_to_full = 1;
+        run(a[i], &r);
+        print_message("%s %s > /dev/full -> %d: %s", a[i][0], a[i][1], r.status, r.err);
+        assert_int_equal(r.status, 1);
+        assert_int_equal(tu_count_lines(r.err), 1);
+        assert_non_null(strstr(r.err, "standard output"));
+    }
+}
+
+/* pfbench --list --func log listed every function; --out, --reps,
+ * --samples, --seed, --ms with --list were accepted and did nothing */
+static void test_pfbench_list(void **st)
+{
+    (void)st;
+    char lib[PATH_MAX];
+    tu_prog_path("libpfmath.so", lib, sizeof lib);
+    const char *const a[] = {"pfbench", "--list", "--lib", lib, "--func", "log,exp", NULL};
+    run_result r;
+    run(a, &r);
+    print_message("pfbench --list --func log,exp -> %d:\n%s", r.status, r.out);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "log "));
+    assert_non_null(strstr(r.out, "exp "));
+    assert_null(strstr(r.out, "sin "));
+    assert_null(strstr(r.out, "log2 "));
+    REFUSE("pfbench", "--list", "--lib", lib, "--out", scratch);
+    REFUSE("pfbench", "--list", "--lib", lib, "--reps", "11");
+    REFUSE("pfbench", "--list", "--lib", lib, "--samples", "65536");
+    REFUSE("pfbench", "--list", "--lib", lib, "--seed", "1");
+    REFUSE("pfbench", "--list", "--lib", lib, "--ms", "1");
 }
 
 /* bench.md and bench.csv as they were before a refused run */
@@ -356,7 +458,7 @@ static void test_lib_paths(void **st)
     run_result r;
     /* "--lib PATH" as the fixed-point help writes it */
     const char *const a[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
-                             "--lib", lib, "--samples", "100", NULL};
+                             "--lib", lib, NULL}; /* (--samples: no sample for 16 bits, refused) */
     run(a, &r);
     print_message("pfsweep ... --lib PATH -> %d: %s", r.status, r.err);
     assert_int_equal(r.status, 0);
@@ -365,7 +467,7 @@ static void test_lib_paths(void **st)
     assert_non_null(getcwd(cwd, sizeof cwd));
     assert_int_equal(chdir(dir), 0);
     const char *const b[] = {"pfsweep", "--func", "sin", "--type", "fixed<15,12>", "--out-type", "fixed<15,14>",
-                             "--lib=libpfmath.so", "--samples", "100", NULL};
+                             "--lib=libpfmath.so", NULL};
     run(b, &r);
     assert_int_equal(chdir(cwd), 0);
     print_message("pfsweep ... --lib=libpfmath.so (in its directory) -> %d: %s", r.status, r.err);
@@ -441,6 +543,9 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pfsweep_numbers),
         cmocka_unit_test(test_pfsweep_names_and_repeats),
+        cmocka_unit_test(test_one_line_messages),
+        cmocka_unit_test(test_stdout_full),
+        cmocka_unit_test(test_pfbench_list),
         cmocka_unit_test(test_pfbench),
         cmocka_unit_test(test_pfbench_writes),
         cmocka_unit_test(test_pfnoise_demo),

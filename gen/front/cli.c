@@ -18,7 +18,14 @@ int pf_cli_is_identifier(const char *s)
 /* The command line as a shell would re-run it: words of [A-Za-z0-9-_./=,:+]
  * as they are, others in single quotes (a quote as '\'').  It is recorded in
  * C block comments, so a "*" followed by "/" is written *''/ (the same word
- * for a shell, and no end of comment). */
+ * for a shell, and no end of comment).  Lines are spliced before comments
+ * end (C17 5.1.1.2 phase 2; the trigraph ??/ is a backslash in phase 1
+ * under -std=c17), so "*", a backslash, a newline and "/" in a file name
+ * ended the comment as well, and the rest of the name was compiled as code.
+ * So a "*" or "/" followed by another of "/", "*" or a backslash gets the
+ * '' too ("/" "*" in a comment is -Wcomment's warning, an error under
+ * -Werror), and so does "?" "?": no trigraph at all (-Wtrigraphs warns of
+ * a ??/ before a newline even in a comment). */
 char *pf_cli_command_line(int argc, char **argv)
 {
     size_t cap = 16;
@@ -42,8 +49,9 @@ char *pf_cli_command_line(int argc, char **argv)
         for (const char *p = a; *p; p++) {
             if (*p == '\'')
                 q += strlen(strcpy(q, "'\\''"));
-            else if (p[0] == '*' && p[1] == '/')
-                q += strlen(strcpy(q, "*''"));
+            else if (((p[0] == '*' || p[0] == '/') && p[1] && p[1] != p[0] && strchr("/*\\", p[1])) ||
+                     (p[0] == '?' && p[1] == '?'))
+                q += strlen(strcpy(q, p[0] == '*' ? "*''" : p[0] == '/' ? "/''" : "?''"));
             else
                 *q++ = *p;
         }

@@ -82,6 +82,22 @@ static char *check_target(const char *what, const char *path, int *special, char
         snprintf(err, errlen, "%s: empty file name", what);
         return NULL;
     }
+    /* a pipe reached through /proc/self/fd (-o /dev/stdout |
+       less): that link reads "pipe:[N]", no name for resolve to follow
+       (it failed with ENOENT after the fit), but the kernel opens it, so
+       the name given is written in place like any special file */
+    struct stat sp;
+    if (stat(path, &sp) == 0 && S_ISFIFO(sp.st_mode)) {
+        if (access(path, W_OK) != 0) {
+            snprintf(err, errlen, "%s %s: cannot write (%s)", what, path, strerror(errno));
+            return NULL;
+        }
+        *special = 1;
+        char *p = strdup(path);
+        if (!p)
+            snprintf(err, errlen, "out of memory");
+        return p;
+    }
     char e2[PATH_MAX + 64];
     char *r = resolve(path, e2, sizeof e2);
     if (!r) {
@@ -89,7 +105,10 @@ static char *check_target(const char *what, const char *path, int *special, char
         return NULL;
     }
     struct stat sb;
+    uid_t owner = (uid_t)-1; /* an existing regular file's owner */
     if (stat(r, &sb) == 0) {
+        if (S_ISREG(sb.st_mode))
+            owner = sb.st_uid;
         if (S_ISDIR(sb.st_mode)) {
             snprintf(err, errlen, "%s %s: is a directory (give a file name)", what, path);
             free(r);
@@ -129,6 +148,12 @@ static char *check_target(const char *what, const char *path, int *special, char
         why = "is not a directory";
     else if (access(d, W_OK | X_OK) != 0)
         why = "is not writable";
+    /* another user's file in a sticky directory (/tmp) may be written but
+       not renamed over (EPERM, after the fit): refused now, as the rename
+       is the only way this file is replaced (root may, as CAP_FOWNER) */
+    else if (owner != (uid_t)-1 && (sb.st_mode & S_ISVTX) && geteuid() != 0 && owner != geteuid() &&
+             sb.st_uid != geteuid())
+        why = "is sticky and the file is another user's: it cannot be replaced (remove it, or give another name)";
     if (why) {
         snprintf(err, errlen, "%s %s: the directory %s %s", what, path, d, why);
         free(d);
@@ -205,10 +230,14 @@ int pf_out_stage(const char *path, const char *data, size_t n, pf_out_staged *s,
     s->n = n;
     if (special)
         return 0;
-    /* ".NAME.XXXXXX" beside the target: the same file system, so rename is atomic */
+    /* ".NAME.XXXXXX" beside the target: the same file system, so rename is
+       atomic.  NAME is the target's name cut to 64 bytes: a name of up to
+       NAME_MAX bytes is a good target, but 8 more made the temporary's
+       ENAMETOOLONG, after the whole fit (pf_out_check had passed it). */
     char *d = pf_out_dirname(r);
     const char *base = strrchr(r, '/') ? strrchr(r, '/') + 1 : r;
-    size_t len = (d ? strlen(d) : 0) + strlen(base) + 16;
+    int blen = strlen(base) > 64 ? 64 : (int)strlen(base);
+    size_t len = (d ? strlen(d) : 0) + (size_t)blen + 16;
     s->tmp = d ? malloc(len) : NULL;
     if (!s->tmp) {
         free(d);
@@ -216,7 +245,7 @@ int pf_out_stage(const char *path, const char *data, size_t n, pf_out_staged *s,
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    snprintf(s->tmp, len, "%s/.%s.XXXXXX", d, base);
+    snprintf(s->tmp, len, "%s/.%.*s.XXXXXX", d, blen, base);
     free(d);
     int fd = mkstemp(s->tmp);
     if (fd < 0) {
@@ -267,6 +296,19 @@ int pf_out_commit(pf_out_staged *s, char *err, size_t errlen)
             close(fd);
     }
     pf_out_abort(s);
+    return rc;
+}
+
+int pf_out_commit_all(pf_out_staged *s, int n, char *err, size_t errlen)
+{
+    int rc = 0;
+    /* pass 0: the special files (tmp NULL), pass 1: the renames */
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < n && !rc; i++)
+            if (s[i].target && !s[i].tmp == !pass)
+                rc = pf_out_commit(&s[i], err, errlen);
+    for (int i = 0; i < n; i++)
+        pf_out_abort(&s[i]);
     return rc;
 }
 

@@ -33,6 +33,13 @@ typedef struct {
 int pf_out_stage(const char *path, const char *data, size_t n, pf_out_staged *s, char *err, size_t errlen);
 int pf_out_commit(pf_out_staged *s, char *err, size_t errlen);
 void pf_out_abort(pf_out_staged *s);
+/* Commits n staged outputs (those with no target are skipped): the special
+ * files first, written in place, which cannot be taken back, then the
+ * renames; the first failure stops it and the rest are aborted.  So a
+ * device that fails (--plot /dev/full) leaves every regular file as it was;
+ * in the order given, -o's file was renamed into place before the plot's
+ * failure, and the run said 1.  0, or -1 with a reason. */
+int pf_out_commit_all(pf_out_staged *s, int n, char *err, size_t errlen);
 
 /* 1 when a and b reach the same file (the same name after symlinks and
    the directory's canonical path, or one existing file by two links) */

@@ -70,18 +70,16 @@ static const char usage[] =
 static int write_outputs(const pf_request *rq, const char *src, size_t len, const char *svg, size_t svglen)
 {
     char err[600];
-    pf_out_staged c = {0}, p = {0};
+    pf_out_staged st[2] = {{0}, {0}}; /* the C, the plot */
     int rc = 0;
-    if (rq->output && pf_out_stage(rq->output, src, len, &c, err, sizeof err) != 0)
+    if (rq->output && pf_out_stage(rq->output, src, len, &st[0], err, sizeof err) != 0)
         rc = 1;
-    if (!rc && svg && pf_out_stage(rq->plot, svg, svglen, &p, err, sizeof err) != 0)
+    if (!rc && svg && pf_out_stage(rq->plot, svg, svglen, &st[1], err, sizeof err) != 0)
         rc = 1;
-    if (!rc && rq->output && pf_out_commit(&c, err, sizeof err) != 0)
+    if (!rc && pf_out_commit_all(st, 2, err, sizeof err) != 0)
         rc = 1;
-    if (!rc && svg && pf_out_commit(&p, err, sizeof err) != 0)
-        rc = 1;
-    pf_out_abort(&c);
-    pf_out_abort(&p);
+    pf_out_abort(&st[0]);
+    pf_out_abort(&st[1]);
     if (rc)
         pf_say(err);
     return rc;
@@ -180,6 +178,7 @@ int main(int argc, char **argv)
         pf_say(err);
         return 2;
     }
+    int rc = 0;
     if (rq.help) {
         pf_type t;
         int fixed = fx_noise_is(rq.func);
@@ -187,17 +186,17 @@ int main(int argc, char **argv)
             fixed = 1;
         if (rq.out_type_s && pf_type_parse(rq.out_type_s, &t, NULL, 0) == 0 && !t.is_float)
             fixed = 1;
+        /* no return here: the text, too, is checked as written below */
         if (fixed)
             fputs(fx_usage_text(), stdout);
         else
             printf(usage, pf_spec_func_list());
-        return 0;
-    }
-    int rc;
-    switch (rq.mode) {
-    case PF_MODE_SCENE: rc = pf_scene_run(&rq); break;
-    case PF_MODE_FLOAT: rc = run_float(&rq); break;
-    default: rc = run_fixed(&rq); break;
+    } else {
+        switch (rq.mode) {
+        case PF_MODE_SCENE: rc = pf_scene_run(&rq); break;
+        case PF_MODE_FLOAT: rc = run_float(&rq); break;
+        default: rc = run_fixed(&rq); break;
+        }
     }
     pf_request_free(&rq);
     /* C or JSON on a full disk or a closed pipe is a failure, not success */

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 
 /* The best float-coefficient fits here reach about 2^-40 (exp at order 30:
  * 1.15e-12 = 2^-39.7; log: Sollya's fpminimax at order 30 gives 6.5e-12).
@@ -38,6 +39,56 @@ __attribute__((format(printf, 3, 4))) static int bad(char *err, size_t errlen, c
     vsnprintf(err, errlen, fmt, ap);
     va_end(ap);
     return 2;
+}
+
+/* Names the headers of the emitted C declare (<math.h>, <string.h>,
+ * <stddef.h>, <stdint.h>; C17 7.12, 7.24, 7.19, 7.20) or reserve for them
+ * (7.31), or that are reserved at file scope (7.1.3): the reason, or NULL.
+ * --name logf compiled, and its logf replaced libm's in every program
+ * linking it; --name memcpy or fmaf failed in the sweep's compile, after
+ * the fit (with --no-sweep: exit 0 and C that does not compile). */
+static const char *libc_name(const char *n)
+{
+    /* <math.h>: each function also with the suffixes f and l */
+    static const char *const math[] = {
+        "acos", "asin", "atan", "atan2", "cos", "sin", "tan", "acosh", "asinh", "atanh", "cosh", "sinh", "tanh",
+        "exp", "exp2", "expm1", "frexp", "ilogb", "ldexp", "log", "log10", "log1p", "log2", "logb", "modf",
+        "scalbn", "scalbln", "cbrt", "fabs", "hypot", "pow", "sqrt", "erf", "erfc", "lgamma", "tgamma", "ceil",
+        "floor", "nearbyint", "rint", "lrint", "llrint", "round", "lround", "llround", "trunc", "fmod",
+        "remainder", "remquo", "copysign", "nan", "nextafter", "nexttoward", "fdim", "fmax", "fmin", "fma", NULL};
+    static const char *const other[] = {
+        /* <math.h> macros and types */
+        "fpclassify", "isfinite", "isinf", "isnan", "isnormal", "signbit", "isgreater", "isgreaterequal",
+        "isless", "islessequal", "islessgreater", "isunordered", "float_t", "double_t", "math_errhandling",
+        "HUGE_VAL", "HUGE_VALF", "HUGE_VALL", "INFINITY", "NAN", "FP_INFINITE", "FP_NAN", "FP_NORMAL",
+        "FP_SUBNORMAL", "FP_ZERO", "FP_FAST_FMA", "FP_FAST_FMAF", "FP_FAST_FMAL", "FP_ILOGB0", "FP_ILOGBNAN",
+        "MATH_ERRNO", "MATH_ERREXCEPT",
+        /* <stddef.h>, and <stdint.h>'s that the patterns below miss */
+        "NULL", "offsetof", "ptrdiff_t", "size_t", "max_align_t", "wchar_t", "PTRDIFF_MIN", "PTRDIFF_MAX",
+        "SIZE_MAX", "SIG_ATOMIC_MIN", "SIG_ATOMIC_MAX", "WCHAR_MIN", "WCHAR_MAX", "WINT_MIN", "WINT_MAX", NULL};
+    size_t len = strlen(n);
+    if (n[0] == '_')
+        return "names starting with _ are reserved at file scope (C17 7.1.3)";
+    for (int i = 0; math[i]; i++) {
+        size_t k = strlen(math[i]);
+        if (!strncmp(n, math[i], k) && (!n[k] || ((n[k] == 'f' || n[k] == 'l') && !n[k + 1])))
+            return "a function of <math.h>, reserved for the library (C17 7.1.3)";
+    }
+    for (int i = 0; other[i]; i++)
+        if (!strcmp(n, other[i]))
+            return "a name of <math.h>, <stddef.h> or <stdint.h>, which the emitted C includes";
+    /* <string.h>: str, mem, wcs and a lowercase letter (C17 7.31.13) */
+    if ((!strncmp(n, "str", 3) || !strncmp(n, "mem", 3) || !strncmp(n, "wcs", 3)) && islower((unsigned char)n[3]))
+        return "names starting with str, mem or wcs and a lowercase letter belong to <string.h> (C17 7.31.13)";
+    /* <stdint.h>: int.../uint..._t types, INT.../UINT..._MAX, _MIN, _WIDTH, _C macros (C17 7.31.10) */
+    if ((!strncmp(n, "int", 3) || !strncmp(n, "uint", 4)) && len > 2 && !strcmp(n + len - 2, "_t"))
+        return "names starting with int or uint and ending in _t belong to <stdint.h> (C17 7.31.10)";
+    if (!strncmp(n, "INT", 3) || !strncmp(n, "UINT", 4))
+        for (const char *const *e = (const char *const[]){"_MAX", "_MIN", "_WIDTH", "_C", NULL}; *e; e++)
+            if (len > strlen(*e) && !strcmp(n + len - strlen(*e), *e))
+                return "names starting with INT or UINT and ending in _MAX, _MIN, _WIDTH or _C belong to <stdint.h> "
+                       "(C17 7.31.10)";
+    return NULL;
 }
 
 int pf_check_name(const char *what, const char *name, char *err, size_t errlen)
@@ -66,6 +117,11 @@ int pf_check_name(const char *what, const char *name, char *err, size_t errlen)
     }
     if (!strcmp(name, "main")) {
         snprintf(err, errlen, "bad %s 'main': the program's entry point", what);
+        return -1;
+    }
+    const char *why = libc_name(name);
+    if (why) {
+        snprintf(err, errlen, "bad %s '%.200s': %s", what, name, why);
         return -1;
     }
     if (strlen(name) > PF_NAME_MAX) {
@@ -249,6 +305,13 @@ static int check_noise(pf_request *rq, const unsigned char *seen, char *err, siz
     if (rq->name && !strcmp(rq->func, "noise") && strlen(rq->name) + 1 > PF_NAME_MAX)
         return bad(err, errlen, "bad --name: with --func noise the names are NAME1 .. NAME4, at most %d characters",
                    PF_NAME_MAX);
+    /* --func noise --name log: its log2 is <math.h>'s */
+    for (int d = 1; rq->name && !strcmp(rq->func, "noise") && d <= 4; d++) {
+        char n[PF_NAME_MAX + 2];
+        snprintf(n, sizeof n, "%s%d", rq->name, d);
+        if (pf_check_name("--name (with --func noise, NAME1 .. NAME4)", n, err, errlen) != 0)
+            return 2;
+    }
     return 0;
 }
 
@@ -259,6 +322,15 @@ static int plot_name_ok(const char *path)
     const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
     const char *dot = strrchr(base, '.');
     return !dot || dot == base || !strcasecmp(dot, ".svg");
+}
+
+/* 1 when path is the regular file open as descriptor fd: a rename over it
+   (output.h) leaves what was written to fd in the replaced file, lost */
+static int is_fd_file(const char *path, int fd)
+{
+    struct stat a, b;
+    return fstat(fd, &a) == 0 && S_ISREG(a.st_mode) && stat(path, &b) == 0 && a.st_dev == b.st_dev &&
+           a.st_ino == b.st_ino;
 }
 
 /* -o and --plot: checked before the fit (output.h).  "-o -" is standard
@@ -280,6 +352,17 @@ static int check_outputs(pf_request *rq, char *err, size_t errlen)
         return 2;
     if (rq->output && rq->plot && pf_out_same(rq->output, rq->plot))
         return bad(err, errlen, "-o and --plot name the same file");
+    /* "--json -o /dev/stdout > f" (or "-o f 2> f"): the JSON (the report)
+       went to the file that the rename then replaced, exit 0 */
+    const char *names[2] = {rq->output, rq->plot}, *opt[2] = {"-o", "--plot"};
+    for (int i = 0; i < 2; i++) {
+        if (names[i] && rq->json && is_fd_file(names[i], 1))
+            return bad(err, errlen, "%s %.200s is the file standard output goes to, where --json writes", opt[i],
+                       names[i]);
+        if (names[i] && is_fd_file(names[i], 2))
+            return bad(err, errlen, "%s %.200s is the file standard error goes to, where the report goes", opt[i],
+                       names[i]);
+    }
     return 0;
 }
 

@@ -342,12 +342,17 @@ static int gen_fixed(scene *S, const scene_entry *x, FILE *rep)
     return 0;
 }
 
-/* text for a C comment: "*" "/" would end it */
+/* text for a C comment: "*" "/" would end it, and so would "*", a
+ * backslash (or the trigraph ??/), a newline and "/", lines being spliced
+ * before comments end (pf_cli_command_line); "/" "*" is -Wcomment's
+ * warning, a trigraph -Wtrigraphs'.  A blank goes between "*" or "/" and
+ * another of "/", "*", a backslash, and between "?" and "?". */
 static void comment_text(FILE *h, const char *s)
 {
     for (; *s; s++) {
         fputc(*s, h);
-        if (s[0] == '*' && s[1] == '/')
+        if (((s[0] == '*' || s[0] == '/') && s[1] && s[1] != s[0] && strchr("/*\\", s[1])) ||
+            (s[0] == '?' && s[1] == '?'))
             fputc(' ', h);
     }
 }
@@ -504,9 +509,9 @@ static int write_all(scene *S, int exists)
             rc = 1;
         free(path);
     }
-    for (int i = 0; i < S->nout && !rc; i++)
-        if (pf_out_commit(&st[i], err, sizeof err) != 0)
-            rc = 1;
+    /* the special files (a link to a device) first: pf_out_commit_all */
+    if (!rc && pf_out_commit_all(st, S->nout, err, sizeof err) != 0)
+        rc = 1;
     for (int i = 0; i < S->nout; i++)
         pf_out_abort(&st[i]);
     if (rc) {
@@ -561,6 +566,16 @@ int pf_scene_run(const pf_request *rq)
         rc = clobbers_scene(S, fixed_files[i]);
         if (!rc && exists)
             rc = check_file(S, fixed_files[i]);
+    }
+    /* and every entry's NAME.c, known from its line: a directory or the
+       scene file under that name was found only at the write, after all
+       the fits (exit 1) */
+    for (int i = 0; i < S->ne && !rc; i++) {
+        char file[sizeof S->e[i].name + 4];
+        snprintf(file, sizeof file, "%s.c", S->e[i].name);
+        rc = clobbers_scene(S, file);
+        if (!rc && exists)
+            rc = check_file(S, file);
     }
     char *rtext = NULL;
     size_t rlen = 0;
