@@ -7,12 +7,15 @@
 #include <stddef.h>
 #include <cmocka.h>
 
+#include "compile.h"
 #include "testutil.h"
 #include "tu_exec.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <time.h>
 
@@ -822,6 +825,48 @@ static void test_longest_name(void **st)
     tu_rm_tree(scratch);
 }
 
+/* open file descriptors of this process */
+static int open_fds(void)
+{
+    DIR *d = opendir("/proc/self/fd");
+    assert_non_null(d);
+    int n = 0;
+    for (struct dirent *e; (e = readdir(d));)
+        n += e->d_name[0] != '.';
+    closedir(d);
+    return n;
+}
+
+/* pf_compile_load (gen/front/compile.c) when the source cannot be
+   written (a file size limit stands in for a full /tmp): NULL and one
+   message, and the stream closed all the same (before the fix a short
+   fwrite skipped the fclose, and each such call kept a descriptor open) */
+static void test_compile_load_short_write(void **st)
+{
+    (void)st;
+    int fds = open_fds();
+    struct rlimit old;
+    assert_int_equal(getrlimit(RLIMIT_FSIZE, &old), 0);
+    void (*prev)(int) = signal(SIGXFSZ, SIG_IGN);
+    struct rlimit lim = old;
+    lim.rlim_cur = 4096;
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
+    size_t len = 1 << 16;
+    char *src = malloc(len);
+    assert_non_null(src);
+    memset(src, ' ', len);
+    char err[256] = "";
+    void *h = pf_compile_load(src, len, err, sizeof err);
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &old), 0);
+    signal(SIGXFSZ, prev);
+    free(src);
+    assert_null(h);
+    print_message("pf_compile_load under a 4 kB file size limit: %s; open descriptors %d -> %d\n", err, fds,
+                  open_fds());
+    assert_non_null(strstr(err, "cannot write"));
+    assert_int_equal(open_fds(), fds);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -845,6 +890,7 @@ int main(void)
         cmocka_unit_test(test_dev_stdout_pipe),
         cmocka_unit_test(test_sticky_dir),
         cmocka_unit_test(test_output_is_std_stream),
+        cmocka_unit_test(test_compile_load_short_write),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

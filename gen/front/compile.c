@@ -64,7 +64,12 @@ void *pf_compile_load(const char *src, size_t len, char *err, size_t errlen)
     snprintf(c, sizeof c, "%s/f.c", dir);
     FILE *f = fopen(c, "w");
     void *h = NULL;
-    if (!f || fwrite(src, 1, len, f) != len || fclose(f) != 0)
+    /* closed whether or not the write worked (a short write must not leak
+       the stream) */
+    int ok = f && fwrite(src, 1, len, f) == len;
+    if (f && fclose(f) != 0)
+        ok = 0;
+    if (!ok)
         snprintf(err, errlen, "cannot write %s", c);
     else
         h = build_and_load(dir, c, err, errlen);
