@@ -40,9 +40,12 @@ $(BUILD)/tests/test_bench: tests/test_bench.c $(PFBENCH_TESTED) $(BUILD)/libpfre
 # (tests/bench_scalar.c: n = 4096, 65536 and 2^20 distinct inputs), in
 # $(BUILD)/bench-scalar.md, after the other benches (one timing at a time)
 PROGS += $(BUILD)/bench_scalar
-$(BUILD)/bench_scalar: tests/bench_scalar.c
+# pfbench's domains, sampler and candidates: its objects but its main
+BENCH_SCALAR_OBJS = $(filter-out $(BUILD)/obj/tests/pfbench.o,$(PFBENCH_OBJS))
+$(BUILD)/bench_scalar: tests/bench_scalar.c $(BENCH_SCALAR_OBJS) $(BUILD)/obj/gen/front/output.o $(BUILD)/libpfref.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(LDFLAGS) -ldl -lm
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -MMD -MP $< -o $@ $(BENCH_SCALAR_OBJS) $(BUILD)/obj/gen/front/output.o \
+	  $(LDFLAGS) -fopenmp $(BUILD)/libpfref.a -lsleef -lmvec $(LIBS_NUM)
 .PHONY: bench-scalar
 bench: bench-scalar
 bench-scalar: $(BUILD)/bench_scalar $(BUILD)/libpfmath.so | bench-float bench-noise bench-fixed
