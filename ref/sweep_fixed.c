@@ -10,29 +10,15 @@
 
 /* ---- typed calls: one wrapper per (input, output) storage pair ---- */
 
-typedef void (*arr_call)(void *fn, const int64_t *x, int64_t *y, size_t n);
+typedef void (*arr_call)(void *fn, const int64_t *x, int64_t *y, size_t n, int inplace);
 typedef int64_t (*sc_call)(void *fn, int64_t x);
 
+/* in place: the output buffer is the input's, read as IT and written as OT
+   (called so only when the two have one size; int16_t and uint16_t, int32_t
+   and uint32_t may alias each other) */
 #define BLK 256
 #define PAIR(in, IT, out, OT)                                                                 \
-    static void arr_##in##_##out(void *fn, const int64_t *x, int64_t *y, size_t n)            \
-    {                                                                                         \
-        void (*f)(const IT *, OT *, size_t);                                                  \
-        *(void **)&f = fn;                                                                    \
-        IT bx[BLK];                                                                           \
-        OT by[BLK];                                                                           \
-        for (size_t i = 0; i < n; i += BLK) {                                                 \
-            size_t m = n - i < BLK ? n - i : BLK;                                             \
-            for (size_t j = 0; j < m; j++)                                                    \
-                bx[j] = (IT)x[i + j];                                                         \
-            f(bx, by, m);                                                                     \
-            for (size_t j = 0; j < m; j++)                                                    \
-                y[i + j] = (int64_t)by[j];                                                    \
-        }                                                                                     \
-    }                                                                                         \
-    /* in place: one buffer, read as IT and written as OT (same size where     \
-       this is called; int16_t and uint16_t may alias each other) */          \
-    static void arrip_##in##_##out(void *fn, const int64_t *x, int64_t *y, size_t n)          \
+    static void arr_##in##_##out(void *fn, const int64_t *x, int64_t *y, size_t n, int inplace) \
     {                                                                                         \
         void (*f)(const IT *, OT *, size_t);                                                  \
         *(void **)&f = fn;                                                                    \
@@ -40,13 +26,14 @@ typedef int64_t (*sc_call)(void *fn, int64_t x);
             IT i[BLK];                                                                        \
             OT o[BLK];                                                                        \
         } b;                                                                                  \
+        OT by[BLK], *o = inplace ? b.o : by;                                                  \
         for (size_t i = 0; i < n; i += BLK) {                                                 \
             size_t m = n - i < BLK ? n - i : BLK;                                             \
             for (size_t j = 0; j < m; j++)                                                    \
                 b.i[j] = (IT)x[i + j];                                                        \
-            f(b.i, b.o, m);                                                                   \
+            f(b.i, o, m);                                                                     \
             for (size_t j = 0; j < m; j++)                                                    \
-                y[i + j] = (int64_t)b.o[j];                                                   \
+                y[i + j] = (int64_t)o[j];                                                     \
         }                                                                                     \
     }                                                                                         \
     static int64_t sc_##in##_##out(void *fn, int64_t x)                                       \
@@ -68,9 +55,6 @@ OUTS(u32, uint32_t)
 #define ROW(in) {arr_##in##_i8, arr_##in##_u8, arr_##in##_i16, arr_##in##_u16, arr_##in##_i32, arr_##in##_u32}
 static const arr_call arr_tab[6][6] = {ROW(i8), ROW(u8), ROW(i16), ROW(u16), ROW(i32), ROW(u32)};
 #undef ROW
-#define ROW(in) {arrip_##in##_i8, arrip_##in##_u8, arrip_##in##_i16, arrip_##in##_u16, arrip_##in##_i32, arrip_##in##_u32}
-static const arr_call arrip_tab[6][6] = {ROW(i8), ROW(u8), ROW(i16), ROW(u16), ROW(i32), ROW(u32)};
-#undef ROW
 #define ROW(in) {sc_##in##_i8, sc_##in##_u8, sc_##in##_i16, sc_##in##_u16, sc_##in##_i32, sc_##in##_u32}
 static const sc_call sc_tab[6][6] = {ROW(i8), ROW(u8), ROW(i16), ROW(u16), ROW(i32), ROW(u32)};
 #undef ROW
@@ -89,7 +73,7 @@ int pf_fx_fn_supported(pf_fmt in, pf_fmt out)
 void pf_fx_call_array(const pf_fx_fn *fn, const int64_t *x, int64_t *y, size_t n)
 {
     if (fn->array) {
-        arr_tab[st_index(fn->in)][st_index(fn->out)](fn->array, x, y, n);
+        arr_tab[st_index(fn->in)][st_index(fn->out)](fn->array, x, y, n, 0);
         return;
     }
     for (size_t i = 0; i < n; i++)
@@ -100,7 +84,7 @@ int pf_fx_call_array_inplace(const pf_fx_fn *fn, const int64_t *x, int64_t *y, s
 {
     if (!fn->array || pf_fmt_storage_bits(fn->in) != pf_fmt_storage_bits(fn->out))
         return 0;
-    arrip_tab[st_index(fn->in)][st_index(fn->out)](fn->array, x, y, n);
+    arr_tab[st_index(fn->in)][st_index(fn->out)](fn->array, x, y, n, 1);
     return 1;
 }
 

@@ -65,14 +65,21 @@ static inline int pfcli_lib_path(const char *s, char *out, size_t n)
     return k < 0 || (size_t)k >= n ? -1 : 0;
 }
 
-/* one line on stderr: "PROG: AB", control characters as '?' (a newline in a
-   user's file name or option value does not make a second line) */
+/* s (nothing for NULL) on stderr with its control characters as '?' (a
+   newline in a user's file name or option value does not make a second
+   line) */
+static inline void pfcli_put_clean(const char *s)
+{
+    for (const char *p = s; p && *p; p++)
+        fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, stderr);
+}
+
+/* one line on stderr: "PROG: AB", both cleaned (either may be NULL) */
 static inline void pfcli_line(const char *prog, const char *a, const char *b)
 {
     fprintf(stderr, "%s: ", prog);
-    for (const char *s = a; s; s = s == a ? b : NULL)
-        for (const char *p = s; *p; p++)
-            fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, stderr);
+    pfcli_put_clean(a);
+    pfcli_put_clean(b);
     fputc('\n', stderr);
 }
 
@@ -105,8 +112,7 @@ static inline void pfcli_refuse(const char *prog, const char *msg, const char *a
     fprintf(stderr, "%s: %s", prog, msg);
     if (arg) {
         fputc('\'', stderr);
-        for (const char *p = arg; *p; p++)
-            fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, stderr);
+        pfcli_put_clean(arg);
         fputc('\'', stderr);
     }
     fputs(" (see --help)\n", stderr);
